@@ -1,0 +1,231 @@
+//! Exact decimal numbers, as written in the input.
+//!
+//! Input contract: a decimal literal `[+-]digits[.digits][(e|E)[+-]digits]` (also `.5` and `5.`).
+//! Output guarantee: the value `±mantissa × 10^exponent` exactly, normalised (no trailing zeros
+//! in the mantissa, zero has exponent 0 and no sign), so two literals denote the same number
+//! exactly when their `Decimal`s are equal. `NaN`, `inf` and `infinity` are rejected by name.
+//! Complexity: linear in the length of the literal.
+
+use std::fmt;
+
+/// Most significant digits a coordinate may carry (what fits a `u128`).
+pub const MAX_DIGITS: usize = 38;
+
+/// Largest decimal exponent accepted; beyond it no coordinate could fit the exact grid anyway.
+const MAX_EXPONENT: i64 = 1_000;
+
+/// An exact decimal number `±mantissa × 10^exponent`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
+pub struct Decimal {
+    negative: bool,
+    mantissa: u128,
+    exponent: i32,
+}
+
+/// Why a number could not be read.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum NumberError {
+    /// The text is not a decimal number at all.
+    #[error("`{0}` is not a number")]
+    Invalid(String),
+    /// NaN or an infinity.
+    #[error("`{0}` is not a finite number")]
+    NonFinite(String),
+    /// More significant digits than exact arithmetic can carry.
+    #[error("`{0}` has more than {MAX_DIGITS} significant digits")]
+    TooManyDigits(String),
+    /// An exponent far outside any usable range.
+    #[error("`{0}` has an exponent out of range")]
+    ExponentOutOfRange(String),
+}
+
+impl Decimal {
+    /// Zero.
+    pub const ZERO: Decimal = Decimal { negative: false, mantissa: 0, exponent: 0 };
+
+    /// Parses a decimal literal exactly.
+    ///
+    /// # Errors
+    /// [`NumberError`] names what is wrong with the text.
+    ///
+    /// # Examples
+    /// ```
+    /// use minitri::Decimal;
+    /// let a: Decimal = Decimal::parse("0.10")?;
+    /// assert_eq!(a, Decimal::parse("1e-1")?);
+    /// # Ok::<(), minitri::NumberError>(())
+    /// ```
+    pub fn parse(text: &str) -> Result<Decimal, NumberError> {
+        let invalid = || NumberError::Invalid(text.to_string());
+        let lower = text.to_ascii_lowercase();
+        let unsigned = lower.trim_start_matches(['+', '-']);
+        if matches!(unsigned, "nan" | "inf" | "infinity") {
+            return Err(NumberError::NonFinite(text.to_string()));
+        }
+        let bytes = text.as_bytes();
+        let mut pos = 0;
+        let negative = match bytes.first() {
+            Some(b'-') => {
+                pos += 1;
+                true
+            }
+            Some(b'+') => {
+                pos += 1;
+                false
+            }
+            _ => false,
+        };
+        let mut digits: Vec<u8> = Vec::new();
+        let mut fraction_digits: i64 = 0;
+        let mut seen_digit = false;
+        let mut seen_point = false;
+        while pos < bytes.len() {
+            match bytes[pos] {
+                c @ b'0'..=b'9' => {
+                    seen_digit = true;
+                    if !(digits.is_empty() && c == b'0') {
+                        digits.push(c - b'0');
+                    }
+                    if seen_point {
+                        fraction_digits += 1;
+                    }
+                }
+                b'.' if !seen_point => seen_point = true,
+                _ => break,
+            }
+            pos += 1;
+        }
+        if !seen_digit {
+            return Err(invalid());
+        }
+        let mut exponent: i64 = 0;
+        if pos < bytes.len() {
+            if bytes[pos] != b'e' && bytes[pos] != b'E' {
+                return Err(invalid());
+            }
+            let rest = &text[pos + 1..];
+            let body = rest.strip_prefix(['+', '-']).unwrap_or(rest);
+            if body.is_empty() || !body.bytes().all(|c| c.is_ascii_digit()) {
+                return Err(invalid());
+            }
+            let trimmed = body.trim_start_matches('0');
+            if trimmed.len() > 6 {
+                return Err(NumberError::ExponentOutOfRange(text.to_string()));
+            }
+            let magnitude: i64 = if trimmed.is_empty() { 0 } else { trimmed.parse().map_err(|_| invalid())? };
+            exponent = if rest.starts_with('-') { -magnitude } else { magnitude };
+        }
+        exponent -= fraction_digits;
+        while digits.last() == Some(&0) {
+            digits.pop();
+            exponent += 1;
+        }
+        if digits.is_empty() {
+            return Ok(Decimal::ZERO);
+        }
+        if digits.len() > MAX_DIGITS {
+            return Err(NumberError::TooManyDigits(text.to_string()));
+        }
+        if exponent.abs() > MAX_EXPONENT {
+            return Err(NumberError::ExponentOutOfRange(text.to_string()));
+        }
+        let mantissa = digits.iter().fold(0u128, |m, &d| m * 10 + u128::from(d));
+        Ok(Decimal { negative, mantissa, exponent: exponent as i32 })
+    }
+
+    /// The power of ten of the last significant digit (`0.25` has exponent -2).
+    pub fn exponent(&self) -> i32 {
+        self.exponent
+    }
+
+    /// `self × 10^scale` as an exact integer, if it is one and fits an `i128`.
+    pub(crate) fn scaled(&self, scale: i32) -> Option<i128> {
+        let shift = u32::try_from(self.exponent.checked_add(scale)?).ok()?;
+        let magnitude = i128::try_from(self.mantissa).ok()?.checked_mul(10i128.checked_pow(shift)?)?;
+        Some(if self.negative { -magnitude } else { magnitude })
+    }
+
+    /// The nearest `f64` (for drawing only, never for decisions).
+    pub fn to_f64(&self) -> f64 {
+        // Formatting then parsing gives the correctly rounded value.
+        self.to_string().parse().unwrap_or(0.0)
+    }
+}
+
+impl std::str::FromStr for Decimal {
+    type Err = NumberError;
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        Decimal::parse(s)
+    }
+}
+
+impl fmt::Display for Decimal {
+    /// Plain decimal notation, exact, without exponent: `-0.125`, `1200`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let digits = self.mantissa.to_string();
+        let sign = if self.negative { "-" } else { "" };
+        if self.exponent >= 0 {
+            write!(f, "{sign}{digits}{}", "0".repeat(self.exponent as usize))
+        } else {
+            let point = digits.len() as i64 + i64::from(self.exponent);
+            if point > 0 {
+                let (int, frac) = digits.split_at(point as usize);
+                write!(f, "{sign}{int}.{frac}")
+            } else {
+                write!(f, "{sign}0.{}{digits}", "0".repeat((-point) as usize))
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn d(s: &str) -> Decimal {
+        Decimal::parse(s).expect(s)
+    }
+
+    #[test]
+    fn equal_values_written_differently_are_equal() {
+        assert_eq!(d("0.1"), d("0.10"));
+        assert_eq!(d("1e-1"), d(".1"));
+        assert_eq!(d("-0"), d("0.000"));
+        assert_eq!(d("1200"), d("1.2e3"));
+        assert_eq!(d("+5."), d("5"));
+        assert_ne!(d("0.1"), d("0.1000000000000000001"));
+    }
+
+    #[test]
+    fn display_is_exact_plain_notation() {
+        assert_eq!(d("-0.125").to_string(), "-0.125");
+        assert_eq!(d("1.2e3").to_string(), "1200");
+        assert_eq!(d("3e-5").to_string(), "0.00003");
+        assert_eq!(d("0.30000000000000001").to_string(), "0.30000000000000001");
+    }
+
+    #[test]
+    fn scaled_is_exact_and_checked() {
+        assert_eq!(d("0.3").scaled(1), Some(3));
+        assert_eq!(d("-2.5").scaled(3), Some(-2500));
+        assert_eq!(d("0.25").scaled(1), None, "not an integer on that grid");
+        assert_eq!(d("1e200").scaled(0), None, "overflow is detected");
+    }
+
+    #[test]
+    fn bad_numbers_are_named() {
+        assert_eq!(Decimal::parse("NaN"), Err(NumberError::NonFinite("NaN".into())));
+        assert_eq!(Decimal::parse("-Infinity"), Err(NumberError::NonFinite("-Infinity".into())));
+        assert!(matches!(Decimal::parse("1.2.3"), Err(NumberError::Invalid(_))));
+        assert!(matches!(Decimal::parse("-"), Err(NumberError::Invalid(_))));
+        assert!(matches!(Decimal::parse("1e"), Err(NumberError::Invalid(_))));
+        assert!(matches!(Decimal::parse("0x10"), Err(NumberError::Invalid(_))));
+        assert!(matches!(Decimal::parse("1e999999999"), Err(NumberError::ExponentOutOfRange(_))));
+        assert!(matches!(
+            Decimal::parse("123456789012345678901234567890123456789"),
+            Err(NumberError::TooManyDigits(_))
+        ));
+        // Trailing zeros do not count as significant digits.
+        assert_eq!(d("1000000000000000000000000000000000000000000").to_string().len(), 43);
+    }
+}

@@ -1,0 +1,2 @@
+//! Exact geometry: decimal numbers, the integer grid, predicates, polygons and their validation.
+pub mod decimal;

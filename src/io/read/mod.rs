@@ -1,0 +1,133 @@
+//! Readers: WKT, GeoJSON and the plain vertex list, all producing [`RawPolygon`]s.
+//!
+//! Input contract: UTF-8 text. Output guarantee: each polygon as rings of exact decimal
+//! coordinates (outer ring first, then the holes in input order), each ring WITHOUT its repeated
+//! closing vertex (a ring whose last vertex equals its first, exactly, loses the last one), so that
+//! the vertex numbering of `spec/CLI.md` is simply the order of vertices over the rings. Nothing
+//! else is cleaned here: duplicates, winding and validity are the business of
+//! [`crate::geom::polygon`].
+//!
+//! The `wkt` and `geojson` crates both turn coordinates into `f64`, which loses the decimal value
+//! as written (`0.1` is not a binary fraction), and `wkt` reports neither positions nor trailing
+//! text; so the readers here are small hand-written parsers that keep the literal text of every
+//! number ([`Decimal`]) and report line and column. The tests cross-check them against both crates.
+//!
+//! Complexity: linear in the input size.
+
+use crate::geom::decimal::Decimal;
+use std::fmt;
+
+pub mod geojson;
+pub mod vertices;
+pub mod wkt;
+
+/// A polygon as read: rings of exact coordinates, outer ring first.
+#[derive(Clone, Debug, PartialEq, Eq, Default)]
+pub struct RawPolygon {
+    /// `rings[0]` is the outer boundary, `rings[1..]` the holes; no repeated closing vertex.
+    pub rings: Vec<Vec<[Decimal; 2]>>,
+}
+
+/// An input format.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Format {
+    /// Well-known text: `POLYGON`, `MULTIPOLYGON`, `GEOMETRYCOLLECTION`.
+    Wkt,
+    /// GeoJSON geometry, Feature, FeatureCollection, or newline-delimited GeoJSON.
+    GeoJson,
+    /// One `x y` or `x,y` vertex per line (see the README).
+    Vertices,
+}
+
+/// A position in the input text, both 1-based.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Location {
+    /// Line number, from 1.
+    pub line: usize,
+    /// Column in characters, from 1.
+    pub column: usize,
+}
+
+impl fmt::Display for Location {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "line {}, column {}", self.line, self.column)
+    }
+}
+
+/// Why an input could not be read. `Display`: `line 3, column 14: expected ')' but found 'x'`.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("{}{message}", location.map(|l| format!("{l}: ")).unwrap_or_default())]
+pub struct ParseError {
+    /// Where the problem is, when the format allows saying so.
+    pub location: Option<Location>,
+    /// What is wrong, in words a user can act on (lowercase, no trailing period).
+    pub message: String,
+}
+
+impl ParseError {
+    /// An error at a known position.
+    pub fn at(location: Location, message: impl Into<String>) -> ParseError {
+        ParseError { location: Some(location), message: message.into() }
+    }
+
+    /// An error without position.
+    pub fn new(message: impl Into<String>) -> ParseError {
+        ParseError { location: None, message: message.into() }
+    }
+}
+
+/// The 1-based line and column of byte offset `offset` in `text`.
+pub fn locate(text: &str, offset: usize) -> Location {
+    let offset = offset.min(text.len());
+    let before = &text[..text.floor_char_boundary(offset)];
+    let line = before.matches('\n').count() + 1;
+    let line_start = before.rfind('\n').map_or(0, |i| i + 1);
+    Location { line, column: before[line_start..].chars().count() + 1 }
+}
+
+/// Drops a ring's last vertex when it repeats the first exactly (the optional closing vertex).
+pub(crate) fn drop_closing_vertex(ring: &mut Vec<[Decimal; 2]>) {
+    if ring.len() > 1 && ring.first() == ring.last() {
+        ring.pop();
+    }
+}
+
+/// Decides the format from a file extension (`None` for standard input or an unknown extension),
+/// falling back to the content.
+pub fn detect(extension: Option<&str>, text: &str) -> Format {
+    match extension.map(str::to_ascii_lowercase).as_deref() {
+        Some("wkt") => Format::Wkt,
+        Some("geojson" | "json" | "geojsonl" | "ndjson" | "geojsons") => Format::GeoJson,
+        Some("txt" | "xy" | "vertices") => Format::Vertices,
+        _ => detect_content(text),
+    }
+}
+
+/// Decides the format from the first meaningful character: `{`/`[` is GeoJSON, a letter is WKT,
+/// anything else (digits, signs, `#` comments) is a vertex list.
+fn detect_content(text: &str) -> Format {
+    let first = text
+        .lines()
+        .map(str::trim_start)
+        .find(|l| !l.is_empty() && !l.starts_with('#'))
+        .and_then(|l| l.chars().next());
+    match first {
+        Some('{' | '[') => Format::GeoJson,
+        Some(c) if c.is_ascii_alphabetic() => Format::Wkt,
+        _ => Format::Vertices,
+    }
+}
+
+/// Reads every polygon of `text` in the given format.
+///
+/// # Errors
+/// [`ParseError`] for malformed text, non-finite or unreadable numbers, wrong geometry types
+/// (a `LINESTRING`, a GeoJSON `Point`), rings with fewer than 3 positions as written, empty input,
+/// trailing text after a WKT geometry.
+pub fn read(format: Format, text: &str) -> Result<Vec<RawPolygon>, ParseError> {
+    match format {
+        Format::Wkt => wkt::read(text),
+        Format::GeoJson => geojson::read(text),
+        Format::Vertices => vertices::read(text),
+    }
+}

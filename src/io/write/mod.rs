@@ -1,0 +1,1 @@
+//! Writers: JSON and SVG.
