@@ -1,2 +1,5 @@
 //! Exact geometry: decimal numbers, the integer grid, predicates, polygons and their validation.
 pub mod decimal;
+pub mod kernel;
+pub mod polygon;
+pub mod validate;

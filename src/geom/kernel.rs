@@ -1,0 +1,299 @@
+//! The exact kernel: the only place that computes signs from coordinates.
+//!
+//! Input contract: [`Point`]s on the polygon's integer grid with coordinates in
+//! `0..=MAX_COORD` (`2^62`), which [`crate::geom::polygon`] guarantees. Every difference then fits
+//! an `i64` with room to spare, every product of two differences is below `2^124`, and every 2x2
+//! determinant below `2^125`, so all predicates below are exact in `i128` and cannot overflow.
+//! Output guarantee: exact answers as named enums or booleans; no epsilon anywhere.
+//! Complexity: O(1) each.
+
+use std::cmp::Ordering;
+
+/// The largest grid coordinate; see the module documentation for why it keeps `i128` exact.
+pub const MAX_COORD: i64 = 1 << 62;
+
+/// A point on the exact integer grid.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Default)]
+pub struct Point {
+    /// Grid x.
+    pub x: i64,
+    /// Grid y.
+    pub y: i64,
+}
+
+impl Point {
+    /// A point from grid coordinates.
+    pub const fn new(x: i64, y: i64) -> Point {
+        Point { x, y }
+    }
+}
+
+/// The turn made by going from `a` to `b` to `c`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Orientation {
+    /// Left turn: `c` lies to the left of the directed line `a -> b`.
+    CounterClockwise,
+    /// Right turn.
+    Clockwise,
+    /// The three points lie on one line.
+    Collinear,
+}
+
+/// Twice the signed area of triangle `a b c` (positive when counter-clockwise), exact.
+#[inline]
+pub fn cross(a: Point, b: Point, c: Point) -> i128 {
+    let (ux, uy) = (i128::from(b.x - a.x), i128::from(b.y - a.y));
+    let (vx, vy) = (i128::from(c.x - a.x), i128::from(c.y - a.y));
+    ux * vy - uy * vx
+}
+
+/// The dot product of `b - a` and `c - a`, exact.
+#[inline]
+pub fn dot(a: Point, b: Point, c: Point) -> i128 {
+    let (ux, uy) = (i128::from(b.x - a.x), i128::from(b.y - a.y));
+    let (vx, vy) = (i128::from(c.x - a.x), i128::from(c.y - a.y));
+    ux * vx + uy * vy
+}
+
+/// The orientation of `a b c`.
+#[inline]
+pub fn orient(a: Point, b: Point, c: Point) -> Orientation {
+    match cross(a, b, c).cmp(&0) {
+        Ordering::Greater => Orientation::CounterClockwise,
+        Ordering::Less => Orientation::Clockwise,
+        Ordering::Equal => Orientation::Collinear,
+    }
+}
+
+/// Whether `p` lies strictly between `a` and `c` on segment `a c` (`a != c`).
+#[inline]
+pub fn strictly_between(a: Point, p: Point, c: Point) -> bool {
+    cross(a, c, p) == 0 && dot(p, a, c) < 0
+}
+
+/// Whether `p` lies on the closed segment `a b`.
+#[inline]
+pub fn on_segment(a: Point, b: Point, p: Point) -> bool {
+    cross(a, b, p) == 0 && dot(p, a, b) <= 0
+}
+
+/// How two closed segments meet.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SegmentContact {
+    /// No common point.
+    Disjoint,
+    /// One common point interior to both segments.
+    Cross,
+    /// Exactly one common point, an endpoint of at least one of them.
+    Touch,
+    /// Collinear with more than one common point.
+    Overlap,
+}
+
+/// How closed segments `a b` and `c d` meet (each with distinct endpoints).
+pub fn segment_contact(a: Point, b: Point, c: Point, d: Point) -> SegmentContact {
+    let (o1, o2) = (cross(a, b, c), cross(a, b, d));
+    let (o3, o4) = (cross(c, d, a), cross(c, d, b));
+    if o1 == 0 && o2 == 0 {
+        // Collinear: compare the spans along the line.
+        let key = |p: Point| if a.x != b.x { p.x } else { p.y };
+        let (lo1, hi1) = minmax(key(a), key(b));
+        let (lo2, hi2) = minmax(key(c), key(d));
+        let (lo, hi) = (lo1.max(lo2), hi1.min(hi2));
+        return match lo.cmp(&hi) {
+            Ordering::Greater => SegmentContact::Disjoint,
+            Ordering::Equal => SegmentContact::Touch,
+            Ordering::Less => SegmentContact::Overlap,
+        };
+    }
+    if o1.signum() * o2.signum() > 0 || o3.signum() * o4.signum() > 0 {
+        return SegmentContact::Disjoint;
+    }
+    if o1 != 0 && o2 != 0 && o3 != 0 && o4 != 0 {
+        SegmentContact::Cross
+    } else {
+        SegmentContact::Touch
+    }
+}
+
+/// Whether closed segments `a b` and `c d` cross at a single point interior to both.
+#[inline]
+pub fn properly_cross(a: Point, b: Point, c: Point, d: Point) -> bool {
+    let (o1, o2) = (cross(a, b, c), cross(a, b, d));
+    let (o3, o4) = (cross(c, d, a), cross(c, d, b));
+    o1.signum() * o2.signum() < 0 && o3.signum() * o4.signum() < 0
+}
+
+fn minmax(a: i64, b: i64) -> (i64, i64) {
+    if a <= b {
+        (a, b)
+    } else {
+        (b, a)
+    }
+}
+
+/// Whether the direction from `w` towards `target` lies in the CLOSED interior angle at vertex `w`,
+/// whose boundary neighbours are `prev` and `next`, with the interior on the left of
+/// `prev -> w -> next` (counter-clockwise outer ring, clockwise holes).
+///
+/// The interior angle sweeps counter-clockwise from the direction of `next` to that of `prev`.
+/// A flat vertex (`prev`, `w`, `next` collinear, `prev` and `next` on opposite sides) has the
+/// closed half-plane on the left as its angle. A spike (`prev` and `next` on the same side) has an
+/// empty interior angle apart from its two edge directions; validation rejects spikes anyway.
+pub fn in_closed_wedge(prev: Point, w: Point, next: Point, target: Point) -> bool {
+    let turn = cross(prev, w, next); // > 0: convex at w
+    let from_next = cross(w, next, target); // >= 0: target at or left of w->next
+    let to_prev = cross(w, target, prev); // >= 0: prev at or left of w->target
+    match turn.cmp(&0) {
+        Ordering::Greater => from_next >= 0 && to_prev >= 0,
+        Ordering::Less => from_next >= 0 || to_prev >= 0,
+        Ordering::Equal => {
+            if dot(w, prev, next) < 0 {
+                from_next >= 0
+            } else {
+                // Spike: only the edge direction itself.
+                from_next == 0 && dot(w, next, target) > 0
+            }
+        }
+    }
+}
+
+/// Total order of directions around a centre, starting at the positive x axis and turning
+/// counter-clockwise; equal for directions on the same ray. `a` and `b` must differ from `centre`.
+pub fn cmp_angle(centre: Point, a: Point, b: Point) -> Ordering {
+    let half = |p: Point| {
+        let (dx, dy) = (p.x - centre.x, p.y - centre.y);
+        if dy > 0 || (dy == 0 && dx > 0) {
+            0
+        } else {
+            1
+        }
+    };
+    half(a).cmp(&half(b)).then_with(|| 0.cmp(&cross(centre, a, b)))
+}
+
+/// An exact sum of many `i128` values (areas of large polygons), immune to overflow.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct WideSum {
+    /// Number of times the low part wrapped, signed: value = high * 2^128 + low.
+    high: i64,
+    low: i128,
+}
+
+impl WideSum {
+    /// Adds `value` exactly.
+    #[inline]
+    pub fn add(&mut self, value: i128) {
+        let (sum, wrapped) = self.low.overflowing_add(value);
+        if wrapped {
+            self.high += if value > 0 { 1 } else { -1 };
+        }
+        self.low = sum;
+    }
+
+    /// The sign of the sum.
+    pub fn signum(&self) -> i32 {
+        match self.high.cmp(&0) {
+            Ordering::Greater => 1,
+            Ordering::Less => -1,
+            Ordering::Equal => self.low.signum() as i32,
+        }
+    }
+
+    /// The sum, when it fits an `i128`.
+    pub fn value(&self) -> Option<i128> {
+        (self.high == 0).then_some(self.low)
+    }
+
+    /// The sum as `f64` (for display only).
+    pub fn to_f64(&self) -> f64 {
+        self.high as f64 * 2f64.powi(128) + self.low as f64
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn p(x: i64, y: i64) -> Point {
+        Point::new(x, y)
+    }
+
+    #[test]
+    fn orientation_is_exact_at_the_range_limit() {
+        let m = MAX_COORD;
+        assert_eq!(orient(p(0, 0), p(m, m), p(m - 1, m - 1)), Orientation::Collinear);
+        assert_eq!(orient(p(0, 0), p(m, m - 1), p(m - 1, m - 2)), Orientation::Clockwise);
+        assert_eq!(orient(p(0, 0), p(m, 0), p(0, m)), Orientation::CounterClockwise);
+        assert_eq!(cross(p(0, m), p(m, 0), p(m, m)), (m as i128) * (m as i128));
+    }
+
+    #[test]
+    fn segment_contacts() {
+        use SegmentContact::*;
+        assert_eq!(segment_contact(p(0, 0), p(2, 2), p(0, 2), p(2, 0)), Cross);
+        assert_eq!(segment_contact(p(0, 0), p(2, 2), p(1, 1), p(2, 0)), Touch);
+        assert_eq!(segment_contact(p(0, 0), p(2, 0), p(2, 0), p(3, 1)), Touch);
+        assert_eq!(segment_contact(p(0, 0), p(2, 0), p(1, 0), p(3, 0)), Overlap);
+        assert_eq!(segment_contact(p(0, 0), p(2, 0), p(2, 0), p(3, 0)), Touch);
+        assert_eq!(segment_contact(p(0, 0), p(2, 0), p(3, 0), p(4, 0)), Disjoint);
+        assert_eq!(segment_contact(p(0, 0), p(0, 2), p(0, 1), p(0, 3)), Overlap);
+        assert_eq!(segment_contact(p(0, 0), p(2, 2), p(3, 0), p(4, 1)), Disjoint);
+        assert!(properly_cross(p(0, 0), p(2, 2), p(0, 2), p(2, 0)));
+        assert!(!properly_cross(p(0, 0), p(2, 2), p(1, 1), p(2, 0)));
+    }
+
+    #[test]
+    fn betweenness() {
+        assert!(strictly_between(p(0, 0), p(1, 3), p(2, 6)));
+        assert!(!strictly_between(p(0, 0), p(2, 6), p(2, 6)));
+        assert!(!strictly_between(p(0, 0), p(3, 9), p(2, 6)));
+        assert!(on_segment(p(0, 0), p(2, 6), p(2, 6)));
+    }
+
+    #[test]
+    fn closed_wedges() {
+        // Convex corner at the origin of a CCW square: interior is the first quadrant.
+        let (prev, w, next) = (p(0, 1), p(0, 0), p(1, 0));
+        assert!(in_closed_wedge(prev, w, next, p(1, 1)));
+        assert!(in_closed_wedge(prev, w, next, p(5, 0)), "along an edge: closed");
+        assert!(in_closed_wedge(prev, w, next, p(0, 5)));
+        assert!(!in_closed_wedge(prev, w, next, p(-1, 1)));
+        assert!(!in_closed_wedge(prev, w, next, p(1, -1)));
+        // Reflex corner (the same, traversed the other way): all but the open first quadrant.
+        assert!(!in_closed_wedge(next, w, prev, p(1, 1)));
+        assert!(in_closed_wedge(next, w, prev, p(5, 0)));
+        assert!(in_closed_wedge(next, w, prev, p(-1, -1)));
+        assert!(in_closed_wedge(next, w, prev, p(1, -1)));
+        // Flat vertex going +x: the closed upper half-plane.
+        let (prev, w, next) = (p(-1, 0), p(0, 0), p(1, 0));
+        assert!(in_closed_wedge(prev, w, next, p(0, 1)));
+        assert!(in_closed_wedge(prev, w, next, p(-3, 0)));
+        assert!(!in_closed_wedge(prev, w, next, p(0, -1)));
+    }
+
+    #[test]
+    fn angles_sort_counter_clockwise_from_the_x_axis() {
+        let c = p(0, 0);
+        let mut pts = vec![p(0, -1), p(1, 1), p(-1, 0), p(1, 0), p(0, 1), p(1, -1), p(2, 2)];
+        pts.sort_by(|&a, &b| cmp_angle(c, a, b));
+        assert_eq!(pts[..4], [p(1, 0), p(1, 1), p(2, 2), p(0, 1)]);
+        assert_eq!(pts[4..], [p(-1, 0), p(0, -1), p(1, -1)]);
+        assert_eq!(cmp_angle(c, p(1, 1), p(2, 2)), Ordering::Equal);
+    }
+
+    #[test]
+    fn wide_sums_do_not_overflow() {
+        let mut s = WideSum::default();
+        for _ in 0..4 {
+            s.add(i128::MAX);
+        }
+        assert_eq!(s.signum(), 1);
+        assert_eq!(s.value(), None);
+        for _ in 0..4 {
+            s.add(-i128::MAX);
+        }
+        assert_eq!(s.value(), Some(0));
+        assert_eq!(s, WideSum::default());
+    }
+}

@@ -1,0 +1,422 @@
+//! The polygon type: exact grid coordinates, the spec's vertex numbering, normalised winding.
+//!
+//! Input contract: a [`RawPolygon`] (exact decimals, rings without closing vertex).
+//! Output guarantee ([`Polygon::from_raw`]): every coordinate is put on one integer grid per
+//! polygon (multiplied by `10^scale`, `scale` the most decimal places used, then translated so the
+//! minimum is 0), exactly; the grid range is at most [`MAX_COORD`], so every kernel predicate is
+//! exact (otherwise [`InvalidPolygon::CoordinatesTooLarge`]). Exact consecutive duplicate vertices
+//! are dropped with a [`Warning`]; kept vertices keep their input number (`id`). The outer ring is
+//! stored counter-clockwise and every hole clockwise, so the interior is always on the left of
+//! `i -> next(i)`. The polygon is then validated ([`crate::geom::validate`]).
+//! Complexity: O(n log n) (the validation sweep dominates).
+
+use super::decimal::Decimal;
+use super::kernel::{cross, Point, WideSum, MAX_COORD};
+use super::validate::{self, InvalidPolygon};
+use crate::io::read::RawPolygon;
+use std::fmt;
+use std::ops::Range;
+
+/// Which ring of a polygon: the outer boundary or a hole (numbered from 1 in input order).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Ring {
+    /// The outer boundary (ring 0).
+    Outer,
+    /// Hole `k` (ring `k`, from 1).
+    Hole(usize),
+}
+
+impl Ring {
+    /// The ring for a ring index (0 is the outer ring).
+    pub fn from_index(index: usize) -> Ring {
+        if index == 0 {
+            Ring::Outer
+        } else {
+            Ring::Hole(index)
+        }
+    }
+}
+
+impl fmt::Display for Ring {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Ring::Outer => write!(f, "outer ring"),
+            Ring::Hole(k) => write!(f, "hole {k}"),
+        }
+    }
+}
+
+/// Something the tool changed in the input, worth telling the user (on standard error).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Warning(pub String);
+
+impl fmt::Display for Warning {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+/// The map between input decimals and the exact integer grid.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Grid {
+    /// Grid units per input unit are `10^scale`.
+    scale: u32,
+    /// The grid value (before translation) of grid point `(0, 0)`.
+    origin: [i128; 2],
+}
+
+impl Grid {
+    /// The input coordinate of grid value `value` on `axis` (0 = x, 1 = y), exactly, as text.
+    pub fn format(&self, axis: usize, value: i64) -> String {
+        let v = i128::from(value) + self.origin[axis];
+        let digits = v.unsigned_abs().to_string();
+        let sign = if v < 0 { "-" } else { "" };
+        let scale = self.scale as usize;
+        if scale == 0 {
+            return format!("{sign}{digits}");
+        }
+        let padded = format!("{digits:0>width$}", width = scale + 1);
+        let (int, frac) = padded.split_at(padded.len() - scale);
+        let frac = frac.trim_end_matches('0');
+        if frac.is_empty() {
+            format!("{sign}{int}")
+        } else {
+            format!("{sign}{int}.{frac}")
+        }
+    }
+
+    /// A grid point as `(x, y)` in input coordinates, exactly.
+    pub fn format_point(&self, p: Point) -> String {
+        format!("({}, {})", self.format(0, p.x), self.format(1, p.y))
+    }
+
+    /// The input coordinates of a grid point, rounded to `f64` (for drawing only).
+    pub fn to_f64(&self, p: Point) -> [f64; 2] {
+        let unit = 10f64.powi(self.scale as i32);
+        [
+            (i128::from(p.x) + self.origin[0]) as f64 / unit,
+            (i128::from(p.y) + self.origin[1]) as f64 / unit,
+        ]
+    }
+}
+
+/// A valid polygon with holes on an exact integer grid.
+///
+/// Invariants (established by [`Polygon::from_raw`], checked by `check_invariants` in tests):
+/// - vertices are stored ring after ring; ring 0 is the outer ring, counter-clockwise; rings
+///   `1..` are the holes, clockwise; so the interior is on the left of every edge `i -> next(i)`;
+/// - every ring has at least 3 vertices, non-zero area, no two vertices at the same point;
+/// - the rings are simple, pairwise disjoint, and every hole lies inside the outer ring and
+///   outside every other hole;
+/// - `ids[i]` is the input vertex number of stored vertex `i` (spec numbering), strictly
+///   increasing within the input order of each ring (reversed rings run backwards).
+#[derive(Clone, Debug)]
+pub struct Polygon {
+    points: Vec<Point>,
+    ids: Vec<usize>,
+    ring_starts: Vec<usize>,
+    ring_of: Vec<u32>,
+    input_vertices: usize,
+    grid: Grid,
+}
+
+impl Polygon {
+    /// Builds and validates a polygon from the reader's output.
+    ///
+    /// # Errors
+    /// [`InvalidPolygon`]: the first problem found (see [`Polygon::from_raw_all_errors`]).
+    pub fn from_raw(raw: &RawPolygon) -> Result<(Polygon, Vec<Warning>), InvalidPolygon> {
+        Polygon::from_raw_all_errors(raw).map_err(|mut errors| errors.swap_remove(0))
+    }
+
+    /// Like [`Polygon::from_raw`], but returns every problem found (at least one on error).
+    ///
+    /// # Errors
+    /// A non-empty list of [`InvalidPolygon`]s.
+    pub fn from_raw_all_errors(raw: &RawPolygon) -> Result<(Polygon, Vec<Warning>), Vec<InvalidPolygon>> {
+        let (polygon, warnings) = Polygon::build(raw).map_err(|e| vec![e])?;
+        let errors = validate::errors(&polygon);
+        if errors.is_empty() {
+            Ok((polygon, warnings))
+        } else {
+            Err(errors)
+        }
+    }
+
+    /// Grid conversion, numbering, duplicate removal and winding, without the sweep.
+    pub(crate) fn build(raw: &RawPolygon) -> Result<(Polygon, Vec<Warning>), InvalidPolygon> {
+        if raw.rings.is_empty() {
+            return Err(InvalidPolygon::TooFewVertices { ring: Ring::Outer, distinct: 0 });
+        }
+        let grid_values = to_grid(raw)?;
+        let grid = grid_values.1;
+        let mut polygon = Polygon {
+            points: Vec::new(),
+            ids: Vec::new(),
+            ring_starts: Vec::new(),
+            ring_of: Vec::new(),
+            input_vertices: 0,
+            grid,
+        };
+        let mut warnings = Vec::new();
+        let mut values = grid_values.0.into_iter();
+        for (r, input_ring) in raw.rings.iter().enumerate() {
+            let ring = Ring::from_index(r);
+            let start = polygon.points.len();
+            let first_id = polygon.input_vertices;
+            polygon.input_vertices += input_ring.len();
+            let mut kept: Vec<(Point, usize)> = Vec::with_capacity(input_ring.len());
+            for (k, point) in values.by_ref().take(input_ring.len()).enumerate() {
+                let id = first_id + k;
+                if let Some(&(last, last_id)) = kept.last() {
+                    if last == point {
+                        warnings.push(dropped(ring, id, last_id, &grid, point));
+                        continue;
+                    }
+                }
+                kept.push((point, id));
+            }
+            while kept.len() > 1 && kept.first().map(|f| f.0) == kept.last().map(|l| l.0) {
+                if let (Some(&(point, id)), Some(&(_, first))) = (kept.last(), kept.first()) {
+                    warnings.push(dropped(ring, id, first, &grid, point));
+                }
+                kept.pop();
+            }
+            if kept.len() < 3 {
+                return Err(InvalidPolygon::TooFewVertices { ring, distinct: kept.len() });
+            }
+            let mut area = WideSum::default();
+            for i in 0..kept.len() {
+                area.add(cross(kept[0].0, kept[i].0, kept[(i + 1) % kept.len()].0));
+            }
+            let want = if r == 0 { 1 } else { -1 };
+            let collinear = kept.iter().all(|&(q, _)| cross(kept[0].0, kept[1].0, q) == 0);
+            if collinear {
+                return Err(InvalidPolygon::ZeroArea { ring });
+            }
+            // A ring of zero signed area that is not collinear crosses itself: the sweep says where.
+            if area.signum() == -want {
+                kept[1..].reverse(); // keeps the first vertex first
+            }
+            polygon.ring_starts.push(start);
+            for (point, id) in kept {
+                polygon.points.push(point);
+                polygon.ids.push(id);
+                polygon.ring_of.push(r as u32);
+            }
+        }
+        polygon.ring_starts.push(polygon.points.len());
+        Ok((polygon, warnings))
+    }
+
+    /// Number of vertices kept (n, over all rings).
+    pub fn len(&self) -> usize {
+        self.points.len()
+    }
+
+    /// Whether there are no vertices (never true for a valid polygon).
+    pub fn is_empty(&self) -> bool {
+        self.points.is_empty()
+    }
+
+    /// Number of holes (w).
+    pub fn holes(&self) -> usize {
+        self.ring_starts.len() - 2
+    }
+
+    /// Number of vertex numbers used by the input (including dropped duplicates).
+    pub fn input_vertices(&self) -> usize {
+        self.input_vertices
+    }
+
+    /// The grid point of stored vertex `i`.
+    #[inline]
+    pub fn point(&self, i: usize) -> Point {
+        self.points[i]
+    }
+
+    /// All grid points, ring after ring.
+    pub fn points(&self) -> &[Point] {
+        &self.points
+    }
+
+    /// The input vertex number of stored vertex `i`.
+    #[inline]
+    pub fn id(&self, i: usize) -> usize {
+        self.ids[i]
+    }
+
+    /// The index of the ring holding vertex `i` (0 = outer).
+    #[inline]
+    pub fn ring_index(&self, i: usize) -> usize {
+        self.ring_of[i] as usize
+    }
+
+    /// The ring holding vertex `i`.
+    pub fn ring(&self, i: usize) -> Ring {
+        Ring::from_index(self.ring_index(i))
+    }
+
+    /// The stored vertex indices of ring `r` (0 = outer).
+    pub fn ring_range(&self, r: usize) -> Range<usize> {
+        self.ring_starts[r]..self.ring_starts[r + 1]
+    }
+
+    /// The next vertex along the boundary (interior on the left).
+    #[inline]
+    pub fn next(&self, i: usize) -> usize {
+        let r = self.ring_index(i);
+        if i + 1 == self.ring_starts[r + 1] {
+            self.ring_starts[r]
+        } else {
+            i + 1
+        }
+    }
+
+    /// The previous vertex along the boundary.
+    #[inline]
+    pub fn prev(&self, i: usize) -> usize {
+        let r = self.ring_index(i);
+        if i == self.ring_starts[r] {
+            self.ring_starts[r + 1] - 1
+        } else {
+            i - 1
+        }
+    }
+
+    /// The grid map, to print exact input coordinates.
+    pub fn grid(&self) -> &Grid {
+        &self.grid
+    }
+
+    /// Vertex `i` as `(x, y)` in input coordinates, exactly.
+    pub fn format_vertex(&self, i: usize) -> String {
+        self.grid.format_point(self.points[i])
+    }
+
+    /// Twice the area, exactly.
+    pub fn twice_area(&self) -> WideSum {
+        let mut sum = WideSum::default();
+        for i in 0..self.len() {
+            sum.add(cross(Point::default(), self.points[i], self.points[self.next(i)]));
+        }
+        sum
+    }
+
+    /// Checks the documented invariants (tests only).
+    #[cfg(test)]
+    pub(crate) fn check_invariants(&self) {
+        assert!(validate::errors(self).is_empty());
+        for r in 0..self.ring_starts.len() - 1 {
+            let range = self.ring_range(r);
+            assert!(range.len() >= 3);
+            let mut area = WideSum::default();
+            for i in range.clone() {
+                assert_eq!(self.ring_index(i), r);
+                assert_eq!(self.prev(self.next(i)), i);
+                area.add(cross(Point::default(), self.points[i], self.points[self.next(i)]));
+            }
+            assert_eq!(area.signum(), if r == 0 { 1 } else { -1 });
+        }
+    }
+}
+
+fn dropped(ring: Ring, id: usize, same_as: usize, grid: &Grid, p: Point) -> Warning {
+    Warning(format!(
+        "{ring}: vertex {id} {} repeats vertex {same_as} and was dropped",
+        grid.format_point(p)
+    ))
+}
+
+/// Puts every coordinate of `raw` on one exact integer grid, translated to start at 0.
+fn to_grid(raw: &RawPolygon) -> Result<(Vec<Point>, Grid), InvalidPolygon> {
+    let all = || raw.rings.iter().flatten();
+    let scale = all().flatten().map(|d| -d.exponent()).max().unwrap_or(0).max(0);
+    let too_large = |what: String| InvalidPolygon::CoordinatesTooLarge { detail: what };
+    let mut scaled: Vec<[i128; 2]> = Vec::with_capacity(all().count());
+    for [x, y] in all() {
+        let s = |d: &Decimal| {
+            d.scaled(scale)
+                .ok_or_else(|| too_large(format!("{d} times 10^{scale} does not fit 128 bits")))
+        };
+        scaled.push([s(x)?, s(y)?]);
+    }
+    let mut origin = [i128::MAX; 2];
+    let mut top = [i128::MIN; 2];
+    for p in &scaled {
+        for axis in 0..2 {
+            origin[axis] = origin[axis].min(p[axis]);
+            top[axis] = top[axis].max(p[axis]);
+        }
+    }
+    for axis in 0..2 {
+        let span = top[axis].checked_sub(origin[axis]);
+        if span.is_none_or(|s| s > i128::from(MAX_COORD)) {
+            let name = ["x", "y"][axis];
+            return Err(too_large(format!(
+                "the {name} coordinates span more than 2^62 units of 10^-{scale}"
+            )));
+        }
+    }
+    let points = scaled
+        .iter()
+        .map(|p| Point::new((p[0] - origin[0]) as i64, (p[1] - origin[1]) as i64))
+        .collect();
+    Ok((points, Grid { scale: scale as u32, origin }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn raw(rings: &[&[(&str, &str)]]) -> RawPolygon {
+        RawPolygon {
+            rings: rings
+                .iter()
+                .map(|r| r.iter().map(|(x, y)| [Decimal::parse(x).unwrap(), Decimal::parse(y).unwrap()]).collect())
+                .collect(),
+        }
+    }
+
+    #[test]
+    fn decimals_land_on_one_exact_grid() {
+        let (p, w) = Polygon::from_raw(&raw(&[&[("0", "0"), ("0.1", "0.3"), ("0.2", "0.6"), ("0", "1")]])).unwrap();
+        p.check_invariants();
+        assert!(w.is_empty());
+        assert_eq!(p.points(), &[Point::new(0, 0), Point::new(1, 3), Point::new(2, 6), Point::new(0, 10)]);
+        assert_eq!(p.format_vertex(2), "(0.2, 0.6)");
+        let (q, _) = Polygon::from_raw(&raw(&[&[("0", "0"), ("0", "1"), ("0.2", "0.6"), ("0.1", "0.3")]])).unwrap();
+        assert_eq!(q.points(), p.points(), "the clockwise input was reversed");
+        assert_eq!((q.id(0), q.id(1), q.id(3)), (0, 3, 1), "ids follow their points");
+    }
+
+    #[test]
+    fn negative_and_offset_coordinates_format_back_exactly() {
+        let (p, _) = Polygon::from_raw(&raw(&[&[("-1.5", "100"), ("2", "100"), ("2", "101.25")]])).unwrap();
+        assert_eq!(p.format_vertex(0), "(-1.5, 100)");
+        assert_eq!(p.format_vertex(2), "(2, 101.25)");
+        assert_eq!(p.grid().to_f64(p.point(2)), [2.0, 101.25]);
+    }
+
+    #[test]
+    fn consecutive_duplicates_are_dropped_but_keep_their_numbers() {
+        let (p, w) =
+            Polygon::from_raw(&raw(&[&[("0", "0"), ("1", "0"), ("1", "0"), ("1", "1"), ("0", "0")]])).unwrap();
+        assert_eq!(p.len(), 3);
+        assert_eq!(p.input_vertices(), 5);
+        assert_eq!((0..3).map(|i| p.id(i)).collect::<Vec<_>>(), vec![0, 1, 3]);
+        assert_eq!(w.len(), 2);
+        assert_eq!(w[0].0, "outer ring: vertex 2 (1, 0) repeats vertex 1 and was dropped");
+        assert_eq!(w[1].0, "outer ring: vertex 4 (0, 0) repeats vertex 0 and was dropped");
+    }
+
+    #[test]
+    fn too_large_ranges_are_detected() {
+        let e = Polygon::from_raw(&raw(&[&[("0", "0"), ("1e19", "0"), ("0", "0.1")]])).unwrap_err();
+        assert!(matches!(e, InvalidPolygon::CoordinatesTooLarge { .. }), "{e}");
+        let e = Polygon::from_raw(&raw(&[&[("0", "0"), ("1e-30", "0"), ("1e10", "1")]])).unwrap_err();
+        assert!(e.to_string().contains("too large"), "{e}");
+        // The largest span that fits is accepted.
+        assert!(Polygon::from_raw(&raw(&[&[("0", "0"), ("4611686018427387904", "0"), ("0", "1")]])).is_ok());
+    }
+}
