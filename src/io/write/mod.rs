@@ -1,1 +1,2 @@
 //! Writers: JSON and SVG.
+pub mod svg;

@@ -1,0 +1,92 @@
+//! Triangulation algorithms. Each returns a plain [`Triangulation`]; writers consume it.
+//!
+//! - [`ear`]: a plain triangulation into n + 2w - 2 nondegenerate triangles.
+//! - [`asano`]: the exact minimum by the dynamic program of Asano, Asano & Pinter.
+//! - [`chords`]: which vertex pairs are chords (used by the DP).
+
+pub mod asano;
+pub mod chords;
+pub mod ear;
+
+use std::fmt;
+
+/// Which algorithm made (or should make) a triangulation.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Algorithm {
+    /// Chen & Chang's MINITRI (minimum; default).
+    Minitri,
+    /// The O(n^3) dynamic program of Asano, Asano & Pinter (minimum; reference).
+    Asano,
+    /// A plain triangulation into n + 2w - 2 triangles.
+    Ear,
+}
+
+impl Algorithm {
+    /// The name used on the command line and in JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            Algorithm::Minitri => "minitri",
+            Algorithm::Asano => "asano",
+            Algorithm::Ear => "ear",
+        }
+    }
+
+    /// Whether the algorithm computes a minimum triangulation.
+    pub fn is_minimum(self) -> bool {
+        !matches!(self, Algorithm::Ear)
+    }
+}
+
+impl fmt::Display for Algorithm {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// A triangulation of a [`crate::Polygon`], in STORED vertex indices (`0..polygon.len()`; map
+/// them to input numbers with `polygon.id(i)`).
+///
+/// Contract of every algorithm: `triangles` are nondegenerate and counter-clockwise, their
+/// interiors are disjoint, and they cover the polygon exactly; `degenerate` lists the zero-area
+/// triangles `[a, b, c]` (`b` strictly between `a` and `c`) whose middle vertex `b` lies inside a
+/// side of a triangle, so that `triangles.len() == n + 2w - 2 - degenerate.len()`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Triangulation {
+    /// The algorithm that made it.
+    pub algorithm: Algorithm,
+    /// Nondegenerate triangles, counter-clockwise, as stored vertex indices.
+    pub triangles: Vec<[usize; 3]>,
+    /// Degenerate triangles used, `[a, b, c]` with `b` the middle vertex.
+    pub degenerate: Vec<[usize; 3]>,
+    /// Whether the count is proved minimum.
+    pub optimal: bool,
+}
+
+/// Why an algorithm could not triangulate a (valid) polygon.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+pub enum TriangulateError {
+    /// The algorithm handles polygons without holes only.
+    #[error("the {algorithm} algorithm handles polygons without holes only, and this polygon has {holes} hole{} (holes are planned for a later version)", if *holes == 1 { "" } else { "s" })]
+    HolesUnsupported {
+        /// The algorithm.
+        algorithm: Algorithm,
+        /// The number of holes.
+        holes: usize,
+    },
+    /// The polygon is too large for an algorithm with polynomial memory.
+    #[error("the asano dynamic program needs about {memory} and {time} for {n} vertices, above its limit of {limit} vertices; use --algorithm minitri, or raise the limit with --dp-limit")]
+    TooLarge {
+        /// Number of vertices.
+        n: usize,
+        /// The limit in force.
+        limit: usize,
+        /// Estimated memory, in words.
+        memory: String,
+        /// Estimated time, in words.
+        time: String,
+    },
+    /// The algorithm is not available yet.
+    #[error("the {0} algorithm is not implemented yet; use --algorithm asano (exact minimum) or --algorithm ear")]
+    NotImplemented(Algorithm),
+}
