@@ -1,1 +1,469 @@
-//! stub
+//! Independent checks of any triangulation, exact, sharing no code with the algorithms.
+//!
+//! Input contract: a valid [`Polygon`] (as built by [`Polygon::from_raw`]: distinct vertices on
+//! the exact grid, interior on the left of every edge `i -> next(i)`) and ANY [`Triangulation`]:
+//! indices may be out of range, repeated or nonsense; nothing here panics on them. Only the exact
+//! kernel and the polygon's accessors are used; no floating point decides anything.
+//!
+//! Output guarantee: [`check`] returns `valid == true` (and no problems) exactly when
+//! 1. every index is a vertex of the polygon and the three corners of a triangle are distinct;
+//! 2. every triangle is nondegenerate and counter-clockwise;
+//! 3. the triangles partition the polygon (the boundary chain below sums to zero);
+//! 4. the triangles' total twice-area equals the polygon's;
+//! 5. `triangles.len() == n + 2w - 2 - degenerate.len()`;
+//! 6. each listed degenerate triangle `[a, b, c]` has `b` strictly between `a` and `c`, the whole
+//!    segment `a c` lies on one side of some triangle (so `b` is a T-junction), and no two listed
+//!    degenerate triangles share their middle vertex (in particular none is listed twice).
+//!
+//! Otherwise `problems` holds human sentences (at most [`MAX_PROBLEMS`], then `... and N more`)
+//! naming triangles by position in their list (from 0) and by INPUT vertex numbers.
+//!
+//! # Why the boundary chain proves a partition
+//!
+//! Give each side of each triangle, directed counter-clockwise, the weight +1, and each polygon
+//! edge `i -> next(i)` the weight -1. For a point `x` on none of these segments, the winding
+//! number of this 1-chain around `x` is `f(x) = cover(x) - inside(x)`, where `cover(x)` counts
+//! the triangles whose interior holds `x` and `inside(x)` is 1 inside the polygon, 0 outside: a
+//! counter-clockwise triangle winds once around its interior points, and the polygon's rings
+//! (outer counter-clockwise, holes clockwise) wind once around exactly the polygon's interior
+//! points. If the chain is zero (on every line, the weights of the segments on it cancel on every
+//! stretch), every winding number is zero, so `f = 0` off a finite union of segments, a set of
+//! measure zero. Since every triangle is positive:
+//!
+//! - interiors are disjoint: two overlapping open triangles would overlap in an open set, with
+//!   points where `f >= 2 - 1 > 0`;
+//! - nothing lies outside: an open triangle is a.e. inside the polygon, hence inside the closed
+//!   polygon, and so is the closed triangle; its sides then lie in the closed polygon, and their
+//!   ends are vertices, which is the definition of a chord;
+//! - no hole is swallowed: points of a hole's interior have `f = 0` and are outside the polygon,
+//!   so no triangle covers them (the trap of `DESIGN.md`: chords alone do not show this);
+//! - the union is the polygon: a.e. interior point is covered once, the union of the closed
+//!   triangles is closed, so it contains the closure of the interior, the closed polygon.
+//!
+//! Conversely a partition gives `f = 0` a.e., so the chain (the boundary of `f`) is zero: the test
+//! is exact in both directions. Sides shared by two triangles with the same two end vertices, and
+//! polygon edges that are also triangle sides, cancel first (sorted by vertex pair); only the
+//! remaining segments are grouped by their supporting line (an exact integer key: primitive
+//! direction and offset) and swept along it in sorted order.
+//!
+//! # Why the degenerate list is exactly the set of T-junctions
+//!
+//! In a partition, `T = n + 2w - 2 - J`, where `J` counts the vertices lying inside a side of a
+//! triangle: the triangles' angles sum to `T pi`, and they fill the polygon's interior angles,
+//! which sum to `(n + 2w - 2) pi`, except for a straight angle at each such vertex. A vertex lies
+//! inside at most one side (two would cover a whole neighbourhood of it, or overlap). Check 6 maps
+//! each listed degenerate triangle to such a vertex, injectively (distinct middles), and check 5
+//! says there are `J` of them; so the list is exactly the T-junctions. Its segments `a b` and `b c`
+//! are chords, being parts of a triangle side.
+//!
+//! Complexity: O((T + n + d) log(T + n + d)) time, O(T + n + d) memory, for `T` triangles, `n`
+//! vertices and `d` degenerate triangles: a few sorts, never pairs of triangles or triangles
+//! times edges.
+
+use crate::algo::{Algorithm, Triangulation};
+use crate::geom::kernel::{cross, strictly_between, Point, WideSum};
+use crate::geom::polygon::Polygon;
+use std::cmp::Ordering;
+
+/// The largest number of problems listed; further ones are only counted.
+pub const MAX_PROBLEMS: usize = 20;
+
+/// The outcome of checking one triangulation.
+#[derive(Clone, Debug, PartialEq, Eq, serde::Serialize)]
+pub struct Check {
+    /// Whether the triangulation is valid (exactly when `problems` is empty).
+    pub valid: bool,
+    /// What is wrong, as sentences; at most [`MAX_PROBLEMS`] and a final `... and N more`.
+    pub problems: Vec<String>,
+}
+
+/// Checks, exactly, that `t` is a valid triangulation of `polygon` (see the module documentation
+/// for what is checked and why it suffices).
+pub fn check(polygon: &Polygon, t: &Triangulation) -> Check {
+    let mut problems = Problems::default();
+    check_count(polygon, t, &mut problems);
+    check_area(polygon, t, &mut problems);
+    check_triangles(polygon, t, &mut problems);
+    check_chain(polygon, t, &mut problems);
+    check_degenerate(polygon, t, &mut problems);
+    problems.finish()
+}
+
+/// Compares the triangle counts of exact minimum algorithms on one polygon: `None` when they all
+/// agree, else a sentence such as `asano gives 5 triangles but minitri gives 6`. Entries of
+/// algorithms that do not compute a minimum ([`Algorithm::is_minimum`]) are ignored.
+pub fn agreement(results: &[(Algorithm, usize)]) -> Option<String> {
+    let mut exact = results.iter().filter(|(a, _)| a.is_minimum());
+    let &(first, count) = exact.next()?;
+    let others: Vec<String> = exact
+        .filter(|&&(_, c)| c != count)
+        .map(|&(a, c)| format!("{a} gives {c}"))
+        .collect();
+    if others.is_empty() {
+        return None;
+    }
+    Some(format!(
+        "{first} gives {} but {}",
+        plural(count, "triangle"),
+        others.join(" and ")
+    ))
+}
+
+/// Collects problems up to [`MAX_PROBLEMS`], counting the rest without formatting them.
+#[derive(Default)]
+struct Problems {
+    list: Vec<String>,
+    more: usize,
+}
+
+impl Problems {
+    fn add(&mut self, message: impl FnOnce() -> String) {
+        if self.list.len() < MAX_PROBLEMS {
+            self.list.push(message());
+        } else {
+            self.more += 1;
+        }
+    }
+
+    fn finish(mut self) -> Check {
+        if self.more > 0 {
+            self.list.push(format!("... and {} more", self.more));
+        }
+        Check {
+            valid: self.list.is_empty(),
+            problems: self.list,
+        }
+    }
+}
+
+fn plural(count: usize, word: &str) -> String {
+    if count == 1 {
+        format!("1 {word}")
+    } else {
+        format!("{count} {word}s")
+    }
+}
+
+/// The corners of `tri` when its indices are in range and distinct.
+fn corners(polygon: &Polygon, tri: [usize; 3]) -> Option<[Point; 3]> {
+    let [a, b, c] = tri;
+    let in_range = tri.iter().all(|&i| i < polygon.len());
+    (in_range && a != b && b != c && a != c).then(|| tri.map(|i| polygon.point(i)))
+}
+
+/// `what k [ids]` with input vertex numbers, or the raw stored indices if any is out of range.
+fn name(polygon: &Polygon, what: &str, k: usize, tri: [usize; 3]) -> String {
+    if tri.iter().all(|&i| i < polygon.len()) {
+        let [a, b, c] = tri.map(|i| polygon.id(i));
+        format!("{what} {k} [{a}, {b}, {c}]")
+    } else {
+        let [a, b, c] = tri;
+        format!("{what} {k} with stored indices [{a}, {b}, {c}]")
+    }
+}
+
+/// Problems with the indices of `tri`, if any (check 1).
+fn index_problem(polygon: &Polygon, what: &str, k: usize, tri: [usize; 3]) -> Option<String> {
+    let n = polygon.len();
+    if let Some(&bad) = tri.iter().find(|&&i| i >= n) {
+        let name = name(polygon, what, k, tri);
+        return Some(format!(
+            "{name} uses index {bad}, but the polygon has only {n} vertices"
+        ));
+    }
+    let [a, b, c] = tri;
+    let repeated = if a == b || a == c { a } else { b };
+    (a == b || b == c || a == c).then(|| {
+        let id = polygon.id(repeated);
+        format!("{} repeats vertex {id}", name(polygon, what, k, tri))
+    })
+}
+
+/// Check 5: the number of triangles.
+fn check_count(polygon: &Polygon, t: &Triangulation, problems: &mut Problems) {
+    let (n, w, d) = (polygon.len(), polygon.holes(), t.degenerate.len());
+    let expected = n as i128 + 2 * w as i128 - d as i128 - 2;
+    if t.triangles.len() as i128 != expected {
+        problems.add(|| {
+            format!(
+                "{}, but n + 2w - d - 2 = {n} + {} - {d} - 2 = {expected}",
+                plural(t.triangles.len(), "triangle"),
+                2 * w
+            )
+        });
+    }
+}
+
+/// Check 4: the total area (triangles with unusable indices count as zero).
+fn check_area(polygon: &Polygon, t: &Triangulation, problems: &mut Problems) {
+    let mut total = WideSum::default();
+    for &tri in &t.triangles {
+        if let Some([a, b, c]) = corners(polygon, tri) {
+            total.add(cross(a, b, c));
+        }
+    }
+    let want = polygon.twice_area();
+    if total != want {
+        problems.add(|| {
+            format!(
+                "the triangles' total twice-area is {} but the polygon's is {} (in units of the exact grid)",
+                show(total),
+                show(want)
+            )
+        });
+    }
+}
+
+fn show(sum: WideSum) -> String {
+    match sum.value() {
+        Some(v) => v.to_string(),
+        None => format!("about {:e}", sum.to_f64()),
+    }
+}
+
+/// Checks 1 and 2 for every triangle.
+fn check_triangles(polygon: &Polygon, t: &Triangulation, problems: &mut Problems) {
+    for (k, &tri) in t.triangles.iter().enumerate() {
+        if let Some(problem) = index_problem(polygon, "triangle", k, tri) {
+            problems.add(|| problem);
+            continue;
+        }
+        let [a, b, c] = tri.map(|i| polygon.point(i));
+        match cross(a, b, c).cmp(&0) {
+            Ordering::Greater => {}
+            Ordering::Equal => {
+                problems.add(|| format!("{} has zero area", name(polygon, "triangle", k, tri)))
+            }
+            Ordering::Less => {
+                problems.add(|| format!("{} is clockwise", name(polygon, "triangle", k, tri)))
+            }
+        }
+    }
+}
+
+/// The supporting line of a segment, as an exact key: the primitive direction `(dx, dy)`, with
+/// `dx > 0` or `dx == 0 < dy`, and the offset `c = dy x - dx y` of any point on it.
+///
+/// Along that direction the points of the line increase in the derived order of [`Point`]
+/// (x first, then y), which the sweeps use as the position along the line.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+struct Line {
+    dx: i64,
+    dy: i64,
+    c: i128,
+}
+
+/// The line through distinct grid points `p` and `q`, and whether `p -> q` runs in its direction.
+/// Exact: differences are at most `2^62` and products below `2^124` (kernel contract).
+fn line_through(p: Point, q: Point) -> (Line, bool) {
+    let (dx, dy) = (q.x - p.x, q.y - p.y);
+    // At least 1 for distinct points, at most 2^62: fits i64.
+    let g = gcd(dx.unsigned_abs(), dy.unsigned_abs()).max(1) as i64;
+    let (dx, dy) = (dx / g, dy / g);
+    let forward = dx > 0 || (dx == 0 && dy > 0);
+    let (dx, dy) = if forward { (dx, dy) } else { (-dx, -dy) };
+    let c = i128::from(dy) * i128::from(p.x) - i128::from(dx) * i128::from(p.y);
+    (Line { dx, dy, c }, forward)
+}
+
+/// Binary greatest common divisor (`gcd(0, 0) = 0`).
+fn gcd(mut a: u64, mut b: u64) -> u64 {
+    if a == 0 || b == 0 {
+        return a | b;
+    }
+    let shift = (a | b).trailing_zeros();
+    a >>= a.trailing_zeros();
+    loop {
+        b >>= b.trailing_zeros();
+        if a > b {
+            std::mem::swap(&mut a, &mut b);
+        }
+        b -= a;
+        if b == 0 {
+            return a << shift;
+        }
+    }
+}
+
+/// One end of a weighted segment on a line: the running weight changes by `delta` at `at`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+struct Event {
+    line: Line,
+    at: Point,
+    delta: i64,
+}
+
+/// Check 3: the boundary chain of the triangles minus that of the polygon is zero.
+fn check_chain(polygon: &Polygon, t: &Triangulation, problems: &mut Problems) {
+    // Every segment with weight +1: triangle sides as they run, polygon edges reversed (-1).
+    let mut sides: Vec<[usize; 2]> = Vec::with_capacity(3 * t.triangles.len() + polygon.len());
+    for &tri in &t.triangles {
+        if corners(polygon, tri).is_some() {
+            let [a, b, c] = tri;
+            sides.extend([[a, b], [b, c], [c, a]]);
+        }
+    }
+    sides.extend((0..polygon.len()).map(|i| [polygon.next(i), i]));
+    // Cancel segments with the same two end vertices (most of them in a valid triangulation).
+    let pair = |&[u, v]: &[usize; 2]| (u.min(v), u.max(v));
+    sides.sort_unstable_by_key(pair);
+    let mut events = Vec::new();
+    for run in sides.chunk_by(|s, r| pair(s) == pair(r)) {
+        let (lo, hi) = pair(&run[0]);
+        let net: i64 = run.iter().map(|&[u, v]| if u < v { 1 } else { -1 }).sum();
+        let (p, q) = (polygon.point(lo), polygon.point(hi));
+        if net == 0 || p == q {
+            continue;
+        }
+        // `net` times the segment p -> q; on its line, weight `w` from min to max.
+        let (line, forward) = line_through(p, q);
+        let w = if forward { net } else { -net };
+        events.push(Event {
+            line,
+            at: p.min(q),
+            delta: w,
+        });
+        events.push(Event {
+            line,
+            at: p.max(q),
+            delta: -w,
+        });
+    }
+    events.sort_unstable();
+    // Sweep each line: the running weight must be zero between consecutive distinct points.
+    for on_line in events.chunk_by(|e, f| e.line == f.line) {
+        let mut sum = 0;
+        let mut start = on_line[0].at;
+        for at_point in on_line.chunk_by(|e, f| e.at == f.at) {
+            let at = at_point[0].at;
+            let new_sum = sum + at_point.iter().map(|e| e.delta).sum::<i64>();
+            if new_sum != sum {
+                if sum != 0 {
+                    problems.add(|| uncancelled(polygon, start, at, sum));
+                }
+                sum = new_sum;
+                start = at;
+            }
+        }
+    }
+}
+
+/// Describes the stretch `from -> to` (in line order) whose chain weight is `w != 0`.
+fn uncancelled(polygon: &Polygon, from: Point, to: Point, w: i64) -> String {
+    let (from, to) = if w > 0 { (from, to) } else { (to, from) };
+    let grid = polygon.grid();
+    format!(
+        "the boundaries do not cancel on the stretch {} -> {}: (triangles covering) - (polygon) \
+         is {} higher on its left than on its right, so beside it there is a gap, an overlap, \
+         or a triangle outside the polygon",
+        grid.format_point(from),
+        grid.format_point(to),
+        w.unsigned_abs()
+    )
+}
+
+/// A listed degenerate triangle to find on a triangle side: the segment `lo..=hi` on `line`.
+struct Query {
+    line: Line,
+    lo: Point,
+    hi: Point,
+    k: usize,
+}
+
+/// Check 6: the degenerate triangles.
+fn check_degenerate(polygon: &Polygon, t: &Triangulation, problems: &mut Problems) {
+    let mut queries = Vec::new();
+    let mut middles = Vec::new();
+    for (k, &deg) in t.degenerate.iter().enumerate() {
+        if let Some(problem) = index_problem(polygon, "degenerate triangle", k, deg) {
+            problems.add(|| problem);
+            continue;
+        }
+        let [a, b, c] = deg.map(|i| polygon.point(i));
+        if !strictly_between(a, b, c) {
+            problems.add(|| {
+                let [ia, ib, ic] = deg.map(|i| polygon.id(i));
+                format!(
+                    "{}: vertex {ib} does not lie strictly between vertices {ia} and {ic}",
+                    name(polygon, "degenerate triangle", k, deg)
+                )
+            });
+            continue;
+        }
+        let (line, _) = line_through(a, c);
+        queries.push(Query {
+            line,
+            lo: a.min(c),
+            hi: a.max(c),
+            k,
+        });
+        let [ia, ib, ic] = deg;
+        middles.push((ib, ia.min(ic), ia.max(ic), k));
+    }
+    // No two share a middle vertex (a vertex lies inside at most one triangle side).
+    middles.sort_unstable();
+    for pair in middles.windows(2) {
+        let ((b, a, c, first), (b2, a2, c2, second)) = (pair[0], pair[1]);
+        if b != b2 {
+            continue;
+        }
+        let this = name(polygon, "degenerate triangle", second, t.degenerate[second]);
+        if (a, c) == (a2, c2) {
+            problems.add(|| format!("{this} repeats degenerate triangle {first}"));
+        } else {
+            let id = polygon.id(b);
+            problems.add(|| {
+                format!(
+                    "{this} has the same middle vertex {id} as degenerate triangle {first}, \
+                     but a vertex lies inside at most one triangle side"
+                )
+            });
+        }
+    }
+    if queries.is_empty() {
+        return;
+    }
+    // The triangle sides on the lines of the queries, sorted by line and lower end.
+    let mut lines: Vec<Line> = queries.iter().map(|q| q.line).collect();
+    lines.sort_unstable();
+    lines.dedup();
+    let mut sides: Vec<(Line, Point, Point)> = Vec::new();
+    for &tri in &t.triangles {
+        if let Some([a, b, c]) = corners(polygon, tri) {
+            for (p, q) in [(a, b), (b, c), (c, a)] {
+                let (line, _) = line_through(p, q);
+                if lines.binary_search(&line).is_ok() {
+                    sides.push((line, p.min(q), p.max(q)));
+                }
+            }
+        }
+    }
+    sides.sort_unstable();
+    // reach[i]: the farthest upper end among sides[..=i] on the line of sides[i].
+    let mut reach = Vec::with_capacity(sides.len());
+    for (i, side) in sides.iter().enumerate() {
+        let before = (i > 0 && sides[i - 1].0 == side.0).then(|| reach[i - 1]);
+        reach.push(before.map_or(side.2, |r: Point| r.max(side.2)));
+    }
+    for query in &queries {
+        // The last side on the query's line whose lower end is at or before the query's.
+        let end = sides.partition_point(|s| (s.0, s.1) <= (query.line, query.lo));
+        let covered = end > 0 && sides[end - 1].0 == query.line && reach[end - 1] >= query.hi;
+        if !covered {
+            let deg = t.degenerate[query.k];
+            problems.add(|| {
+                let [ia, ib, ic] = deg.map(|i| polygon.id(i));
+                format!(
+                    "{}: no triangle side contains the segment from vertex {ia} {} to vertex {ic} \
+                     {}, so vertex {ib} is not a T-junction there",
+                    name(polygon, "degenerate triangle", query.k, deg),
+                    polygon.format_vertex(deg[0]),
+                    polygon.format_vertex(deg[2]),
+                )
+            });
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,1 +1,5 @@
+//! Integration tests: one binary (`autotests = false`), modules per topic.
 
+mod cli;
+mod property;
+mod util;

@@ -15,8 +15,11 @@
 //!    formula for `p_{i,t}`; we index by end points `(i, j = i + t - 1)` instead of `(i, t)`,
 //!    which is the same table, and fold the cases `k = i + 1` and `k = j - 1` in through
 //!    `cost[i][i+1] = 0`). Apexes making a clockwise triangle are skipped.
-//! 3. Back-pointers (`choice[i][j] = k`) recover the triangles, and the dummies used become the
-//!    degenerate triangles `[a, b, c]` with `b` the middle vertex.
+//! 3. Back-pointers (`choice[i][j] = k`) recover the triangles. The dummies used are as many as
+//!    the degenerate triangles saved, but need not be minimally degenerate themselves (a dummy
+//!    `(4,2) (3,2) (1,2)` may have the vertex `(2,2)` on its long side, and two dummies may
+//!    share it); so the reported degenerate triangles are read off the final triangles: every
+//!    vertex inside a triangle side, with its neighbours along that side ([`super::t_junctions`]).
 //!
 //! Departures from the paper: the polygon is counter-clockwise (the paper: clockwise); the
 //! answer is `cost[0][n-1]` because `n-1 -> 0` is an edge.
@@ -26,7 +29,7 @@
 
 use super::chords::ChordTable;
 use super::{Algorithm, TriangulateError, Triangulation};
-use crate::geom::kernel::{cross, strictly_between};
+use crate::geom::kernel::cross;
 use crate::geom::polygon::Polygon;
 
 /// The default largest number of vertices the DP accepts (about 2 s and 54 MB at 3000).
@@ -39,7 +42,11 @@ pub fn estimate(n: usize) -> (String, String) {
     let bytes = 6.0 * (n as f64).powi(2) + (n as f64).powi(2) / 8.0;
     // Measured: about 0.6 ns per inner step on the benchmark machine (see README), n^3/6 steps.
     let seconds = 0.6e-9 * (n as f64).powi(3) / 6.0;
-    let memory = if bytes >= 1e9 { format!("{:.1} GB", bytes / 1e9) } else { format!("{:.0} MB", bytes / 1e6) };
+    let memory = if bytes >= 1e9 {
+        format!("{:.1} GB", bytes / 1e9)
+    } else {
+        format!("{:.0} MB", bytes / 1e6)
+    };
     let time = if seconds >= 3600.0 {
         format!("{:.1} hours", seconds / 3600.0)
     } else if seconds >= 60.0 {
@@ -58,12 +65,20 @@ pub fn estimate(n: usize) -> (String, String) {
 pub fn triangulate(polygon: &Polygon, limit: usize) -> Result<Triangulation, TriangulateError> {
     let n = polygon.len();
     if polygon.holes() > 0 {
-        return Err(TriangulateError::HolesUnsupported { algorithm: Algorithm::Asano, holes: polygon.holes() });
+        return Err(TriangulateError::HolesUnsupported {
+            algorithm: Algorithm::Asano,
+            holes: polygon.holes(),
+        });
     }
     let limit = limit.min(65_000);
     if n > limit {
         let (memory, time) = estimate(n);
-        return Err(TriangulateError::TooLarge { n, limit, memory, time });
+        return Err(TriangulateError::TooLarge {
+            n,
+            limit,
+            memory,
+            time,
+        });
     }
     let chords = ChordTable::new(polygon);
     let at = |i: usize, j: usize| i * n + j;
@@ -81,7 +96,10 @@ pub fn triangulate(polygon: &Polygon, limit: usize) -> Result<Triangulation, Tri
                 continue;
             }
             let (pi, pj) = (polygon.point(i), polygon.point(j));
-            let (row, col) = (&cost[at(i, 0)..at(i, 0) + n], &cost_t[at(j, 0)..at(j, 0) + n]);
+            let (row, col) = (
+                &cost[at(i, 0)..at(i, 0) + n],
+                &cost_t[at(j, 0)..at(j, 0) + n],
+            );
             let (mut best, mut arg) = (u32::from(INF), 0);
             for k in i + 1..j {
                 let (left, right) = (row[k], col[k]);
@@ -109,7 +127,7 @@ pub fn triangulate(polygon: &Polygon, limit: usize) -> Result<Triangulation, Tri
     }
     // `n-1 -> 0` is an edge, so the whole polygon is P(0..n-1), which always has a triangulation.
     let mut triangles = Vec::new();
-    let mut degenerate = Vec::new();
+    let mut dummies = 0;
     let mut stack = vec![(0, n - 1)];
     while let Some((i, j)) = stack.pop() {
         if j - i < 2 {
@@ -119,26 +137,37 @@ pub fn triangulate(polygon: &Polygon, limit: usize) -> Result<Triangulation, Tri
         let (a, b, c) = (polygon.point(i), polygon.point(k), polygon.point(j));
         if cross(a, b, c) > 0 {
             triangles.push([i, k, j]);
-        } else if strictly_between(a, b, c) {
-            degenerate.push([i, k, j]);
-        } else if strictly_between(b, a, c) {
-            degenerate.push([k, i, j]);
         } else {
-            degenerate.push([i, j, k]);
+            dummies += 1;
         }
         stack.push((i, k));
         stack.push((k, j));
     }
-    Ok(Triangulation { algorithm: Algorithm::Asano, triangles, degenerate, optimal: true })
+    let degenerate = super::t_junctions(polygon, &triangles);
+    debug_assert_eq!(
+        degenerate.len(),
+        dummies,
+        "each dummy saves exactly one triangle"
+    );
+    Ok(Triangulation {
+        algorithm: Algorithm::Asano,
+        triangles,
+        degenerate,
+        optimal: true,
+    })
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::algo::chords::tests_support::polygon;
+    use crate::geom::kernel::strictly_between;
 
     fn count(ring: &[(i64, i64)]) -> usize {
-        triangulate(&polygon(&[ring]), DEFAULT_LIMIT).unwrap().triangles.len()
+        triangulate(&polygon(&[ring]), DEFAULT_LIMIT)
+            .unwrap()
+            .triangles
+            .len()
     }
 
     #[test]
@@ -146,9 +175,34 @@ mod tests {
         assert_eq!(count(&[(0, 0), (1, 0), (2, 0), (3, 0), (3, 3), (0, 3)]), 2);
         assert_eq!(count(&[(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)]), 3);
         assert_eq!(count(&[(0, 0), (1, 0), (2, -1), (3, 0), (4, 0), (2, 2)]), 2);
-        let u = [(3, 2), (4, 2), (5, 2), (6, 2), (6, 3), (6, 4), (5, 4), (5, 3), (4, 3), (4, 4), (3, 4), (3, 3)];
+        let u = [
+            (3, 2),
+            (4, 2),
+            (5, 2),
+            (6, 2),
+            (6, 3),
+            (6, 4),
+            (5, 4),
+            (5, 3),
+            (4, 3),
+            (4, 4),
+            (3, 4),
+            (3, 3),
+        ];
         assert_eq!(count(&u), 5);
-        assert_eq!(count(&[(3, 2), (6, 2), (6, 4), (5, 4), (5, 3), (4, 3), (4, 4), (3, 4)]), 6);
+        assert_eq!(
+            count(&[
+                (3, 2),
+                (6, 2),
+                (6, 4),
+                (5, 4),
+                (5, 3),
+                (4, 3),
+                (4, 4),
+                (3, 4)
+            ]),
+            6
+        );
     }
 
     #[test]
@@ -163,13 +217,54 @@ mod tests {
     }
 
     #[test]
+    fn degenerate_triangles_are_the_t_junctions_of_the_output() {
+        // Found by the property test: four collinear vertices on y = 2; the DP's dummies were
+        // (4,2)(3,2)(1,2) and (4,2)(2,2)(1,2), neither a T-junction of the final triangles.
+        let p = polygon(&[&[
+            (1, 1),
+            (2, 1),
+            (3, 1),
+            (3, 2),
+            (4, 2),
+            (4, 3),
+            (3, 3),
+            (2, 3),
+            (2, 2),
+            (1, 2),
+        ]]);
+        let t = triangulate(&p, DEFAULT_LIMIT).unwrap();
+        assert_eq!(t.triangles.len() + t.degenerate.len(), p.len() - 2);
+        let mut middles: Vec<usize> = t.degenerate.iter().map(|d| d[1]).collect();
+        middles.sort();
+        // The flat vertices (2,1) and (3,3), and the reflex (3,2) and (2,2) on y = 2.
+        assert_eq!(middles, vec![1, 3, 6, 8]);
+        assert!(
+            crate::verify::check(&p, &t).valid,
+            "{:?}",
+            crate::verify::check(&p, &t).problems
+        );
+    }
+
+    #[test]
     fn refuses_holes_and_oversized_inputs_with_an_estimate() {
         let p = polygon(&[&[(0, 0), (9, 0), (9, 9), (0, 9)], &[(1, 1), (2, 1), (1, 2)]]);
         let e = triangulate(&p, DEFAULT_LIMIT).unwrap_err();
-        assert!(e.to_string().contains("without holes only, and this polygon has 1 hole"), "{e}");
+        assert!(
+            e.to_string()
+                .contains("without holes only, and this polygon has 1 hole"),
+            "{e}"
+        );
         let p = polygon(&[&[(0, 0), (1, 0), (2, 0), (3, 0), (3, 3), (0, 3)]]);
         let e = triangulate(&p, 5).unwrap_err();
-        assert!(e.to_string().contains("above its limit of 5 vertices; use --algorithm minitri"), "{e}");
-        assert_eq!(estimate(10_000).0, "612 MB", "6 n^2 bytes of tables plus n^2 bits");
+        assert!(
+            e.to_string()
+                .contains("above its limit of 5 vertices; use --algorithm minitri"),
+            "{e}"
+        );
+        assert_eq!(
+            estimate(10_000).0,
+            "612 MB",
+            "6 n^2 bytes of tables plus n^2 bits"
+        );
     }
 }

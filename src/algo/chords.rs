@@ -34,7 +34,10 @@ impl ChordTable {
     /// Computes the table for `polygon`.
     pub fn new(polygon: &Polygon) -> ChordTable {
         let n = polygon.len();
-        let mut table = ChordTable { n, bits: vec![0; (n * n).div_ceil(64)] };
+        let mut table = ChordTable {
+            n,
+            bits: vec![0; (n * n).div_ceil(64)],
+        };
         let mut visible = Vec::new();
         for v in 0..n {
             visible_from(polygon, v, &mut visible);
@@ -87,12 +90,17 @@ impl Ord for Cut {
         if self.edge == other.edge {
             return Ordering::Equal;
         }
-        let (s1, s2) = (cross(self.a, self.b, other.a), cross(self.a, self.b, other.b));
-        if s1 >= 0 && s2 >= 0 {
-            Ordering::Greater
-        } else if s1 <= 0 && s2 <= 0 {
-            Ordering::Less
-        } else if cross(other.a, other.b, self.a) >= 0 && cross(other.a, other.b, self.b) >= 0 {
+        let (s1, s2) = (
+            cross(self.a, self.b, other.a),
+            cross(self.a, self.b, other.b),
+        );
+        let self_nearer = if s1 >= 0 && s2 >= 0 {
+            false
+        } else {
+            (s1 <= 0 && s2 <= 0)
+                || (cross(other.a, other.b, self.a) >= 0 && cross(other.a, other.b, self.b) >= 0)
+        };
+        if self_nearer {
             Ordering::Less
         } else {
             Ordering::Greater
@@ -104,7 +112,10 @@ impl Ord for Cut {
 fn visible_from(polygon: &Polygon, v: usize, out: &mut Vec<usize>) {
     out.clear();
     let c = polygon.point(v);
-    let (vp, vn) = (polygon.point(polygon.prev(v)), polygon.point(polygon.next(v)));
+    let (vp, vn) = (
+        polygon.point(polygon.prev(v)),
+        polygon.point(polygon.next(v)),
+    );
     let mut order: Vec<usize> = (0..polygon.len()).filter(|&u| u != v).collect();
     let dist = |u: usize| dot(c, polygon.point(u), polygon.point(u));
     order.sort_unstable_by(|&a, &b| {
@@ -119,8 +130,16 @@ fn visible_from(polygon: &Polygon, v: usize, out: &mut Vec<usize>) {
         }
         let (p, q) = (polygon.point(e), polygon.point(f));
         match cross(c, p, q).cmp(&0) {
-            Ordering::Greater => Some(Cut { a: p, b: q, edge: e }),
-            Ordering::Less => Some(Cut { a: q, b: p, edge: e }),
+            Ordering::Greater => Some(Cut {
+                a: p,
+                b: q,
+                edge: e,
+            }),
+            Ordering::Less => Some(Cut {
+                a: q,
+                b: p,
+                edge: e,
+            }),
             Ordering::Equal => None,
         }
     };
@@ -132,7 +151,8 @@ fn visible_from(polygon: &Polygon, v: usize, out: &mut Vec<usize>) {
     while start < order.len() {
         let mut end = start + 1;
         let first = polygon.point(order[start]);
-        while end < order.len() && cmp_angle(c, first, polygon.point(order[end])) == Ordering::Equal {
+        while end < order.len() && cmp_angle(c, first, polygon.point(order[end])) == Ordering::Equal
+        {
             end += 1;
         }
         let group = &order[start..end];
@@ -152,7 +172,10 @@ fn visible_from(polygon: &Polygon, v: usize, out: &mut Vec<usize>) {
                 if nearest.is_some_and(|k| cross(k.a, k.b, p) < 0) {
                     break; // an edge crosses the segment before u
                 }
-                let (up, un) = (polygon.point(polygon.prev(u)), polygon.point(polygon.next(u)));
+                let (up, un) = (
+                    polygon.point(polygon.prev(u)),
+                    polygon.point(polygon.next(u)),
+                );
                 if !in_closed_wedge(up, p, un, c) {
                     break;
                 }
@@ -176,12 +199,18 @@ fn visible_from(polygon: &Polygon, v: usize, out: &mut Vec<usize>) {
     }
 }
 
-/// The chord test straight from the definition, in O(n) per pair (tests and small inputs).
+/// The chord test straight from the definition, in O(n) per pair (the sweep's test oracle).
+#[cfg(test)]
 pub(crate) fn is_chord_naive(polygon: &Polygon, v: usize, u: usize) -> bool {
     use crate::geom::kernel::{properly_cross, strictly_between};
     let (a, b) = (polygon.point(v), polygon.point(u));
     let wedge = |w: usize, target: Point| {
-        in_closed_wedge(polygon.point(polygon.prev(w)), polygon.point(w), polygon.point(polygon.next(w)), target)
+        in_closed_wedge(
+            polygon.point(polygon.prev(w)),
+            polygon.point(w),
+            polygon.point(polygon.next(w)),
+            target,
+        )
     };
     if !wedge(v, b) || !wedge(u, a) {
         return false;
@@ -202,7 +231,12 @@ pub(crate) mod tests_support {
     /// A valid polygon from integer rings (panics if invalid: tests only).
     pub(crate) fn polygon(rings: &[&[(i64, i64)]]) -> Polygon {
         let d = |v: i64| Decimal::parse(&v.to_string()).unwrap();
-        let raw = RawPolygon { rings: rings.iter().map(|r| r.iter().map(|&(x, y)| [d(x), d(y)]).collect()).collect() };
+        let raw = RawPolygon {
+            rings: rings
+                .iter()
+                .map(|r| r.iter().map(|&(x, y)| [d(x), d(y)]).collect())
+                .collect(),
+        };
         Polygon::from_raw(&raw).expect("valid test polygon").0
     }
 }
@@ -219,7 +253,12 @@ mod tests {
         for a in 0..p.len() {
             for b in 0..p.len() {
                 if a != b {
-                    assert_eq!(table.is_chord(a, b), is_chord_naive(p, a, b), "{a}-{b} in {:?}", p.points());
+                    assert_eq!(
+                        table.is_chord(a, b),
+                        is_chord_naive(p, a, b),
+                        "{a}-{b} in {:?}",
+                        p.points()
+                    );
                 }
             }
         }
@@ -227,11 +266,33 @@ mod tests {
 
     #[test]
     fn chords_of_a_u_shape_with_flat_vertices() {
-        let p = polygon(&[&[(3, 2), (4, 2), (5, 2), (6, 2), (6, 3), (6, 4), (5, 4), (5, 3), (4, 3), (4, 4), (3, 4), (3, 3)]]);
+        let p = polygon(&[&[
+            (3, 2),
+            (4, 2),
+            (5, 2),
+            (6, 2),
+            (6, 3),
+            (6, 4),
+            (5, 4),
+            (5, 3),
+            (4, 3),
+            (4, 4),
+            (3, 4),
+            (3, 3),
+        ]]);
         let t = ChordTable::new(&p);
-        assert!(t.is_chord(0, 3), "along the bottom edges, through two flat vertices");
-        assert!(t.is_chord(11, 8), "from (3,3) to (4,3): along the notch bottom");
-        assert!(t.is_chord(11, 7), "(3,3)-(5,3) passes through the reflex vertex (4,3)");
+        assert!(
+            t.is_chord(0, 3),
+            "along the bottom edges, through two flat vertices"
+        );
+        assert!(
+            t.is_chord(11, 8),
+            "from (3,3) to (4,3): along the notch bottom"
+        );
+        assert!(
+            t.is_chord(11, 7),
+            "(3,3)-(5,3) passes through the reflex vertex (4,3)"
+        );
         assert!(!t.is_chord(10, 6), "(3,4)-(5,4) crosses the notch");
         assert!(!t.is_chord(9, 6), "(4,4)-(5,4) is outside");
         assert_matches_naive(&p);
@@ -255,7 +316,9 @@ mod tests {
                 let mut next = ring.clone();
                 next.insert(at, (rnd(7), rnd(7)));
                 let d = |v: i64| Decimal::parse(&v.to_string()).unwrap();
-                let raw = RawPolygon { rings: vec![next.iter().map(|&(x, y)| [d(x), d(y)]).collect()] };
+                let raw = RawPolygon {
+                    rings: vec![next.iter().map(|&(x, y)| [d(x), d(y)]).collect()],
+                };
                 if Polygon::from_raw(&raw).is_ok() {
                     ring = next;
                 }

@@ -28,7 +28,10 @@ use crate::geom::polygon::Polygon;
 /// [`TriangulateError::HolesUnsupported`] for a polygon with holes.
 pub fn triangulate(polygon: &Polygon) -> Result<Triangulation, TriangulateError> {
     if polygon.holes() > 0 {
-        return Err(TriangulateError::HolesUnsupported { algorithm: Algorithm::Ear, holes: polygon.holes() });
+        return Err(TriangulateError::HolesUnsupported {
+            algorithm: Algorithm::Ear,
+            holes: polygon.holes(),
+        });
     }
     let n = polygon.len();
     let pts = polygon.points();
@@ -53,12 +56,20 @@ pub fn triangulate(polygon: &Polygon) -> Result<Triangulation, TriangulateError>
             misses += 1;
             // A valid polygon always has an ear (see the module documentation); the guard only
             // keeps a broken invariant from looping forever.
-            assert!(misses <= remaining, "no ear in a valid polygon: invariant broken");
+            assert!(
+                misses <= remaining,
+                "no ear in a valid polygon: invariant broken"
+            );
             v = q;
         }
     }
     triangles.push([prev[v], v, next[v]]);
-    Ok(Triangulation { algorithm: Algorithm::Ear, triangles, degenerate: Vec::new(), optimal: false })
+    Ok(Triangulation {
+        algorithm: Algorithm::Ear,
+        triangles,
+        degenerate: Vec::new(),
+        optimal: false,
+    })
 }
 
 fn is_ear(pts: &[Point], grid: &Grid, p: usize, v: usize, q: usize) -> bool {
@@ -88,11 +99,20 @@ struct Grid {
 impl Grid {
     fn new(pts: &[Point]) -> Grid {
         let side = (pts.len() as f64).sqrt().ceil().max(1.0) as usize;
-        let min = Point::new(pts.iter().map(|p| p.x).min().unwrap_or(0), pts.iter().map(|p| p.y).min().unwrap_or(0));
+        let min = Point::new(
+            pts.iter().map(|p| p.x).min().unwrap_or(0),
+            pts.iter().map(|p| p.y).min().unwrap_or(0),
+        );
         let max_x = pts.iter().map(|p| p.x).max().unwrap_or(0);
         let max_y = pts.iter().map(|p| p.y).max().unwrap_or(0);
         let cell = |span: i64| (i128::from(span) / side as i128) + 1;
-        let mut grid = Grid { cells: vec![Vec::new(); side * side], side, min, cell_w: cell(max_x - min.x), cell_h: cell(max_y - min.y) };
+        let mut grid = Grid {
+            cells: vec![Vec::new(); side * side],
+            side,
+            min,
+            cell_w: cell(max_x - min.x),
+            cell_h: cell(max_y - min.y),
+        };
         for (i, &p) in pts.iter().enumerate() {
             let k = grid.cell(p);
             grid.cells[k.1 * side + k.0].push(i);
@@ -117,7 +137,8 @@ impl Grid {
     fn any_in_box(&self, lo: Point, hi: Point, mut hit: impl FnMut(usize) -> bool) -> bool {
         let (x0, y0) = self.cell(lo);
         let (x1, y1) = self.cell(hi);
-        (y0..=y1).any(|cy| (x0..=x1).any(|cx| self.cells[cy * self.side + cx].iter().any(|&w| hit(w))))
+        (y0..=y1)
+            .any(|cy| (x0..=x1).any(|cx| self.cells[cy * self.side + cx].iter().any(|&w| hit(w))))
     }
 }
 
@@ -142,9 +163,40 @@ mod tests {
     #[test]
     fn flat_vertices_never_give_zero_area_triangles() {
         check(&[(0, 0), (1, 0), (2, 0), (3, 0), (3, 3), (0, 3)]);
-        check(&[(3, 2), (4, 2), (5, 2), (6, 2), (6, 3), (6, 4), (5, 4), (5, 3), (4, 3), (4, 4), (3, 4), (3, 3)]);
-        check(&[(0, 0), (1, 0), (2, 0), (2, 1), (2, 2), (1, 2), (0, 2), (0, 1)]);
-        check(&[(0, 0), (2, 0), (4, 0), (2, 1), (4, 2), (2, 2), (0, 2), (0, 1)]);
+        check(&[
+            (3, 2),
+            (4, 2),
+            (5, 2),
+            (6, 2),
+            (6, 3),
+            (6, 4),
+            (5, 4),
+            (5, 3),
+            (4, 3),
+            (4, 4),
+            (3, 4),
+            (3, 3),
+        ]);
+        check(&[
+            (0, 0),
+            (1, 0),
+            (2, 0),
+            (2, 1),
+            (2, 2),
+            (1, 2),
+            (0, 2),
+            (0, 1),
+        ]);
+        check(&[
+            (0, 0),
+            (2, 0),
+            (4, 0),
+            (2, 1),
+            (4, 2),
+            (2, 2),
+            (0, 2),
+            (0, 1),
+        ]);
     }
 
     #[test]

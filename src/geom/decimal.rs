@@ -41,7 +41,11 @@ pub enum NumberError {
 
 impl Decimal {
     /// Zero.
-    pub const ZERO: Decimal = Decimal { negative: false, mantissa: 0, exponent: 0 };
+    pub const ZERO: Decimal = Decimal {
+        negative: false,
+        mantissa: 0,
+        exponent: 0,
+    };
 
     /// Parses a decimal literal exactly.
     ///
@@ -112,8 +116,16 @@ impl Decimal {
             if trimmed.len() > 6 {
                 return Err(NumberError::ExponentOutOfRange(text.to_string()));
             }
-            let magnitude: i64 = if trimmed.is_empty() { 0 } else { trimmed.parse().map_err(|_| invalid())? };
-            exponent = if rest.starts_with('-') { -magnitude } else { magnitude };
+            let magnitude: i64 = if trimmed.is_empty() {
+                0
+            } else {
+                trimmed.parse().map_err(|_| invalid())?
+            };
+            exponent = if rest.starts_with('-') {
+                -magnitude
+            } else {
+                magnitude
+            };
         }
         exponent -= fraction_digits;
         while digits.last() == Some(&0) {
@@ -130,7 +142,11 @@ impl Decimal {
             return Err(NumberError::ExponentOutOfRange(text.to_string()));
         }
         let mantissa = digits.iter().fold(0u128, |m, &d| m * 10 + u128::from(d));
-        Ok(Decimal { negative, mantissa, exponent: exponent as i32 })
+        Ok(Decimal {
+            negative,
+            mantissa,
+            exponent: exponent as i32,
+        })
     }
 
     /// The power of ten of the last significant digit (`0.25` has exponent -2).
@@ -141,7 +157,9 @@ impl Decimal {
     /// `self × 10^scale` as an exact integer, if it is one and fits an `i128`.
     pub(crate) fn scaled(&self, scale: i32) -> Option<i128> {
         let shift = u32::try_from(self.exponent.checked_add(scale)?).ok()?;
-        let magnitude = i128::try_from(self.mantissa).ok()?.checked_mul(10i128.checked_pow(shift)?)?;
+        let magnitude = i128::try_from(self.mantissa)
+            .ok()?
+            .checked_mul(10i128.checked_pow(shift)?)?;
         Some(if self.negative { -magnitude } else { magnitude })
     }
 
@@ -214,18 +232,38 @@ mod tests {
 
     #[test]
     fn bad_numbers_are_named() {
-        assert_eq!(Decimal::parse("NaN"), Err(NumberError::NonFinite("NaN".into())));
-        assert_eq!(Decimal::parse("-Infinity"), Err(NumberError::NonFinite("-Infinity".into())));
-        assert!(matches!(Decimal::parse("1.2.3"), Err(NumberError::Invalid(_))));
+        assert_eq!(
+            Decimal::parse("NaN"),
+            Err(NumberError::NonFinite("NaN".into()))
+        );
+        assert_eq!(
+            Decimal::parse("-Infinity"),
+            Err(NumberError::NonFinite("-Infinity".into()))
+        );
+        assert!(matches!(
+            Decimal::parse("1.2.3"),
+            Err(NumberError::Invalid(_))
+        ));
         assert!(matches!(Decimal::parse("-"), Err(NumberError::Invalid(_))));
         assert!(matches!(Decimal::parse("1e"), Err(NumberError::Invalid(_))));
-        assert!(matches!(Decimal::parse("0x10"), Err(NumberError::Invalid(_))));
-        assert!(matches!(Decimal::parse("1e999999999"), Err(NumberError::ExponentOutOfRange(_))));
+        assert!(matches!(
+            Decimal::parse("0x10"),
+            Err(NumberError::Invalid(_))
+        ));
+        assert!(matches!(
+            Decimal::parse("1e999999999"),
+            Err(NumberError::ExponentOutOfRange(_))
+        ));
         assert!(matches!(
             Decimal::parse("123456789012345678901234567890123456789"),
             Err(NumberError::TooManyDigits(_))
         ));
         // Trailing zeros do not count as significant digits.
-        assert_eq!(d("1000000000000000000000000000000000000000000").to_string().len(), 43);
+        assert_eq!(
+            d("1000000000000000000000000000000000000000000")
+                .to_string()
+                .len(),
+            43
+        );
     }
 }

@@ -169,7 +169,9 @@ pub fn cmp_angle(centre: Point, a: Point, b: Point) -> Ordering {
             1
         }
     };
-    half(a).cmp(&half(b)).then_with(|| 0.cmp(&cross(centre, a, b)))
+    half(a)
+        .cmp(&half(b))
+        .then_with(|| 0.cmp(&cross(centre, a, b)))
 }
 
 /// An exact sum of many `i128` values (areas of large polygons), immune to overflow.
@@ -222,9 +224,18 @@ mod tests {
     #[test]
     fn orientation_is_exact_at_the_range_limit() {
         let m = MAX_COORD;
-        assert_eq!(orient(p(0, 0), p(m, m), p(m - 1, m - 1)), Orientation::Collinear);
-        assert_eq!(orient(p(0, 0), p(m, m - 1), p(m - 1, m - 2)), Orientation::Clockwise);
-        assert_eq!(orient(p(0, 0), p(m, 0), p(0, m)), Orientation::CounterClockwise);
+        assert_eq!(
+            orient(p(0, 0), p(m, m), p(m - 1, m - 1)),
+            Orientation::Collinear
+        );
+        assert_eq!(
+            orient(p(0, 0), p(m, m - 1), p(m - 1, m - 2)),
+            Orientation::Clockwise
+        );
+        assert_eq!(
+            orient(p(0, 0), p(m, 0), p(0, m)),
+            Orientation::CounterClockwise
+        );
         assert_eq!(cross(p(0, m), p(m, 0), p(m, m)), (m as i128) * (m as i128));
     }
 
@@ -236,9 +247,15 @@ mod tests {
         assert_eq!(segment_contact(p(0, 0), p(2, 0), p(2, 0), p(3, 1)), Touch);
         assert_eq!(segment_contact(p(0, 0), p(2, 0), p(1, 0), p(3, 0)), Overlap);
         assert_eq!(segment_contact(p(0, 0), p(2, 0), p(2, 0), p(3, 0)), Touch);
-        assert_eq!(segment_contact(p(0, 0), p(2, 0), p(3, 0), p(4, 0)), Disjoint);
+        assert_eq!(
+            segment_contact(p(0, 0), p(2, 0), p(3, 0), p(4, 0)),
+            Disjoint
+        );
         assert_eq!(segment_contact(p(0, 0), p(0, 2), p(0, 1), p(0, 3)), Overlap);
-        assert_eq!(segment_contact(p(0, 0), p(2, 2), p(3, 0), p(4, 1)), Disjoint);
+        assert_eq!(
+            segment_contact(p(0, 0), p(2, 2), p(3, 0), p(4, 1)),
+            Disjoint
+        );
         assert!(properly_cross(p(0, 0), p(2, 2), p(0, 2), p(2, 0)));
         assert!(!properly_cross(p(0, 0), p(2, 2), p(1, 1), p(2, 0)));
     }
@@ -256,7 +273,10 @@ mod tests {
         // Convex corner at the origin of a CCW square: interior is the first quadrant.
         let (prev, w, next) = (p(0, 1), p(0, 0), p(1, 0));
         assert!(in_closed_wedge(prev, w, next, p(1, 1)));
-        assert!(in_closed_wedge(prev, w, next, p(5, 0)), "along an edge: closed");
+        assert!(
+            in_closed_wedge(prev, w, next, p(5, 0)),
+            "along an edge: closed"
+        );
         assert!(in_closed_wedge(prev, w, next, p(0, 5)));
         assert!(!in_closed_wedge(prev, w, next, p(-1, 1)));
         assert!(!in_closed_wedge(prev, w, next, p(1, -1)));
@@ -275,7 +295,15 @@ mod tests {
     #[test]
     fn angles_sort_counter_clockwise_from_the_x_axis() {
         let c = p(0, 0);
-        let mut pts = vec![p(0, -1), p(1, 1), p(-1, 0), p(1, 0), p(0, 1), p(1, -1), p(2, 2)];
+        let mut pts = [
+            p(0, -1),
+            p(1, 1),
+            p(-1, 0),
+            p(1, 0),
+            p(0, 1),
+            p(1, -1),
+            p(2, 2),
+        ];
         pts.sort_by(|&a, &b| cmp_angle(c, a, b));
         assert_eq!(pts[..4], [p(1, 0), p(1, 1), p(2, 2), p(0, 1)]);
         assert_eq!(pts[4..], [p(-1, 0), p(0, -1), p(1, -1)]);

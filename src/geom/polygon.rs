@@ -133,7 +133,9 @@ impl Polygon {
     ///
     /// # Errors
     /// A non-empty list of [`InvalidPolygon`]s.
-    pub fn from_raw_all_errors(raw: &RawPolygon) -> Result<(Polygon, Vec<Warning>), Vec<InvalidPolygon>> {
+    pub fn from_raw_all_errors(
+        raw: &RawPolygon,
+    ) -> Result<(Polygon, Vec<Warning>), Vec<InvalidPolygon>> {
         let (polygon, warnings) = Polygon::build(raw).map_err(|e| vec![e])?;
         let errors = validate::errors(&polygon);
         if errors.is_empty() {
@@ -146,7 +148,10 @@ impl Polygon {
     /// Grid conversion, numbering, duplicate removal and winding, without the sweep.
     pub(crate) fn build(raw: &RawPolygon) -> Result<(Polygon, Vec<Warning>), InvalidPolygon> {
         if raw.rings.is_empty() {
-            return Err(InvalidPolygon::TooFewVertices { ring: Ring::Outer, distinct: 0 });
+            return Err(InvalidPolygon::TooFewVertices {
+                ring: Ring::Outer,
+                distinct: 0,
+            });
         }
         let grid_values = to_grid(raw)?;
         let grid = grid_values.1;
@@ -183,14 +188,19 @@ impl Polygon {
                 kept.pop();
             }
             if kept.len() < 3 {
-                return Err(InvalidPolygon::TooFewVertices { ring, distinct: kept.len() });
+                return Err(InvalidPolygon::TooFewVertices {
+                    ring,
+                    distinct: kept.len(),
+                });
             }
             let mut area = WideSum::default();
             for i in 0..kept.len() {
                 area.add(cross(kept[0].0, kept[i].0, kept[(i + 1) % kept.len()].0));
             }
             let want = if r == 0 { 1 } else { -1 };
-            let collinear = kept.iter().all(|&(q, _)| cross(kept[0].0, kept[1].0, q) == 0);
+            let collinear = kept
+                .iter()
+                .all(|&(q, _)| cross(kept[0].0, kept[1].0, q) == 0);
             if collinear {
                 return Err(InvalidPolygon::ZeroArea { ring });
             }
@@ -298,7 +308,11 @@ impl Polygon {
     pub fn twice_area(&self) -> WideSum {
         let mut sum = WideSum::default();
         for i in 0..self.len() {
-            sum.add(cross(Point::default(), self.points[i], self.points[self.next(i)]));
+            sum.add(cross(
+                Point::default(),
+                self.points[i],
+                self.points[self.next(i)],
+            ));
         }
         sum
     }
@@ -314,7 +328,11 @@ impl Polygon {
             for i in range.clone() {
                 assert_eq!(self.ring_index(i), r);
                 assert_eq!(self.prev(self.next(i)), i);
-                area.add(cross(Point::default(), self.points[i], self.points[self.next(i)]));
+                area.add(cross(
+                    Point::default(),
+                    self.points[i],
+                    self.points[self.next(i)],
+                ));
             }
             assert_eq!(area.signum(), if r == 0 { 1 } else { -1 });
         }
@@ -331,7 +349,12 @@ fn dropped(ring: Ring, id: usize, same_as: usize, grid: &Grid, p: Point) -> Warn
 /// Puts every coordinate of `raw` on one exact integer grid, translated to start at 0.
 fn to_grid(raw: &RawPolygon) -> Result<(Vec<Point>, Grid), InvalidPolygon> {
     let all = || raw.rings.iter().flatten();
-    let scale = all().flatten().map(|d| -d.exponent()).max().unwrap_or(0).max(0);
+    let scale = all()
+        .flatten()
+        .map(|d| -d.exponent())
+        .max()
+        .unwrap_or(0)
+        .max(0);
     let too_large = |what: String| InvalidPolygon::CoordinatesTooLarge { detail: what };
     let mut scaled: Vec<[i128; 2]> = Vec::with_capacity(all().count());
     for [x, y] in all() {
@@ -362,7 +385,13 @@ fn to_grid(raw: &RawPolygon) -> Result<(Vec<Point>, Grid), InvalidPolygon> {
         .iter()
         .map(|p| Point::new((p[0] - origin[0]) as i64, (p[1] - origin[1]) as i64))
         .collect();
-    Ok((points, Grid { scale: scale as u32, origin }))
+    Ok((
+        points,
+        Grid {
+            scale: scale as u32,
+            origin,
+        },
+    ))
 }
 
 #[cfg(test)]
@@ -373,26 +402,55 @@ mod tests {
         RawPolygon {
             rings: rings
                 .iter()
-                .map(|r| r.iter().map(|(x, y)| [Decimal::parse(x).unwrap(), Decimal::parse(y).unwrap()]).collect())
+                .map(|r| {
+                    r.iter()
+                        .map(|(x, y)| [Decimal::parse(x).unwrap(), Decimal::parse(y).unwrap()])
+                        .collect()
+                })
                 .collect(),
         }
     }
 
     #[test]
     fn decimals_land_on_one_exact_grid() {
-        let (p, w) = Polygon::from_raw(&raw(&[&[("0", "0"), ("0.1", "0.3"), ("0.2", "0.6"), ("0", "1")]])).unwrap();
+        let (p, w) = Polygon::from_raw(&raw(&[&[
+            ("0", "0"),
+            ("0.1", "0.3"),
+            ("0.2", "0.6"),
+            ("0", "1"),
+        ]]))
+        .unwrap();
         p.check_invariants();
         assert!(w.is_empty());
-        assert_eq!(p.points(), &[Point::new(0, 0), Point::new(1, 3), Point::new(2, 6), Point::new(0, 10)]);
+        assert_eq!(
+            p.points(),
+            &[
+                Point::new(0, 0),
+                Point::new(1, 3),
+                Point::new(2, 6),
+                Point::new(0, 10)
+            ]
+        );
         assert_eq!(p.format_vertex(2), "(0.2, 0.6)");
-        let (q, _) = Polygon::from_raw(&raw(&[&[("0", "0"), ("0", "1"), ("0.2", "0.6"), ("0.1", "0.3")]])).unwrap();
+        let (q, _) = Polygon::from_raw(&raw(&[&[
+            ("0", "0"),
+            ("0", "1"),
+            ("0.2", "0.6"),
+            ("0.1", "0.3"),
+        ]]))
+        .unwrap();
         assert_eq!(q.points(), p.points(), "the clockwise input was reversed");
-        assert_eq!((q.id(0), q.id(1), q.id(3)), (0, 3, 1), "ids follow their points");
+        assert_eq!(
+            (q.id(0), q.id(1), q.id(3)),
+            (0, 3, 1),
+            "ids follow their points"
+        );
     }
 
     #[test]
     fn negative_and_offset_coordinates_format_back_exactly() {
-        let (p, _) = Polygon::from_raw(&raw(&[&[("-1.5", "100"), ("2", "100"), ("2", "101.25")]])).unwrap();
+        let (p, _) =
+            Polygon::from_raw(&raw(&[&[("-1.5", "100"), ("2", "100"), ("2", "101.25")]])).unwrap();
         assert_eq!(p.format_vertex(0), "(-1.5, 100)");
         assert_eq!(p.format_vertex(2), "(2, 101.25)");
         assert_eq!(p.grid().to_f64(p.point(2)), [2.0, 101.25]);
@@ -400,23 +458,44 @@ mod tests {
 
     #[test]
     fn consecutive_duplicates_are_dropped_but_keep_their_numbers() {
-        let (p, w) =
-            Polygon::from_raw(&raw(&[&[("0", "0"), ("1", "0"), ("1", "0"), ("1", "1"), ("0", "0")]])).unwrap();
+        let (p, w) = Polygon::from_raw(&raw(&[&[
+            ("0", "0"),
+            ("1", "0"),
+            ("1", "0"),
+            ("1", "1"),
+            ("0", "0"),
+        ]]))
+        .unwrap();
         assert_eq!(p.len(), 3);
         assert_eq!(p.input_vertices(), 5);
         assert_eq!((0..3).map(|i| p.id(i)).collect::<Vec<_>>(), vec![0, 1, 3]);
         assert_eq!(w.len(), 2);
-        assert_eq!(w[0].0, "outer ring: vertex 2 (1, 0) repeats vertex 1 and was dropped");
-        assert_eq!(w[1].0, "outer ring: vertex 4 (0, 0) repeats vertex 0 and was dropped");
+        assert_eq!(
+            w[0].0,
+            "outer ring: vertex 2 (1, 0) repeats vertex 1 and was dropped"
+        );
+        assert_eq!(
+            w[1].0,
+            "outer ring: vertex 4 (0, 0) repeats vertex 0 and was dropped"
+        );
     }
 
     #[test]
     fn too_large_ranges_are_detected() {
         let e = Polygon::from_raw(&raw(&[&[("0", "0"), ("1e19", "0"), ("0", "0.1")]])).unwrap_err();
-        assert!(matches!(e, InvalidPolygon::CoordinatesTooLarge { .. }), "{e}");
-        let e = Polygon::from_raw(&raw(&[&[("0", "0"), ("1e-30", "0"), ("1e10", "1")]])).unwrap_err();
+        assert!(
+            matches!(e, InvalidPolygon::CoordinatesTooLarge { .. }),
+            "{e}"
+        );
+        let e =
+            Polygon::from_raw(&raw(&[&[("0", "0"), ("1e-30", "0"), ("1e10", "1")]])).unwrap_err();
         assert!(e.to_string().contains("too large"), "{e}");
         // The largest span that fits is accepted.
-        assert!(Polygon::from_raw(&raw(&[&[("0", "0"), ("4611686018427387904", "0"), ("0", "1")]])).is_ok());
+        assert!(Polygon::from_raw(&raw(&[&[
+            ("0", "0"),
+            ("4611686018427387904", "0"),
+            ("0", "1")
+        ]]))
+        .is_ok());
     }
 }

@@ -75,25 +75,8 @@ pub enum InvalidPolygon {
         at: String,
     },
     /// Two non-adjacent edges share a point.
-    #[error("{}: {ring_a} edge {}-{} {} {} {ring_b} edge {}-{} {} {}", contact_title(*contact, *ring_a, *ring_b), edge_a.0, edge_a.1, segment_a, contact_verb(*contact), edge_b.0, edge_b.1, segment_b, at)]
-    EdgesMeet {
-        /// How they meet.
-        contact: SegmentContact,
-        /// The first edge's ring.
-        ring_a: Ring,
-        /// The first edge's vertex numbers.
-        edge_a: (usize, usize),
-        /// The first edge's coordinates.
-        segment_a: String,
-        /// The second edge's ring.
-        ring_b: Ring,
-        /// The second edge's vertex numbers.
-        edge_b: (usize, usize),
-        /// The second edge's coordinates.
-        segment_b: String,
-        /// Where they meet, in words.
-        at: String,
-    },
+    #[error("{0}")]
+    EdgesMeet(Box<EdgeContact>),
     /// A hole that is not inside the outer ring.
     #[error("hole {hole} lies outside the outer ring")]
     HoleOutside {
@@ -109,11 +92,35 @@ pub enum InvalidPolygon {
         container: usize,
     },
     /// The outer ring inside one of the holes.
-    #[error("the outer ring lies inside hole {hole} (is the first ring really the outer boundary?)")]
+    #[error(
+        "the outer ring lies inside hole {hole} (is the first ring really the outer boundary?)"
+    )]
     OuterInsideHole {
         /// The hole around the outer ring.
         hole: usize,
     },
+}
+
+/// Two edges that meet where they must not, named for the user.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("{}: {ring_a} edge {}-{} {} {} {ring_b} edge {}-{} {} {}", contact_title(*contact, *ring_a, *ring_b), edge_a.0, edge_a.1, segment_a, contact_verb(*contact), edge_b.0, edge_b.1, segment_b, at)]
+pub struct EdgeContact {
+    /// How they meet.
+    pub contact: SegmentContact,
+    /// The first edge's ring.
+    pub ring_a: Ring,
+    /// The first edge's vertex numbers.
+    pub edge_a: (usize, usize),
+    /// The first edge's coordinates.
+    pub segment_a: String,
+    /// The second edge's ring.
+    pub ring_b: Ring,
+    /// The second edge's vertex numbers.
+    pub edge_b: (usize, usize),
+    /// The second edge's coordinates.
+    pub segment_b: String,
+    /// Where they meet, in words.
+    pub at: String,
 }
 
 fn touch_kind(a: Ring, b: Ring) -> &'static str {
@@ -171,7 +178,7 @@ pub fn errors(polygon: &Polygon) -> Vec<InvalidPolygon> {
         return errors;
     }
     match sweep(polygon, &order) {
-        Err(e) => vec![*e],
+        Err(e) => vec![e],
         Ok(parents) => nesting_errors(&parents),
     }
 }
@@ -207,7 +214,11 @@ const PROBE: usize = usize::MAX;
 impl Cut {
     fn of(polygon: &Polygon, edge: usize) -> Cut {
         let (u, w) = (polygon.point(edge), polygon.point(polygon.next(edge)));
-        Cut { a: u.min(w), b: u.max(w), edge }
+        Cut {
+            a: u.min(w),
+            b: u.max(w),
+            edge,
+        }
     }
 }
 
@@ -231,7 +242,11 @@ impl Ord for Cut {
         if self.edge == other.edge {
             return Ordering::Equal;
         }
-        let (first, second, flipped) = if self.a <= other.a { (self, other, false) } else { (other, self, true) };
+        let (first, second, flipped) = if self.a <= other.a {
+            (self, other, false)
+        } else {
+            (other, self, true)
+        };
         let mut side = cross(first.a, first.b, second.a);
         if side == 0 {
             side = cross(first.a, first.b, second.b);
@@ -251,7 +266,7 @@ impl Ord for Cut {
 }
 
 /// The sweep: the leftmost forbidden contact, or the ring enclosing each ring (`None`: none).
-fn sweep(polygon: &Polygon, order: &[usize]) -> Result<Vec<Option<usize>>, Box<InvalidPolygon>> {
+fn sweep(polygon: &Polygon, order: &[usize]) -> Result<Vec<Option<usize>>, InvalidPolygon> {
     let rings = polygon.holes() + 1;
     let mut parent: Vec<Option<usize>> = vec![None; rings];
     let mut seen = vec![false; rings];
@@ -261,14 +276,22 @@ fn sweep(polygon: &Polygon, order: &[usize]) -> Result<Vec<Option<usize>>, Box<I
         let r = polygon.ring_index(i);
         if !seen[r] {
             seen[r] = true;
-            let probe = Cut { a: p, b: p, edge: PROBE };
+            let probe = Cut {
+                a: p,
+                b: p,
+                edge: PROBE,
+            };
             if let Some(below) = status.range(..probe).next_back() {
                 let owner = polygon.ring_index(below.edge);
                 let forward = polygon.point(below.edge) < polygon.point(polygon.next(below.edge));
                 // A ring encloses the region on the left of its edges if it is the outer ring
                 // (counter-clockwise), on the right if it is a hole (clockwise).
                 let enclosed_above = forward == (owner == 0);
-                parent[r] = if enclosed_above { Some(owner) } else { parent[owner] };
+                parent[r] = if enclosed_above {
+                    Some(owner)
+                } else {
+                    parent[owner]
+                };
             }
         }
         let edges = [polygon.prev(i), i];
@@ -300,7 +323,7 @@ fn sweep(polygon: &Polygon, order: &[usize]) -> Result<Vec<Option<usize>>, Box<I
 }
 
 /// Whether edges `e` and `f` meet where they must not.
-fn test(polygon: &Polygon, e: usize, f: usize) -> Result<(), Box<InvalidPolygon>> {
+fn test(polygon: &Polygon, e: usize, f: usize) -> Result<(), InvalidPolygon> {
     if polygon.next(e) == f || polygon.next(f) == e {
         return Ok(()); // neighbours share their common vertex; spikes are reported separately
     }
@@ -318,12 +341,18 @@ fn test(polygon: &Polygon, e: usize, f: usize) -> Result<(), Box<InvalidPolygon>
             let [bx, by] = polygon.grid().to_f64(b);
             let [cx, cy] = polygon.grid().to_f64(c);
             let [dx, dy] = polygon.grid().to_f64(d);
-            let t = ((cx - ax) * (dy - cy) - (cy - ay) * (dx - cx)) / ((bx - ax) * (dy - cy) - (by - ay) * (dx - cx));
+            let t = ((cx - ax) * (dy - cy) - (cy - ay) * (dx - cx))
+                / ((bx - ax) * (dy - cy) - (by - ay) * (dx - cx));
             format!("near ({}, {})", ax + t * (bx - ax), ay + t * (by - ay))
         }
         _ => {
-            let on = |v: usize, s: Point, t: Point| super::kernel::on_segment(s, t, polygon.point(v));
-            let v = [c, d].iter().zip([f, f1]).find(|(_, v)| on(*v, a, b)).map(|(_, v)| v);
+            let on =
+                |v: usize, s: Point, t: Point| super::kernel::on_segment(s, t, polygon.point(v));
+            let v = [c, d]
+                .iter()
+                .zip([f, f1])
+                .find(|(_, v)| on(*v, a, b))
+                .map(|(_, v)| v);
             let v = v.or_else(|| [e, e1].into_iter().find(|&v| on(v, c, d)));
             match v {
                 Some(v) => format!("at vertex {} {}", polygon.id(v), polygon.format_vertex(v)),
@@ -331,8 +360,9 @@ fn test(polygon: &Polygon, e: usize, f: usize) -> Result<(), Box<InvalidPolygon>
             }
         }
     };
-    let seg = |u: usize, w: usize| format!("{}-{}", polygon.format_vertex(u), polygon.format_vertex(w));
-    Err(Box::new(InvalidPolygon::EdgesMeet {
+    let seg =
+        |u: usize, w: usize| format!("{}-{}", polygon.format_vertex(u), polygon.format_vertex(w));
+    Err(InvalidPolygon::EdgesMeet(Box::new(EdgeContact {
         contact,
         ring_a: polygon.ring(e),
         edge_a: (polygon.id(e), polygon.id(e1)),
@@ -341,7 +371,7 @@ fn test(polygon: &Polygon, e: usize, f: usize) -> Result<(), Box<InvalidPolygon>
         edge_b: (polygon.id(f), polygon.id(f1)),
         segment_b: seg(f, f1),
         at,
-    }))
+    })))
 }
 
 fn nesting_errors(parent: &[Option<usize>]) -> Vec<InvalidPolygon> {

@@ -9,7 +9,12 @@ fn raw(rings: &[&[(i64, i64)]]) -> RawPolygon {
             .iter()
             .map(|r| {
                 r.iter()
-                    .map(|&(x, y)| [Decimal::parse(&x.to_string()).unwrap(), Decimal::parse(&y.to_string()).unwrap()])
+                    .map(|&(x, y)| {
+                        [
+                            Decimal::parse(&x.to_string()).unwrap(),
+                            Decimal::parse(&y.to_string()).unwrap(),
+                        ]
+                    })
                     .collect()
             })
             .collect(),
@@ -28,11 +33,43 @@ const SQUARE: &[(i64, i64)] = &[(0, 0), (10, 0), (10, 10), (0, 10)];
 #[test]
 fn valid_polygons_pass() {
     assert_eq!(error(&[SQUARE]), "valid");
-    assert_eq!(error(&[SQUARE, &[(2, 2), (4, 2), (4, 4)], &[(6, 6), (8, 6), (8, 8), (6, 8)]]), "valid");
+    assert_eq!(
+        error(&[
+            SQUARE,
+            &[(2, 2), (4, 2), (4, 4)],
+            &[(6, 6), (8, 6), (8, 8), (6, 8)]
+        ]),
+        "valid"
+    );
     // Flat vertices and vertical edges.
-    assert_eq!(error(&[&[(0, 0), (1, 0), (2, 0), (2, 1), (2, 2), (1, 2), (1, 1), (0, 1)]]), "valid");
+    assert_eq!(
+        error(&[&[
+            (0, 0),
+            (1, 0),
+            (2, 0),
+            (2, 1),
+            (2, 2),
+            (1, 2),
+            (1, 1),
+            (0, 1)
+        ]]),
+        "valid"
+    );
     // The U-shape of DESIGN.md.
-    let u = [(3, 2), (4, 2), (5, 2), (6, 2), (6, 3), (6, 4), (5, 4), (5, 3), (4, 3), (4, 4), (3, 4), (3, 3)];
+    let u = [
+        (3, 2),
+        (4, 2),
+        (5, 2),
+        (6, 2),
+        (6, 3),
+        (6, 4),
+        (5, 4),
+        (5, 3),
+        (4, 3),
+        (4, 4),
+        (3, 4),
+        (3, 3),
+    ];
     assert_eq!(error(&[&u]), "valid");
     let (p, _) = Polygon::from_raw(&raw(&[SQUARE, &[(2, 2), (2, 4), (4, 4)]])).unwrap();
     p.check_invariants();
@@ -45,7 +82,10 @@ fn bowtie_is_a_self_intersection() {
         "self-intersection: outer ring edge 2-3 (2, 0)-(0, 2) crosses outer ring edge 0-1 (0, 0)-(2, 2) near (1, 1)"
     );
     let e = error(&[&[(0, 0), (4, 0), (0, 3), (4, 3)]]);
-    assert!(e.starts_with("self-intersection: outer ring edge 1-2 (4, 0)-(0, 3) crosses"), "{e}");
+    assert!(
+        e.starts_with("self-intersection: outer ring edge 1-2 (4, 0)-(0, 3) crosses"),
+        "{e}"
+    );
 }
 
 #[test]
@@ -59,15 +99,24 @@ fn a_vertex_on_an_edge_is_self_touching() {
 fn repeated_vertices_are_named() {
     // A figure eight through (2, 2), visited twice.
     let e = error(&[&[(0, 0), (2, 2), (4, 0), (4, 4), (2, 2), (0, 4)]]);
-    assert_eq!(e, "outer ring vertex 1 and outer ring vertex 4 are both at (2, 2): the ring touches itself");
+    assert_eq!(
+        e,
+        "outer ring vertex 1 and outer ring vertex 4 are both at (2, 2): the ring touches itself"
+    );
     let e = error(&[SQUARE, &[(0, 0), (3, 1), (1, 3)]]);
-    assert_eq!(e, "outer ring vertex 0 and hole 1 vertex 4 are both at (0, 0): the rings touch");
+    assert_eq!(
+        e,
+        "outer ring vertex 0 and hole 1 vertex 4 are both at (0, 0): the rings touch"
+    );
 }
 
 #[test]
 fn spikes_are_named() {
     let e = error(&[&[(0, 0), (4, 0), (4, 4), (4, 2), (0, 4)]]);
-    assert_eq!(e, "spike at outer ring vertex 2 (4, 4): edges 1-2 and 2-3 fold back onto each other");
+    assert_eq!(
+        e,
+        "spike at outer ring vertex 2 (4, 4): edges 1-2 and 2-3 fold back onto each other"
+    );
 }
 
 #[test]
@@ -75,15 +124,31 @@ fn collinear_overlap_is_found() {
     // Two separate parts of the ring run along y = 0 over the same stretch.
     let e = error(&[&[(0, 0), (6, 0), (6, 2), (4, 2), (4, -2), (2, -2), (2, 0)]]);
     assert_ne!(e, "valid");
-    let e = error(&[&[(0, 0), (6, 0), (6, 3), (5, 3), (5, 0), (4, 0), (4, 3), (0, 3)]]);
+    let e = error(&[&[
+        (0, 0),
+        (6, 0),
+        (6, 3),
+        (5, 3),
+        (5, 0),
+        (4, 0),
+        (4, 3),
+        (0, 3),
+    ]]);
     assert!(e.contains("overlap") || e.contains("touch"), "{e}");
 }
 
 #[test]
 fn holes_must_lie_strictly_inside() {
-    assert_eq!(error(&[SQUARE, &[(12, 2), (14, 2), (14, 4)]]), "hole 1 lies outside the outer ring");
     assert_eq!(
-        error(&[SQUARE, &[(1, 1), (9, 1), (9, 9), (1, 9)], &[(3, 3), (5, 3), (5, 5)]]),
+        error(&[SQUARE, &[(12, 2), (14, 2), (14, 4)]]),
+        "hole 1 lies outside the outer ring"
+    );
+    assert_eq!(
+        error(&[
+            SQUARE,
+            &[(1, 1), (9, 1), (9, 9), (1, 9)],
+            &[(3, 3), (5, 3), (5, 5)]
+        ]),
         "hole 2 lies inside hole 1 (a hole cannot contain another hole)"
     );
     let e = error(&[SQUARE, &[(0, 5), (3, 3), (3, 7)]]);
@@ -93,14 +158,26 @@ fn holes_must_lie_strictly_inside() {
     let e = error(&[SQUARE, &[(2, 2), (6, 2), (6, 6)], &[(4, 1), (8, 1), (8, 5)]]);
     assert!(e.starts_with("rings cross: hole"), "{e}");
     let e = error(&[&[(2, 2), (4, 2), (4, 4)], SQUARE]);
-    assert!(e.contains("outer ring lies inside hole 1") || e.contains("hole 1 lies outside"), "{e}");
+    assert!(
+        e.contains("outer ring lies inside hole 1") || e.contains("hole 1 lies outside"),
+        "{e}"
+    );
 }
 
 #[test]
 fn too_few_and_zero_area() {
-    assert_eq!(error(&[&[(0, 0), (1, 1)]]), "outer ring has 2 distinct vertices; a ring needs at least 3");
-    assert_eq!(error(&[&[(0, 0), (1, 1), (2, 2)]]), "outer ring has zero area (all its vertices lie on one line)");
-    assert_eq!(error(&[SQUARE, &[(1, 1), (2, 2), (3, 3), (2, 2)]]), "hole 1 has zero area (all its vertices lie on one line)");
+    assert_eq!(
+        error(&[&[(0, 0), (1, 1)]]),
+        "outer ring has 2 distinct vertices; a ring needs at least 3"
+    );
+    assert_eq!(
+        error(&[&[(0, 0), (1, 1), (2, 2)]]),
+        "outer ring has zero area (all its vertices lie on one line)"
+    );
+    assert_eq!(
+        error(&[SQUARE, &[(1, 1), (2, 2), (3, 3), (2, 2)]]),
+        "hole 1 has zero area (all its vertices lie on one line)"
+    );
 }
 
 // ---- randomized comparison against an obviously correct quadratic check ----
@@ -138,12 +215,20 @@ fn brute_force_valid(p: &Polygon) -> bool {
     for e in 0..n {
         for f in e + 1..n {
             let adjacent = p.next(e) == f || p.next(f) == e;
-            let c = segment_contact(p.point(e), p.point(p.next(e)), p.point(f), p.point(p.next(f)));
+            let c = segment_contact(
+                p.point(e),
+                p.point(p.next(e)),
+                p.point(f),
+                p.point(p.next(f)),
+            );
             if adjacent {
                 let shared = if p.next(e) == f { f } else { e };
                 let (u, w) = (p.point(p.prev(shared)), p.point(p.next(shared)));
                 let s = p.point(shared);
-                if cross(u, s, w) == 0 && crate::geom::kernel::dot(s, u, w) > 0 && p.ring_range(p.ring_index(e)).len() >= 3 {
+                if cross(u, s, w) == 0
+                    && crate::geom::kernel::dot(s, u, w) > 0
+                    && p.ring_range(p.ring_index(e)).len() >= 3
+                {
                     return false;
                 }
                 if p.ring_range(p.ring_index(e)).len() == 3 && c == SegmentContact::Overlap {
@@ -154,7 +239,9 @@ fn brute_force_valid(p: &Polygon) -> bool {
             }
         }
     }
-    let rings: Vec<Vec<Point>> = (0..=p.holes()).map(|r| p.ring_range(r).map(|i| p.point(i)).collect()).collect();
+    let rings: Vec<Vec<Point>> = (0..=p.holes())
+        .map(|r| p.ring_range(r).map(|i| p.point(i)).collect())
+        .collect();
     for (h, ring) in rings.iter().enumerate().skip(1) {
         if !inside(&rings[0], ring[0]) {
             return false;
@@ -177,11 +264,21 @@ fn sweep_agrees_with_brute_force_on_random_rings() {
         let size = 3 + rng.below(4);
         let mut rings: Vec<Vec<(i64, i64)>> = Vec::new();
         for r in 0..=holes {
-            let len = if r == 0 { 3 + rng.below(6) } else { 3 + rng.below(2) } as usize;
-            rings.push((0..len).map(|_| (rng.below(size as u64 + 1), rng.below(size as u64 + 1))).collect());
+            let len = if r == 0 {
+                3 + rng.below(6)
+            } else {
+                3 + rng.below(2)
+            } as usize;
+            rings.push(
+                (0..len)
+                    .map(|_| (rng.below(size as u64 + 1), rng.below(size as u64 + 1)))
+                    .collect(),
+            );
         }
         let refs: Vec<&[(i64, i64)]> = rings.iter().map(|r| r.as_slice()).collect();
-        let Ok((polygon, _)) = Polygon::build(&raw(&refs)) else { continue };
+        let Ok((polygon, _)) = Polygon::build(&raw(&refs)) else {
+            continue;
+        };
         let fast = errors(&polygon).is_empty();
         let slow = brute_force_valid(&polygon);
         assert_eq!(fast, slow, "case {case}: {rings:?}: {:?}", errors(&polygon));
@@ -191,5 +288,8 @@ fn sweep_agrees_with_brute_force_on_random_rings() {
             invalid += 1;
         }
     }
-    assert!(valid > 1_000 && invalid > 1_000, "valid {valid}, invalid {invalid}");
+    assert!(
+        valid > 1_000 && invalid > 1_000,
+        "valid {valid}, invalid {invalid}"
+    );
 }

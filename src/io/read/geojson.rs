@@ -1,10 +1,891 @@
-//! Reader stub (being written).
-use super::{ParseError, RawPolygon};
+//! Reader for GeoJSON (RFC 7946), on `serde_json` with exact numbers.
+//!
+//! # Accepted input
+//!
+//! One JSON value, or several concatenated or newline-delimited (GeoJSON Lines / NDJSON), each:
+//!
+//! - a `Polygon` or `MultiPolygon` geometry (each MultiPolygon part is one polygon), or a
+//!   `GeometryCollection` of those (nested up to 64 levels);
+//! - a `Feature` whose `geometry` is one of the above, or `null` (which yields no polygon);
+//! - a `FeatureCollection` of such Features;
+//! - a bare array of rings `[[[x, y], ...], ...]` (a Polygon's `coordinates`, the layout of the
+//!   earcut fixtures), read as one polygon.
+//!
+//! A position is `[x, y]`, `[x, y, z]` or `[x, y, z, m]`; z and m must be numbers and are ignored.
+//! An empty `coordinates` array is an empty geometry and yields no polygon; an empty ring is an
+//! error. Other members (`bbox`, `properties`, `id`, foreign members) are ignored.
+//!
+//! Output guarantee: the polygons in input order, coordinates as exact [`Decimal`]s parsed from
+//! the literal text of each JSON number (`serde_json`'s `arbitrary_precision`, never through
+//! `f64`; it keeps the digits and only spells the exponent as `e+5`, so error messages quote
+//! `1E5` as `1e+5`), each ring without its repeated closing vertex. JSON syntax errors carry line and
+//! column; errors in a well-formed document name the path to the offending value
+//! (`feature 3, ring 1, position 5: expected [x, y], found "abc"`), and, when the input holds
+//! several JSON values, the line and column where the offending value starts.
+//!
+//! Complexity: linear in the input size.
 
-/// Reads every polygon in `text`.
+use super::vertices::{excerpt, parse_number, quote};
+use super::{drop_closing_vertex, locate, Location, ParseError, RawPolygon};
+use crate::geom::decimal::Decimal;
+use serde_json::{Map, Value};
+
+/// Deepest nesting of `GeometryCollection`s accepted (`serde_json` also limits JSON nesting).
+const MAX_DEPTH: usize = 64;
+
+/// Reads every polygon of a GeoJSON text (one or several JSON values).
 ///
 /// # Errors
-/// See [`super::read`].
-pub fn read(_text: &str) -> Result<Vec<RawPolygon>, ParseError> {
-    Err(ParseError::new("not implemented"))
+/// [`ParseError`] for malformed JSON (with line and column), a GeoJSON object of another type
+/// (`Point`, `LineString`, ...), a missing `type`, `coordinates`, `geometry`, `geometries` or
+/// `features` member, coordinates of the wrong nesting depth, a position that is not 2 to 4
+/// numbers, a number that is not a finite decimal, an empty ring, an empty input, or an input
+/// holding no polygon.
+///
+/// # Examples
+/// ```
+/// use minitri::io::read::geojson;
+/// let text = r#"{"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 1], [0, 0]]]}"#;
+/// let polygons = geojson::read(text)?;
+/// assert_eq!(polygons[0].rings[0].len(), 3);
+/// # Ok::<(), minitri::io::read::ParseError>(())
+/// ```
+pub fn read(text: &str) -> Result<Vec<RawPolygon>, ParseError> {
+    let bom = if text.starts_with('\u{feff}') {
+        '\u{feff}'.len_utf8()
+    } else {
+        0
+    };
+    let body = text.get(bom..).unwrap_or_default();
+    let mut values = Vec::new();
+    let mut stream = serde_json::Deserializer::from_str(body).into_iter::<Value>();
+    loop {
+        let before = stream.byte_offset();
+        match stream.next() {
+            None => break,
+            Some(Ok(value)) => {
+                let rest = body.get(before..).unwrap_or_default();
+                let start =
+                    before + rest.len() - rest.trim_start_matches([' ', '\t', '\r', '\n']).len();
+                values.push((bom + start, value));
+            }
+            Some(Err(error)) => return Err(json_error(text, bom, &error)),
+        }
+    }
+    if values.is_empty() {
+        return Err(ParseError::new("empty input: no polygon found"));
+    }
+    let several = values.len() > 1;
+    let mut polygons = Vec::new();
+    for (start, value) in &values {
+        top_level(value, &mut polygons).map_err(|failure| ParseError {
+            location: several.then(|| locate(text, *start)),
+            message: failure.to_string(),
+        })?;
+    }
+    if polygons.is_empty() {
+        return Err(ParseError::new(
+            "no polygon found: the input holds no non-empty Polygon or MultiPolygon",
+        ));
+    }
+    Ok(polygons)
+}
+
+/// A `serde_json` syntax error as a [`ParseError`] at its line and (character) column.
+fn json_error(text: &str, bom: usize, error: &serde_json::Error) -> ParseError {
+    let full = error.to_string();
+    let suffix = format!(" at line {} column {}", error.line(), error.column());
+    let message = full.strip_suffix(&suffix).unwrap_or(&full);
+    let message = match message.strip_prefix("EOF while parsing ") {
+        Some(what) => format!("the input ends in the middle of {what}"),
+        None => message.to_string(),
+    };
+    let message = format!("invalid JSON: {message}");
+    if error.is_eof() {
+        return ParseError::at(locate(text, text.len()), message);
+    }
+    if error.line() == 0 {
+        return ParseError::new(message);
+    }
+    // serde_json counts bytes from the start of the line (after the byte-order mark on line 1),
+    // and its column is that of the last byte read, or 0 right after a newline.
+    let line_start = if error.line() == 1 {
+        bom
+    } else {
+        text.match_indices('\n')
+            .nth(error.line() - 2)
+            .map_or(text.len(), |(i, _)| i + 1)
+    };
+    let offset = line_start + error.column().saturating_sub(1);
+    let location = locate(text, offset);
+    ParseError::at(
+        Location {
+            line: error.line(),
+            column: location.column,
+        },
+        message,
+    )
+}
+
+/// What is wrong with a well-formed document, and the path to where (outermost first).
+#[derive(Debug)]
+struct Failure {
+    path: Vec<(&'static str, usize)>,
+    message: String,
+}
+
+impl Failure {
+    fn new(message: impl Into<String>) -> Failure {
+        Failure {
+            path: Vec::new(),
+            message: message.into(),
+        }
+    }
+
+    /// The same failure, inside element `index` of a list of `name`s.
+    fn within(mut self, name: &'static str, index: usize) -> Failure {
+        self.path.insert(0, (name, index));
+        self
+    }
+}
+
+impl std::fmt::Display for Failure {
+    /// `feature 3, ring 1: message`.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let mut separator = "";
+        for (name, index) in &self.path {
+            write!(f, "{separator}{name} {index}")?;
+            separator = ", ";
+        }
+        if !self.path.is_empty() {
+            f.write_str(": ")?;
+        }
+        f.write_str(&self.message)
+    }
+}
+
+/// A JSON value as named in an error message.
+fn describe(value: &Value) -> String {
+    match value {
+        Value::Null => "null".into(),
+        Value::Bool(b) => b.to_string(),
+        Value::Number(n) => excerpt(n.as_str()),
+        Value::String(s) => quote(s),
+        Value::Array(a) if a.is_empty() => "an empty array".into(),
+        Value::Array(_) => "an array".into(),
+        Value::Object(_) => "an object".into(),
+    }
+}
+
+/// A top-level JSON value: a GeoJSON object or a bare array of rings.
+fn top_level(value: &Value, out: &mut Vec<RawPolygon>) -> Result<(), Failure> {
+    match value {
+        Value::Object(object) => match type_of(object)? {
+            "Feature" => feature(object, out),
+            "FeatureCollection" => feature_collection(object, out),
+            kind => geometry(object, kind, 0, out),
+        },
+        Value::Array(rings) if rings.is_empty() => Err(Failure::new(
+            "expected an array of rings [[[x, y], ...], ...], found an empty array",
+        )),
+        Value::Array(_) => {
+            out.extend(polygon(value)?);
+            Ok(())
+        }
+        other => Err(Failure::new(format!(
+            "expected a GeoJSON object or an array of rings [[[x, y], ...], ...], found {}",
+            describe(other)
+        ))),
+    }
+}
+
+/// The `type` member of a GeoJSON object.
+fn type_of(object: &Map<String, Value>) -> Result<&str, Failure> {
+    match object.get("type") {
+        Some(Value::String(kind)) => Ok(kind),
+        Some(other) => Err(Failure::new(format!("\"type\" must be a string, found {}", describe(other)))),
+        None => Err(Failure::new(
+            "missing \"type\": expected a GeoJSON object such as {\"type\": \"Polygon\", \"coordinates\": ...}",
+        )),
+    }
+}
+
+/// A member that must be present.
+fn member<'v>(
+    object: &'v Map<String, Value>,
+    name: &str,
+    kind: &str,
+) -> Result<&'v Value, Failure> {
+    object
+        .get(name)
+        .ok_or_else(|| Failure::new(format!("missing \"{name}\" member in a {kind}")))
+}
+
+/// A member that must be an array.
+fn array_member<'v>(
+    object: &'v Map<String, Value>,
+    name: &str,
+    kind: &str,
+) -> Result<&'v [Value], Failure> {
+    match member(object, name, kind)? {
+        Value::Array(items) => Ok(items),
+        other => Err(Failure::new(format!(
+            "\"{name}\" of a {kind} must be an array, found {}",
+            describe(other)
+        ))),
+    }
+}
+
+/// A FeatureCollection: each feature in order.
+fn feature_collection(
+    object: &Map<String, Value>,
+    out: &mut Vec<RawPolygon>,
+) -> Result<(), Failure> {
+    for (index, item) in array_member(object, "features", "FeatureCollection")?
+        .iter()
+        .enumerate()
+    {
+        collection_feature(item, out).map_err(|failure| failure.within("feature", index))?;
+    }
+    Ok(())
+}
+
+/// An element of a FeatureCollection's `features`: a Feature.
+fn collection_feature(item: &Value, out: &mut Vec<RawPolygon>) -> Result<(), Failure> {
+    let object = object_of(item, "a Feature object")?;
+    match type_of(object)? {
+        "Feature" => feature(object, out),
+        kind => Err(Failure::new(format!(
+            "expected a Feature, found {}",
+            quote(kind)
+        ))),
+    }
+}
+
+/// An element of a GeometryCollection's `geometries`, `depth` collections deep.
+fn collection_geometry(
+    item: &Value,
+    depth: usize,
+    out: &mut Vec<RawPolygon>,
+) -> Result<(), Failure> {
+    let object = object_of(item, "a geometry object")?;
+    geometry(object, type_of(object)?, depth, out)
+}
+
+/// A value that must be a JSON object; `what` names it in the error.
+fn object_of<'v>(value: &'v Value, what: &str) -> Result<&'v Map<String, Value>, Failure> {
+    match value {
+        Value::Object(object) => Ok(object),
+        other => Err(Failure::new(format!(
+            "expected {what}, found {}",
+            describe(other)
+        ))),
+    }
+}
+
+/// A Feature: its geometry, if not `null`.
+fn feature(object: &Map<String, Value>, out: &mut Vec<RawPolygon>) -> Result<(), Failure> {
+    match member(object, "geometry", "Feature")? {
+        Value::Null => Ok(()),
+        Value::Object(geometry_object) => {
+            geometry(geometry_object, type_of(geometry_object)?, 0, out)
+        }
+        other => Err(Failure::new(format!(
+            "\"geometry\" must be an object or null, found {}",
+            describe(other)
+        ))),
+    }
+}
+
+/// A geometry object of type `kind`, `depth` collections deep.
+fn geometry(
+    object: &Map<String, Value>,
+    kind: &str,
+    depth: usize,
+    out: &mut Vec<RawPolygon>,
+) -> Result<(), Failure> {
+    match kind {
+        "Polygon" => out.extend(polygon(member(object, "coordinates", "Polygon")?)?),
+        "MultiPolygon" => {
+            let parts = match member(object, "coordinates", "MultiPolygon")? {
+                Value::Array(parts) => parts,
+                other => {
+                    return Err(Failure::new(format!(
+                        "expected an array of polygons [[[[x, y], ...], ...], ...], found {}",
+                        describe(other)
+                    )))
+                }
+            };
+            for (index, part) in parts.iter().enumerate() {
+                out.extend(polygon(part).map_err(|failure| failure.within("polygon", index))?);
+            }
+        }
+        "GeometryCollection" => {
+            if depth >= MAX_DEPTH {
+                return Err(Failure::new(format!(
+                    "geometry collections nested deeper than {MAX_DEPTH} levels"
+                )));
+            }
+            for (index, item) in array_member(object, "geometries", "GeometryCollection")?
+                .iter()
+                .enumerate()
+            {
+                collection_geometry(item, depth + 1, out)
+                    .map_err(|failure| failure.within("geometry", index))?;
+            }
+        }
+        other => {
+            return Err(Failure::new(format!(
+                "expected a Polygon or MultiPolygon geometry, found {}",
+                quote(other)
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// A Polygon's coordinates: `None` for an empty array (an empty polygon).
+fn polygon(value: &Value) -> Result<Option<RawPolygon>, Failure> {
+    let Value::Array(items) = value else {
+        return Err(Failure::new(format!(
+            "expected an array of rings [[[x, y], ...], ...], found {}",
+            describe(value)
+        )));
+    };
+    if items.is_empty() {
+        return Ok(None);
+    }
+    let rings = items
+        .iter()
+        .enumerate()
+        .map(|(index, item)| ring(item).map_err(|failure| failure.within("ring", index)))
+        .collect::<Result<_, _>>()?;
+    Ok(Some(RawPolygon { rings }))
+}
+
+/// A ring, without its repeated closing position.
+fn ring(value: &Value) -> Result<Vec<[Decimal; 2]>, Failure> {
+    let Value::Array(items) = value else {
+        return Err(Failure::new(format!(
+            "expected a ring [[x, y], ...], found {}",
+            describe(value)
+        )));
+    };
+    if items.is_empty() {
+        return Err(Failure::new("empty ring: expected positions [x, y]"));
+    }
+    let mut ring = items
+        .iter()
+        .enumerate()
+        .map(|(index, item)| position(item).map_err(|failure| failure.within("position", index)))
+        .collect::<Result<Vec<_>, _>>()?;
+    drop_closing_vertex(&mut ring);
+    Ok(ring)
+}
+
+/// A position `[x, y]`, `[x, y, z]` or `[x, y, z, m]`, keeping `x` and `y`.
+fn position(value: &Value) -> Result<[Decimal; 2], Failure> {
+    let Value::Array(items) = value else {
+        let hint = if value.is_number() {
+            " (the coordinates are nested one level too shallow)"
+        } else {
+            ""
+        };
+        return Err(Failure::new(format!(
+            "expected [x, y], found {}{hint}",
+            describe(value)
+        )));
+    };
+    if items.first().is_some_and(Value::is_array) {
+        return Err(Failure::new(
+            "expected [x, y], found an array of arrays (the coordinates are nested one level too deep)",
+        ));
+    }
+    let [x, y, rest @ ..] = items.as_slice() else {
+        return Err(Failure::new(format!(
+            "expected [x, y], found {}",
+            excerpt(&value.to_string())
+        )));
+    };
+    if rest.len() > 2 {
+        return Err(Failure::new(format!(
+            "a position has at most 4 numbers [x, y, z, m], found {}",
+            items.len()
+        )));
+    }
+    let number = |value: &Value, axis: &str| match value {
+        Value::Number(n) => parse_number(n.as_str()).map_err(Failure::new),
+        other => Err(Failure::new(format!(
+            "expected a number for {axis}, found {}",
+            describe(other)
+        ))),
+    };
+    let x = number(x, "x")?;
+    let y = number(y, "y")?;
+    for (extra, axis) in rest.iter().zip(["z", "m"]) {
+        if !extra.is_number() {
+            return Err(Failure::new(format!(
+                "expected a number for {axis}, found {}",
+                describe(extra)
+            )));
+        }
+    }
+    Ok([x, y])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use serde::de::value::{Error as DeError, MapDeserializer, SeqDeserializer};
+    use serde::de::{Deserializer, Error as _, IntoDeserializer, Visitor};
+    use serde::Deserialize;
+
+    fn d(s: &str) -> Decimal {
+        Decimal::parse(s).expect(s)
+    }
+
+    fn ring(points: &[(&str, &str)]) -> Vec<[Decimal; 2]> {
+        points.iter().map(|(x, y)| [d(x), d(y)]).collect()
+    }
+
+    fn error(text: &str) -> String {
+        read(text).expect_err(text).to_string()
+    }
+
+    const SQUARE: &str = r#"{"type": "Polygon", "coordinates": [[[0, 0], [4, 0], [4, 4], [0, 4], [0, 0]], [[1, 1], [2, 1], [2, 2]]]}"#;
+
+    #[test]
+    fn reads_a_polygon_with_holes_and_optional_closing_position() {
+        let polygons = read(SQUARE).unwrap();
+        assert_eq!(polygons.len(), 1);
+        assert_eq!(
+            polygons[0].rings,
+            vec![
+                ring(&[("0", "0"), ("4", "0"), ("4", "4"), ("0", "4")]),
+                ring(&[("1", "1"), ("2", "1"), ("2", "2")])
+            ]
+        );
+    }
+
+    #[test]
+    fn keeps_decimals_exact() {
+        let text = r#"{"type": "Polygon", "coordinates": [[[0, 0], [0.1, 0.3], [0.2, 0.6], [-1.5E-3, 1e2], [0.1000000000000000000001, 7]]]}"#;
+        let r = &read(text).unwrap()[0].rings[0];
+        assert_eq!(r[1], [d("0.1"), d("0.3")]);
+        assert_eq!(r[2], [d("0.2"), d("0.6")]);
+        assert_eq!(r[3], [d("-0.0015"), d("100")]);
+        assert_eq!(r[4][0], d("0.1000000000000000000001"));
+        assert_ne!(r[4][0], d("0.1"));
+    }
+
+    #[test]
+    fn ignores_z_and_m_values_and_other_members() {
+        let text = r#"{"type": "Polygon", "bbox": [0, 0, 1, 1], "crs": null,
+            "coordinates": [[[0, 0, 10], [1, 0, 11, 5], [0, 1, 12]]]}"#;
+        let polygons = read(text).unwrap();
+        assert_eq!(
+            polygons[0].rings[0],
+            ring(&[("0", "0"), ("1", "0"), ("0", "1")])
+        );
+    }
+
+    #[test]
+    fn reads_every_container() {
+        let multi = r#"{"type": "MultiPolygon", "coordinates": [[[[0, 0], [1, 0], [0, 1]]], [], [[[5, 5], [6, 5], [5, 6], [5, 5]]]]}"#;
+        assert_eq!(read(multi).unwrap().len(), 2);
+        let collection = r#"{"type": "GeometryCollection", "geometries": [
+            {"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 1]]]},
+            {"type": "GeometryCollection", "geometries": [{"type": "MultiPolygon", "coordinates": [[[[2, 2], [3, 2], [2, 3]]]]}]},
+            {"type": "Polygon", "coordinates": []}]}"#;
+        let polygons = read(collection).unwrap();
+        assert_eq!(polygons.len(), 2);
+        assert_eq!(polygons[1].rings[0][0], [d("2"), d("2")]);
+        let feature = r#"{"type": "Feature", "properties": {"name": "x"}, "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 1]]]}}"#;
+        assert_eq!(read(feature).unwrap().len(), 1);
+        let features = r#"{"type": "FeatureCollection", "features": [
+            {"type": "Feature", "properties": {}, "geometry": null},
+            {"type": "Feature", "properties": {}, "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 1]]]}},
+            {"type": "Feature", "properties": null, "geometry": {"type": "MultiPolygon", "coordinates": [[[[7, 7], [8, 7], [7, 8]]], [[[9, 9], [10, 9], [9, 10]]]]}}]}"#;
+        let polygons = read(features).unwrap();
+        let firsts: Vec<_> = polygons.iter().map(|p| p.rings[0][0]).collect();
+        assert_eq!(
+            firsts,
+            vec![[d("0"), d("0")], [d("7"), d("7")], [d("9"), d("9")]]
+        );
+    }
+
+    #[test]
+    fn reads_newline_delimited_and_concatenated_values() {
+        let ndjson = "{\"type\": \"Feature\", \"geometry\": {\"type\": \"Polygon\", \"coordinates\": [[[0, 0], [1, 0], [0, 1]]]}, \"properties\": {}}\r\n\
+                      {\"type\": \"Polygon\", \"coordinates\": [[[2, 2], [3, 2], [2, 3]]]}\r\n\r\n\
+                      {\"type\": \"Feature\", \"geometry\": null, \"properties\": {}}{\"type\": \"Polygon\", \"coordinates\": [[[4, 4], [5, 4], [4, 5]]]}\n";
+        let polygons = read(ndjson).unwrap();
+        let firsts: Vec<_> = polygons.iter().map(|p| p.rings[0][0]).collect();
+        assert_eq!(
+            firsts,
+            vec![[d("0"), d("0")], [d("2"), d("2")], [d("4"), d("4")]]
+        );
+    }
+
+    #[test]
+    fn reads_a_bare_array_of_rings_as_one_polygon() {
+        let polygons =
+            read("[[[0,0],[10,0],[10,10],[0,10]],[[2,2],[3,3],[2,3],[2,2]],[[5,5]]]").unwrap();
+        assert_eq!(polygons.len(), 1);
+        assert_eq!(polygons[0].rings.len(), 3);
+        assert_eq!(polygons[0].rings[1].len(), 3);
+        assert_eq!(polygons[0].rings[2], ring(&[("5", "5")]));
+        assert_eq!(
+            read("\u{feff}[[[0,0],[1,0],[0,1]]]").unwrap()[0].rings[0].len(),
+            3
+        );
+    }
+
+    #[test]
+    fn reads_every_earcut_fixture() {
+        let Ok(entries) = std::fs::read_dir("/work/shared/fixtures/earcut") else {
+            return;
+        };
+        for entry in entries.flatten() {
+            let path = entry.path();
+            if path.extension().is_some_and(|e| e == "json") && !path.ends_with("expected.json") {
+                let text = std::fs::read_to_string(&path).unwrap();
+                let polygons = read(&text).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+                assert_eq!(polygons.len(), 1, "{}", path.display());
+            }
+        }
+    }
+
+    #[test]
+    fn rejects_wrong_types_naming_where() {
+        assert_eq!(
+            error(r#"{"type": "LineString", "coordinates": [[0, 0], [1, 1]]}"#),
+            "expected a Polygon or MultiPolygon geometry, found \"LineString\""
+        );
+        let features = r#"{"type": "FeatureCollection", "features": [
+            {"type": "Feature", "geometry": null}, {"type": "Feature", "geometry": null}, {"type": "Feature", "geometry": null},
+            {"type": "Feature", "geometry": {"type": "LineString", "coordinates": [[0, 0], [1, 1]]}}]}"#;
+        assert_eq!(
+            error(features),
+            "feature 3: expected a Polygon or MultiPolygon geometry, found \"LineString\""
+        );
+        let ndjson = "{\"type\": \"Polygon\", \"coordinates\": [[[0, 0], [1, 0], [0, 1]]]}\n\n\n  {\"type\": \"Point\", \"coordinates\": [0, 0]}\n";
+        assert_eq!(
+            error(ndjson),
+            "line 4, column 3: expected a Polygon or MultiPolygon geometry, found \"Point\""
+        );
+        assert_eq!(
+            error(r#"{"coordinates": [[[0, 0], [1, 0], [0, 1]]]}"#),
+            "missing \"type\": expected a GeoJSON object such as {\"type\": \"Polygon\", \"coordinates\": ...}"
+        );
+        assert_eq!(
+            error(r#"{"type": 7}"#),
+            "\"type\" must be a string, found 7"
+        );
+        assert_eq!(
+            error(r#"{"type": "FeatureCollection", "features": [{"type": "Polygon"}]}"#),
+            "feature 0: expected a Feature, found \"Polygon\""
+        );
+        assert_eq!(
+            error("42"),
+            "expected a GeoJSON object or an array of rings [[[x, y], ...], ...], found 42"
+        );
+        assert_eq!(
+            error(
+                r#"{"type": "GeometryCollection", "geometries": [{"type": "Feature", "geometry": null}]}"#
+            ),
+            "geometry 0: expected a Polygon or MultiPolygon geometry, found \"Feature\""
+        );
+    }
+
+    #[test]
+    fn rejects_missing_members() {
+        assert_eq!(
+            error(r#"{"type": "Polygon"}"#),
+            "missing \"coordinates\" member in a Polygon"
+        );
+        assert_eq!(
+            error(r#"{"type": "Feature", "properties": {}}"#),
+            "missing \"geometry\" member in a Feature"
+        );
+        assert_eq!(
+            error(r#"{"type": "FeatureCollection"}"#),
+            "missing \"features\" member in a FeatureCollection"
+        );
+        assert_eq!(
+            error(r#"{"type": "GeometryCollection", "geometries": {}}"#),
+            "\"geometries\" of a GeometryCollection must be an array, found an object"
+        );
+        assert_eq!(
+            error(r#"{"type": "Feature", "geometry": [1]}"#),
+            "\"geometry\" must be an object or null, found an array"
+        );
+    }
+
+    #[test]
+    fn rejects_bad_coordinates_naming_the_path() {
+        let bad = |rings: &str| error(&format!(r#"{{"type": "Polygon", "coordinates": {rings}}}"#));
+        assert_eq!(
+            bad(r#"[[[0, 0], [1, 0], "abc"]]"#),
+            "ring 0, position 2: expected [x, y], found \"abc\""
+        );
+        assert_eq!(
+            bad(r#"[[[0, 0], [1, 0], [0, "NaN"]]]"#),
+            "ring 0, position 2: expected a number for y, found \"NaN\""
+        );
+        assert_eq!(
+            bad(r#"[[[0, 0], [1, 0], [null, 1]]]"#),
+            "ring 0, position 2: expected a number for x, found null"
+        );
+        assert_eq!(
+            bad(r#"[[[0, 0], [1, 0], [1, 1, "z"]]]"#),
+            "ring 0, position 2: expected a number for z, found \"z\""
+        );
+        assert_eq!(
+            bad(r#"[[[0, 0], [1, 0], [1]]]"#),
+            "ring 0, position 2: expected [x, y], found [1]"
+        );
+        assert_eq!(
+            bad(r#"[[[0, 0], [1, 0], [1, 2, 3, 4, 5]]]"#),
+            "ring 0, position 2: a position has at most 4 numbers [x, y, z, m], found 5"
+        );
+        assert_eq!(
+            bad(r#"[[[0, 0], [1, 0], [0, 1]], []]"#),
+            "ring 1: empty ring: expected positions [x, y]"
+        );
+        assert_eq!(bad(r#"[[0, 0], [1, 0], [0, 1]]"#), "ring 0, position 0: expected [x, y], found 0 (the coordinates are nested one level too shallow)");
+        assert_eq!(
+            bad(r#"[[[[0, 0], [1, 0], [0, 1]]]]"#),
+            "ring 0, position 0: expected [x, y], found an array of arrays (the coordinates are nested one level too deep)"
+        );
+        assert_eq!(
+            bad("7"),
+            "expected an array of rings [[[x, y], ...], ...], found 7"
+        );
+        assert_eq!(bad("[7]"), "ring 0: expected a ring [[x, y], ...], found 7");
+        assert_eq!(
+            bad(r#"[[[0, 0], [1, 0], [0, 1e99999]]]"#),
+            "ring 0, position 2: `1e+99999` has an exponent out of range"
+        );
+        let multi = r#"{"type": "MultiPolygon", "coordinates": [[[[0, 0], [1, 0], [0, 1]]], [[[0, 0], [1, 0], [true, 1]]]]}"#;
+        assert_eq!(
+            error(multi),
+            "polygon 1, ring 0, position 2: expected a number for x, found true"
+        );
+        let features = r#"{"type": "FeatureCollection", "features": [{"type": "Feature", "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 1]], [[0, 0], [1, 0], [0, 1], [0, 1], [0, 1], "abc"]]}}]}"#;
+        assert_eq!(
+            error(features),
+            "feature 0, ring 1, position 5: expected [x, y], found \"abc\""
+        );
+    }
+
+    #[test]
+    fn rejects_malformed_json_with_line_and_column() {
+        assert_eq!(
+            error("{\"type\": \"Polygon\",\n \"coordinates\": [[[0, 0], [1, 0]"),
+            "line 2, column 33: invalid JSON: the input ends in the middle of a list"
+        );
+        assert_eq!(
+            error("{\"type\": \"Polygon\",\n \"coordinates\": [[[0, 0] [1, 0]]]}"),
+            "line 2, column 26: invalid JSON: expected `,` or `]`"
+        );
+        assert_eq!(
+            error("[[[0, 0], [1, 0], [0, NaN]]]"),
+            "line 1, column 23: invalid JSON: expected value"
+        );
+        assert_eq!(
+            error("[[[0, 0], [1, 0], [0, 1],]]"),
+            "line 1, column 26: invalid JSON: trailing comma"
+        );
+        assert_eq!(
+            error("{\"é\": 1, x}"),
+            "line 1, column 10: invalid JSON: key must be a string"
+        );
+        assert_eq!(
+            error("POLYGON ((0 0, 1 0, 0 1))"),
+            "line 1, column 1: invalid JSON: expected value"
+        );
+    }
+
+    #[test]
+    fn rejects_empty_input_and_inputs_without_polygons() {
+        for text in ["", "  \n\r\n", "\u{feff}"] {
+            assert_eq!(error(text), "empty input: no polygon found");
+        }
+        for text in [
+            r#"{"type": "FeatureCollection", "features": []}"#,
+            r#"{"type": "Feature", "geometry": null}"#,
+            r#"{"type": "MultiPolygon", "coordinates": []}"#,
+        ] {
+            assert_eq!(
+                error(text),
+                "no polygon found: the input holds no non-empty Polygon or MultiPolygon"
+            );
+        }
+        assert_eq!(
+            error("[]"),
+            "expected an array of rings [[[x, y], ...], ...], found an empty array"
+        );
+    }
+
+    #[test]
+    fn never_panics_on_hostile_input() {
+        let deep = format!("{}{}", "[".repeat(100_000), "]".repeat(100_000));
+        assert!(
+            error(&deep).contains("recursion limit exceeded"),
+            "{}",
+            error(&deep)
+        );
+        let nested = format!(
+            "{}{{\"type\": \"Polygon\", \"coordinates\": [[[0, 0], [1, 0], [0, 1]]]}}{}",
+            r#"{"type": "GeometryCollection", "geometries": ["#.repeat(70),
+            "]}".repeat(70)
+        );
+        assert!(read(&nested).is_err());
+        let long = format!("[[[0, {}]]]", "1".repeat(10_000_000));
+        let message = error(&long);
+        assert!(message.starts_with("ring 0, position 0: `111"), "{message}");
+        assert!(message.len() < 120, "{message}");
+        let binary: String = (0u8..=255).map(char::from).collect();
+        assert!(read(&binary).is_err());
+    }
+
+    /// A JSON value that hands its numbers to a visitor as `f64`.
+    ///
+    /// The `geojson` crate reads coordinates with `deserialize_any`, which under `serde_json`'s
+    /// `arbitrary_precision` (enabled in this crate) yields a private map for every non-integer
+    /// number, so `geojson::GeoJson::from_str` fails on `0.5`. This adapter parses each number's
+    /// text with `str::parse::<f64>` (independently of [`Decimal`]) and feeds the crate that.
+    struct F64Json<'de>(&'de Value);
+
+    impl<'de> IntoDeserializer<'de, DeError> for F64Json<'de> {
+        type Deserializer = Self;
+        fn into_deserializer(self) -> Self {
+            self
+        }
+    }
+
+    impl<'de> Deserializer<'de> for F64Json<'de> {
+        type Error = DeError;
+
+        fn deserialize_any<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, DeError> {
+            match self.0 {
+                Value::Null => visitor.visit_unit(),
+                Value::Bool(b) => visitor.visit_bool(*b),
+                Value::Number(n) => visitor.visit_f64(n.as_str().parse().map_err(DeError::custom)?),
+                Value::String(s) => visitor.visit_borrowed_str(s),
+                Value::Array(items) => {
+                    visitor.visit_seq(SeqDeserializer::new(items.iter().map(F64Json)))
+                }
+                Value::Object(members) => visitor.visit_map(MapDeserializer::new(
+                    members.iter().map(|(k, v)| (k.as_str(), F64Json(v))),
+                )),
+            }
+        }
+
+        fn deserialize_option<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, DeError> {
+            match self.0 {
+                Value::Null => visitor.visit_none(),
+                _ => visitor.visit_some(self),
+            }
+        }
+
+        fn deserialize_newtype_struct<V: Visitor<'de>>(
+            self,
+            _name: &'static str,
+            visitor: V,
+        ) -> Result<V::Value, DeError> {
+            visitor.visit_newtype_struct(self)
+        }
+
+        fn deserialize_enum<V: Visitor<'de>>(
+            self,
+            _name: &'static str,
+            _variants: &'static [&'static str],
+            visitor: V,
+        ) -> Result<V::Value, DeError> {
+            match self.0 {
+                Value::String(s) => visitor.visit_enum(s.as_str().into_deserializer()),
+                _ => self.deserialize_any(visitor),
+            }
+        }
+
+        serde::forward_to_deserialize_any! {
+            bool i8 i16 i32 i64 i128 u8 u16 u32 u64 u128 f32 f64 char str string bytes byte_buf
+            unit unit_struct seq tuple tuple_struct map struct identifier ignored_any
+        }
+    }
+
+    /// Our polygons as `f64` rings, for comparison with the `geojson` crate.
+    fn as_f64(polygons: &[RawPolygon]) -> Vec<Vec<Vec<[f64; 2]>>> {
+        polygons
+            .iter()
+            .map(|p| {
+                p.rings
+                    .iter()
+                    .map(|r| r.iter().map(|[x, y]| [x.to_f64(), y.to_f64()]).collect())
+                    .collect()
+            })
+            .collect()
+    }
+
+    /// The polygons of a geometry parsed by the `geojson` crate, closing positions dropped.
+    fn geojson_crate_polygons(geometry: &geojson::Geometry, out: &mut Vec<Vec<Vec<[f64; 2]>>>) {
+        let polygon = |rings: &geojson::PolygonType| -> Vec<Vec<[f64; 2]>> {
+            rings
+                .iter()
+                .map(|r| {
+                    let mut ring: Vec<[f64; 2]> = r
+                        .iter()
+                        .map(|p| [p.as_slice()[0], p.as_slice()[1]])
+                        .collect();
+                    if ring.len() > 1 && ring.first() == ring.last() {
+                        ring.pop();
+                    }
+                    ring
+                })
+                .collect()
+        };
+        match &geometry.value {
+            geojson::GeometryValue::Polygon { coordinates } if !coordinates.is_empty() => {
+                out.push(polygon(coordinates))
+            }
+            geojson::GeometryValue::MultiPolygon { coordinates } => {
+                out.extend(coordinates.iter().filter(|p| !p.is_empty()).map(polygon))
+            }
+            geojson::GeometryValue::GeometryCollection { geometries } => geometries
+                .iter()
+                .for_each(|g| geojson_crate_polygons(g, out)),
+            _ => {}
+        }
+    }
+
+    #[test]
+    fn agrees_with_the_geojson_crate() {
+        let texts = [
+            SQUARE.to_string(),
+            r#"{"type": "Polygon", "coordinates": [[[0.1, 0.3], [0.2, 0.6], [-1e-3, 7.25], [123456.789, -0.000001, 5]]]}"#.to_string(),
+            r#"{"type": "MultiPolygon", "coordinates": [[[[0, 0], [1, 0], [0, 1], [0, 0]]], [[[2, 2], [3, 2], [2, 3]], [[2.1, 2.1], [2.2, 2.1], [2.1, 2.2]]]]}"#.to_string(),
+            r#"{"type": "Feature", "properties": {}, "geometry": {"type": "GeometryCollection", "geometries": [{"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 1]]]}]}}"#.to_string(),
+            r#"{"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {}, "geometry": {"type": "Polygon", "coordinates": [[[0.5, 0.25], [1, 0], [0, 1e1]]]}}, {"type": "Feature", "properties": {}, "geometry": null}]}"#.to_string(),
+        ];
+        for text in &texts {
+            let ours = as_f64(&read(text).unwrap());
+            let mut expected = Vec::new();
+            let value: Value = serde_json::from_str(text).unwrap();
+            match geojson::GeoJson::deserialize(F64Json(&value)).unwrap() {
+                geojson::GeoJson::Geometry(g) => geojson_crate_polygons(&g, &mut expected),
+                geojson::GeoJson::Feature(f) => f
+                    .geometry
+                    .iter()
+                    .for_each(|g| geojson_crate_polygons(g, &mut expected)),
+                geojson::GeoJson::FeatureCollection(c) => c
+                    .features
+                    .iter()
+                    .flat_map(|f| f.geometry.iter())
+                    .for_each(|g| geojson_crate_polygons(g, &mut expected)),
+            }
+            assert_eq!(ours, expected, "{text}");
+        }
+    }
 }

@@ -67,12 +67,18 @@ pub struct ParseError {
 impl ParseError {
     /// An error at a known position.
     pub fn at(location: Location, message: impl Into<String>) -> ParseError {
-        ParseError { location: Some(location), message: message.into() }
+        ParseError {
+            location: Some(location),
+            message: message.into(),
+        }
     }
 
     /// An error without position.
     pub fn new(message: impl Into<String>) -> ParseError {
-        ParseError { location: None, message: message.into() }
+        ParseError {
+            location: None,
+            message: message.into(),
+        }
     }
 }
 
@@ -82,7 +88,10 @@ pub fn locate(text: &str, offset: usize) -> Location {
     let before = &text[..text.floor_char_boundary(offset)];
     let line = before.matches('\n').count() + 1;
     let line_start = before.rfind('\n').map_or(0, |i| i + 1);
-    Location { line, column: before[line_start..].chars().count() + 1 }
+    Location {
+        line,
+        column: before[line_start..].chars().count() + 1,
+    }
 }
 
 /// Drops a ring's last vertex when it repeats the first exactly (the optional closing vertex).
@@ -122,8 +131,8 @@ fn detect_content(text: &str) -> Format {
 ///
 /// # Errors
 /// [`ParseError`] for malformed text, non-finite or unreadable numbers, wrong geometry types
-/// (a `LINESTRING`, a GeoJSON `Point`), rings with fewer than 3 positions as written, empty input,
-/// trailing text after a WKT geometry.
+/// (a `LINESTRING`, a GeoJSON `Point`), an empty ring, empty input, trailing text after a WKT
+/// geometry. Rings with fewer than 3 vertices are read; validation reports them.
 pub fn read(format: Format, text: &str) -> Result<Vec<RawPolygon>, ParseError> {
     match format {
         Format::Wkt => wkt::read(text),

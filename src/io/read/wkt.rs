@@ -1,10 +1,783 @@
-//! Reader stub (being written).
-use super::{ParseError, RawPolygon};
+//! Reader for well-known text (WKT): a small tokenizer and a recursive-descent parser.
+//!
+//! # Grammar
+//!
+//! Keywords are case-insensitive; whitespace (and `#` comments, running to the end of the line)
+//! may separate any two tokens.
+//!
+//! ```text
+//! input      := [ "SRID" "=" integer ";" ] geometry [ ";" ]
+//! geometry   := "POLYGON" dim ( "EMPTY" | polygon )
+//!             | "MULTIPOLYGON" dim ( "EMPTY" | "(" part ( "," part )* ")" )
+//!             | "GEOMETRYCOLLECTION" dim ( "EMPTY" | "(" geometry ( "," geometry )* ")" )
+//! dim        := [ "Z" | "M" | "ZM" ]      (also glued to the keyword: "POLYGONZ")
+//! part       := "EMPTY" | polygon
+//! polygon    := "(" ring ( "," ring )* ")"
+//! ring       := "(" point ( "," point )* ")"
+//! point      := number number [ number [ number ] ]    (x y, then z and m, which are ignored)
+//! ```
+//!
+//! Exactly one top-level geometry is read; anything after it is an error (wrap several in a
+//! `GEOMETRYCOLLECTION` or `MULTIPOLYGON`). Collections may nest up to 64 levels.
+//!
+//! Output guarantee: one [`RawPolygon`] per `POLYGON` and per `MULTIPOLYGON` part, in input
+//! order, `EMPTY` ones skipped; coordinates are exact [`Decimal`]s parsed from their literal text
+//! (never through `f64`); each ring loses its repeated closing vertex. Errors carry the line and
+//! column of the offending token.
+//!
+//! Complexity: linear in the input size.
 
-/// Reads every polygon in `text`.
+use super::vertices::{parse_number, quote};
+use super::{drop_closing_vertex, locate, ParseError, RawPolygon};
+use crate::geom::decimal::{Decimal, NumberError};
+
+/// Deepest nesting of `GEOMETRYCOLLECTION`s accepted (bounds the recursion).
+const MAX_DEPTH: usize = 64;
+
+/// What the top level and a collection accept.
+const GEOMETRY_TYPES: &str = "POLYGON, MULTIPOLYGON or GEOMETRYCOLLECTION";
+
+/// Other WKT geometry types, named in the error when one is found.
+const OTHER_TYPES: [&str; 15] = [
+    "POINT",
+    "LINESTRING",
+    "MULTIPOINT",
+    "MULTILINESTRING",
+    "TRIANGLE",
+    "TIN",
+    "POLYHEDRALSURFACE",
+    "CIRCULARSTRING",
+    "COMPOUNDCURVE",
+    "CURVEPOLYGON",
+    "MULTICURVE",
+    "MULTISURFACE",
+    "CURVE",
+    "SURFACE",
+    "GEOMETRY",
+];
+
+/// Reads the one WKT geometry of `text` and returns its polygons.
 ///
 /// # Errors
-/// See [`super::read`].
-pub fn read(_text: &str) -> Result<Vec<RawPolygon>, ParseError> {
-    Err(ParseError::new("not implemented"))
+/// [`ParseError`] with line and column for a syntax error, a number that is not a finite
+/// decimal, a point with fewer than 2 or more than 4 coordinates, an empty ring, a geometry type
+/// other than `POLYGON`, `MULTIPOLYGON` and `GEOMETRYCOLLECTION`, collections nested deeper than
+/// 64 levels, or text after the geometry; without location for an empty input or a geometry
+/// holding no polygon (all `EMPTY`).
+///
+/// # Examples
+/// ```
+/// use minitri::io::read::wkt;
+/// let polygons = wkt::read("MULTIPOLYGON (((0 0, 1 0, 0 1, 0 0)), ((5 5, 6 5, 5 6)))")?;
+/// assert_eq!(polygons.len(), 2);
+/// assert_eq!(polygons[0].rings[0].len(), 3);
+/// # Ok::<(), minitri::io::read::ParseError>(())
+/// ```
+pub fn read(text: &str) -> Result<Vec<RawPolygon>, ParseError> {
+    let mut parser = Parser {
+        text,
+        pos: 0,
+        polygons: Vec::new(),
+    };
+    if parser.peek().kind == Tok::End {
+        return Err(ParseError::new("empty input: no polygon found"));
+    }
+    parser.srid_prefix()?;
+    parser.geometry(0)?;
+    parser.end()?;
+    if parser.polygons.is_empty() {
+        return Err(ParseError::new("no polygon found: the geometry is EMPTY"));
+    }
+    Ok(parser.polygons)
+}
+
+/// A token kind; words are keywords or number literals.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Tok<'a> {
+    Word(&'a str),
+    Open,
+    Close,
+    Comma,
+    Semicolon,
+    Equals,
+    End,
+}
+
+/// A token and the byte offset where it starts.
+#[derive(Clone, Copy, Debug)]
+struct Token<'a> {
+    offset: usize,
+    kind: Tok<'a>,
+}
+
+impl Tok<'_> {
+    /// The token as named in an error message (`'('`, `"abc"`).
+    fn describe(self) -> String {
+        match self {
+            Tok::Word(w) => quote(w),
+            Tok::Open => "'('".into(),
+            Tok::Close => "')'".into(),
+            Tok::Comma => "','".into(),
+            Tok::Semicolon => "';'".into(),
+            Tok::Equals => "'='".into(),
+            Tok::End => "the end of the input".into(),
+        }
+    }
+}
+
+/// The three accepted geometry types.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Kind {
+    Polygon,
+    MultiPolygon,
+    Collection,
+}
+
+/// Splits a keyword into its geometry type name (one of `names`, any case) and whether a
+/// dimension tag (`Z`, `M`, `ZM`) is glued to it.
+fn split_type<'n>(word: &str, names: &[&'n str]) -> Option<(&'n str, bool)> {
+    names.iter().find_map(|&name| {
+        let head = word.get(..name.len())?;
+        let tail = word.get(name.len()..)?;
+        if !head.eq_ignore_ascii_case(name) {
+            return None;
+        }
+        if tail.is_empty() {
+            Some((name, false))
+        } else if ["Z", "M", "ZM"]
+            .iter()
+            .any(|tag| tail.eq_ignore_ascii_case(tag))
+        {
+            Some((name, true))
+        } else {
+            None
+        }
+    })
+}
+
+/// The accepted geometry type of a keyword, and whether a dimension tag is glued to it.
+fn classify(word: &str) -> Option<(Kind, bool)> {
+    let (name, glued) = split_type(word, &["POLYGON", "MULTIPOLYGON", "GEOMETRYCOLLECTION"])?;
+    let kind = match name {
+        "POLYGON" => Kind::Polygon,
+        "MULTIPOLYGON" => Kind::MultiPolygon,
+        _ => Kind::Collection,
+    };
+    Some((kind, glued))
+}
+
+/// Whether a word names a WKT geometry type, accepted or not.
+fn is_geometry_keyword(word: &str) -> bool {
+    classify(word).is_some() || split_type(word, &OTHER_TYPES).is_some()
+}
+
+/// Whether `c` ends a word.
+fn is_delimiter(c: char) -> bool {
+    c.is_whitespace() || matches!(c, '(' | ')' | ',' | ';' | '=' | '#' | '\u{feff}')
+}
+
+/// The parser state: the text, the position of the next token, and the polygons read so far.
+struct Parser<'a> {
+    text: &'a str,
+    pos: usize,
+    polygons: Vec<RawPolygon>,
+}
+
+impl<'a> Parser<'a> {
+    /// Skips whitespace, byte-order marks and `#` comments.
+    fn skip_space(&mut self) {
+        let bytes = self.text.as_bytes();
+        loop {
+            let rest = self.text.get(self.pos..).unwrap_or_default();
+            let trimmed = rest.trim_start_matches(|c: char| c.is_whitespace() || c == '\u{feff}');
+            self.pos += rest.len() - trimmed.len();
+            if bytes.get(self.pos) != Some(&b'#') {
+                return;
+            }
+            self.pos += trimmed.find('\n').unwrap_or(trimmed.len());
+        }
+    }
+
+    /// Reads the next token.
+    fn next(&mut self) -> Token<'a> {
+        self.skip_space();
+        let offset = self.pos;
+        let rest = self.text.get(offset..).unwrap_or_default();
+        let (kind, len) = match rest.chars().next() {
+            None => (Tok::End, 0),
+            Some('(') => (Tok::Open, 1),
+            Some(')') => (Tok::Close, 1),
+            Some(',') => (Tok::Comma, 1),
+            Some(';') => (Tok::Semicolon, 1),
+            Some('=') => (Tok::Equals, 1),
+            Some(_) => {
+                let len = rest.find(is_delimiter).unwrap_or(rest.len());
+                (Tok::Word(rest.get(..len).unwrap_or_default()), len)
+            }
+        };
+        self.pos = offset + len;
+        Token { offset, kind }
+    }
+
+    /// The next token, left unread.
+    fn peek(&mut self) -> Token<'a> {
+        let saved = self.pos;
+        let token = self.next();
+        self.pos = saved;
+        token
+    }
+
+    /// Reads the next token if it is the given word (any case).
+    fn eat_word(&mut self, word: &str) -> bool {
+        let saved = self.pos;
+        match self.next().kind {
+            Tok::Word(w) if w.eq_ignore_ascii_case(word) => true,
+            _ => {
+                self.pos = saved;
+                false
+            }
+        }
+    }
+
+    /// An error at a token.
+    fn error(&self, token: Token<'_>, message: impl Into<String>) -> ParseError {
+        ParseError::at(locate(self.text, token.offset), message)
+    }
+
+    /// The error for an unexpected token.
+    fn expected(&self, what: &str, token: Token<'_>) -> ParseError {
+        match token.kind {
+            Tok::End => self.error(
+                token,
+                format!("expected {what} but reached the end of the input"),
+            ),
+            kind => self.error(token, format!("expected {what}, found {}", kind.describe())),
+        }
+    }
+
+    /// Reads a token that must be `kind`.
+    fn expect(&mut self, kind: Tok<'_>, what: &str) -> Result<(), ParseError> {
+        let token = self.next();
+        if token.kind == kind {
+            Ok(())
+        } else {
+            Err(self.expected(what, token))
+        }
+    }
+
+    /// After an item of a list: `true` after a `,`, `false` after the closing `)`.
+    fn list_continues(&mut self) -> Result<bool, ParseError> {
+        let token = self.next();
+        match token.kind {
+            Tok::Comma => Ok(true),
+            Tok::Close => Ok(false),
+            _ => Err(self.expected("')' or ','", token)),
+        }
+    }
+
+    /// Skips an EWKT `SRID=<integer>;` prefix.
+    fn srid_prefix(&mut self) -> Result<(), ParseError> {
+        let saved = self.pos;
+        if !self.eat_word("SRID") {
+            return Ok(());
+        }
+        if self.peek().kind != Tok::Equals {
+            self.pos = saved;
+            return Ok(());
+        }
+        self.next();
+        let token = self.next();
+        match token.kind {
+            Tok::Word(w) if w.bytes().all(|b| b.is_ascii_digit()) => {}
+            _ => return Err(self.expected("an SRID number after 'SRID='", token)),
+        }
+        self.expect(Tok::Semicolon, "';' after the SRID")
+    }
+
+    /// Reads one geometry, `depth` collections deep, appending its polygons.
+    fn geometry(&mut self, depth: usize) -> Result<(), ParseError> {
+        let token = self.next();
+        if depth > MAX_DEPTH {
+            return Err(self.error(
+                token,
+                format!("geometry collections nested deeper than {MAX_DEPTH} levels"),
+            ));
+        }
+        let Tok::Word(word) = token.kind else {
+            return Err(self.expected(GEOMETRY_TYPES, token));
+        };
+        let Some((kind, glued)) = classify(word) else {
+            let found = match split_type(word, &OTHER_TYPES) {
+                Some((name, _)) => name.to_string(),
+                None => quote(word),
+            };
+            return Err(self.error(token, format!("expected {GEOMETRY_TYPES}, found {found}")));
+        };
+        if !glued && !self.eat_word("ZM") && !self.eat_word("Z") {
+            self.eat_word("M");
+        }
+        if self.eat_word("EMPTY") {
+            return Ok(());
+        }
+        match kind {
+            Kind::Polygon => {
+                let polygon = self.polygon("'(' or EMPTY after POLYGON")?;
+                self.polygons.push(polygon);
+            }
+            Kind::MultiPolygon => {
+                self.expect(Tok::Open, "'(' or EMPTY after MULTIPOLYGON")?;
+                loop {
+                    if !self.eat_word("EMPTY") {
+                        let polygon = self.polygon("'(' opening a polygon, or EMPTY")?;
+                        self.polygons.push(polygon);
+                    }
+                    if !self.list_continues()? {
+                        break;
+                    }
+                }
+            }
+            Kind::Collection => {
+                self.expect(Tok::Open, "'(' or EMPTY after GEOMETRYCOLLECTION")?;
+                loop {
+                    self.geometry(depth + 1)?;
+                    if !self.list_continues()? {
+                        break;
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Reads `( ring, ... )`; `what` names the opening parenthesis in an error.
+    fn polygon(&mut self, what: &str) -> Result<RawPolygon, ParseError> {
+        self.expect(Tok::Open, what)?;
+        let mut rings = Vec::new();
+        loop {
+            rings.push(self.ring()?);
+            if !self.list_continues()? {
+                break;
+            }
+        }
+        Ok(RawPolygon { rings })
+    }
+
+    /// Reads `( point, ... )`, without its repeated closing point.
+    fn ring(&mut self) -> Result<Vec<[Decimal; 2]>, ParseError> {
+        let token = self.next();
+        match token.kind {
+            Tok::Open => {}
+            Tok::Word(w) if w.eq_ignore_ascii_case("EMPTY") => {
+                return Err(self.error(
+                    token,
+                    "empty ring: a ring cannot be EMPTY, expected '(' and its points",
+                ));
+            }
+            _ => return Err(self.expected("'(' opening a ring", token)),
+        }
+        if self.peek().kind == Tok::Close {
+            return Err(self.error(
+                token,
+                "empty ring '()': expected points `x y` separated by commas",
+            ));
+        }
+        let mut ring = Vec::new();
+        loop {
+            ring.push(self.point()?);
+            if !self.list_continues()? {
+                break;
+            }
+        }
+        drop_closing_vertex(&mut ring);
+        Ok(ring)
+    }
+
+    /// Reads `x y [z [m]]`, keeping `x` and `y`.
+    fn point(&mut self) -> Result<[Decimal; 2], ParseError> {
+        let first = self.next();
+        let Tok::Word(x) = first.kind else {
+            return Err(self.expected("a number", first));
+        };
+        let x = parse_number(x).map_err(|m| self.error(first, m))?;
+        let second = self.next();
+        let Tok::Word(y) = second.kind else {
+            return Err(self.error(first, "a point needs at least 2 coordinates `x y`, found 1"));
+        };
+        let y = parse_number(y).map_err(|m| self.error(second, m))?;
+        for _ in 0..2 {
+            let token = self.peek();
+            let Tok::Word(extra) = token.kind else { break };
+            self.next();
+            // z and m are ignored, but must be numbers; NaN is a common "no value" for them.
+            if !matches!(
+                Decimal::parse(extra),
+                Ok(_) | Err(NumberError::NonFinite(_))
+            ) {
+                let message = parse_number(extra).err().unwrap_or_default();
+                return Err(self.error(token, message));
+            }
+        }
+        let token = self.peek();
+        if let Tok::Word(w) = token.kind {
+            let message = format!(
+                "a point has at most 4 coordinates `x y z m`, found a 5th: {}",
+                quote(w)
+            );
+            return Err(self.error(token, message));
+        }
+        Ok([x, y])
+    }
+
+    /// Checks that nothing but an optional `;` follows the geometry.
+    fn end(&mut self) -> Result<(), ParseError> {
+        if self.peek().kind == Tok::Semicolon {
+            self.next();
+        }
+        let token = self.peek();
+        match token.kind {
+            Tok::End => Ok(()),
+            kind => {
+                let rest = quote(self.text.get(token.offset..).unwrap_or_default());
+                let hint = match kind {
+                    Tok::Word(w) if is_geometry_keyword(w) => {
+                        " (a second geometry is not allowed; wrap several in a GEOMETRYCOLLECTION or MULTIPOLYGON)"
+                    }
+                    _ => "",
+                };
+                Err(self.error(
+                    token,
+                    format!("unexpected text after the geometry: {rest}{hint}"),
+                ))
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::str::FromStr;
+
+    fn d(s: &str) -> Decimal {
+        Decimal::parse(s).expect(s)
+    }
+
+    fn ring(points: &[(&str, &str)]) -> Vec<[Decimal; 2]> {
+        points.iter().map(|(x, y)| [d(x), d(y)]).collect()
+    }
+
+    fn error(text: &str) -> String {
+        read(text).expect_err(text).to_string()
+    }
+
+    #[test]
+    fn reads_a_polygon_with_and_without_closing_point() {
+        let closed = read("POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0))").unwrap();
+        let open = read("polygon((0 0,4 0,4 4,0 4))").unwrap();
+        assert_eq!(closed, open);
+        assert_eq!(
+            closed[0].rings,
+            vec![ring(&[("0", "0"), ("4", "0"), ("4", "4"), ("0", "4")])]
+        );
+    }
+
+    #[test]
+    fn reads_holes_in_order() {
+        let text = "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (1 1, 2 1, 2 2, 1 1), (5 5, 6 5, 6 6))";
+        let polygons = read(text).unwrap();
+        assert_eq!(polygons.len(), 1);
+        assert_eq!(polygons[0].rings.len(), 3);
+        assert_eq!(
+            polygons[0].rings[1],
+            ring(&[("1", "1"), ("2", "1"), ("2", "2")])
+        );
+        assert_eq!(
+            polygons[0].rings[2],
+            ring(&[("5", "5"), ("6", "5"), ("6", "6")])
+        );
+    }
+
+    #[test]
+    fn keeps_decimals_exact() {
+        let polygons = read("POLYGON ((0 0, 0.1 0.3, 0.2 0.6, -1.5E-3 +2e2))").unwrap();
+        let r = &polygons[0].rings[0];
+        assert_eq!(r[1], [d("0.1"), d("0.3")]);
+        assert_eq!(r[2], [d("0.2"), d("0.6")]);
+        assert_eq!(r[3], [d("-0.0015"), d("200")]);
+    }
+
+    #[test]
+    fn ignores_z_and_m_values() {
+        let plain = read("POLYGON ((0 0, 1 0, 0 1))").unwrap();
+        for text in [
+            "POLYGON Z ((0 0 5, 1 0 6, 0 1 7))",
+            "POLYGON M ((0 0 5, 1 0 6, 0 1 7, 0 0 8))",
+            "POLYGON ZM ((0 0 5 1, 1 0 6 2, 0 1 7 NaN))",
+            "POLYGONZ ((0 0 5, 1 0 6, 0 1 7))",
+            "polygonzm((0 0 5 1,1 0 6 2,0 1 7 3))",
+            "POLYGON ((0 0 1, 1 0, 0 1 2 3))",
+        ] {
+            assert_eq!(read(text).unwrap(), plain, "{text}");
+        }
+    }
+
+    #[test]
+    fn reads_multipolygons_and_collections() {
+        let text = "GEOMETRYCOLLECTION (POLYGON ((0 0, 1 0, 0 1)), POLYGON EMPTY, \
+                    MULTIPOLYGON (((2 2, 3 2, 2 3)), EMPTY, ((4 4, 5 4, 4 5), (4.1 4.1, 4.2 4.1, 4.1 4.2))), \
+                    GEOMETRYCOLLECTION (GEOMETRYCOLLECTION (POLYGON ((6 6, 7 6, 6 7)))), GEOMETRYCOLLECTION EMPTY)";
+        let polygons = read(text).unwrap();
+        let firsts: Vec<_> = polygons.iter().map(|p| p.rings[0][0]).collect();
+        assert_eq!(
+            firsts,
+            vec![
+                [d("0"), d("0")],
+                [d("2"), d("2")],
+                [d("4"), d("4")],
+                [d("6"), d("6")]
+            ]
+        );
+        assert_eq!(polygons[2].rings.len(), 2);
+        let multi =
+            read("MULTIPOLYGON Z (((0 0 0, 1 0 0, 0 1 0)), ((5 5 1, 6 5 1, 5 6 1, 5 5 1)))")
+                .unwrap();
+        assert_eq!(multi.len(), 2);
+        assert_eq!(multi[1].rings[0].len(), 3);
+    }
+
+    #[test]
+    fn accepts_layout_variations() {
+        let expected = read("POLYGON ((0 0, 1 0, 0 1))").unwrap();
+        for text in [
+            "  POLYGON\r\n(\r\n(0 0,\r\n 1 0,\t0 1)\r\n)\r\n",
+            "POLYGON ((0 0, 1 0, 0 1));",
+            "POLYGON ((0 0, 1 0, 0 1)) ;  \n",
+            "SRID=4326;POLYGON ((0 0, 1 0, 0 1))",
+            "srid = 4326 ; POLYGON ((0 0, 1 0, 0 1))",
+            "# a comment\nPOLYGON ((0 0, 1 0, 0 1)) # trailing\n",
+            "\u{feff}POLYGON ((0 0, 1 0, 0 1))",
+            "POLYGON((0 0,1 0,0 1))",
+        ] {
+            assert_eq!(read(text).unwrap(), expected, "{text:?}");
+        }
+    }
+
+    #[test]
+    fn short_rings_are_left_to_validation() {
+        let polygons = read("POLYGON ((0 0, 4 0, 4 4), (1 1), (2 2, 2 2))").unwrap();
+        assert_eq!(polygons[0].rings[1].len(), 1);
+        assert_eq!(polygons[0].rings[2].len(), 1);
+    }
+
+    #[test]
+    fn rejects_empty_input_and_empty_geometries() {
+        for text in ["", "   \n\t", "# just a comment\n"] {
+            assert_eq!(error(text), "empty input: no polygon found");
+        }
+        for text in [
+            "POLYGON EMPTY",
+            "GEOMETRYCOLLECTION (POLYGON EMPTY, MULTIPOLYGON EMPTY)",
+            "MULTIPOLYGON (EMPTY)",
+        ] {
+            assert_eq!(error(text), "no polygon found: the geometry is EMPTY");
+        }
+    }
+
+    #[test]
+    fn rejects_wrong_geometry_types() {
+        assert_eq!(
+            error("LINESTRING (0 0, 1 1)"),
+            "line 1, column 1: expected POLYGON, MULTIPOLYGON or GEOMETRYCOLLECTION, found LINESTRING"
+        );
+        assert_eq!(
+            error("GEOMETRYCOLLECTION (POLYGON ((0 0, 1 0, 0 1)),\n  point z (1 2 3))"),
+            "line 2, column 3: expected POLYGON, MULTIPOLYGON or GEOMETRYCOLLECTION, found POINT"
+        );
+        assert_eq!(
+            error("0 0\n1 0"),
+            "line 1, column 1: expected POLYGON, MULTIPOLYGON or GEOMETRYCOLLECTION, found \"0\""
+        );
+        assert_eq!(
+            error("(0 0)"),
+            "line 1, column 1: expected POLYGON, MULTIPOLYGON or GEOMETRYCOLLECTION, found '('"
+        );
+    }
+
+    #[test]
+    fn rejects_syntax_errors_with_line_and_column() {
+        assert_eq!(
+            error("POLYGON ((0 0, 1 0, 0 1)"),
+            "line 1, column 25: expected ')' or ',' but reached the end of the input"
+        );
+        assert_eq!(
+            error("POLYGON ((0 0, 1 0, 0 1"),
+            "line 1, column 24: expected ')' or ',' but reached the end of the input"
+        );
+        assert_eq!(
+            error("POLYGON ((0 0, 1))"),
+            "line 1, column 16: a point needs at least 2 coordinates `x y`, found 1"
+        );
+        assert_eq!(
+            error("POLYGON ((0 0, 1 0, 0 1 2 3 4))"),
+            "line 1, column 29: a point has at most 4 coordinates `x y z m`, found a 5th: \"4\""
+        );
+        assert_eq!(
+            error("POLYGON ((0 0, 1 0,\n  0 NaN))"),
+            "line 2, column 5: `NaN` is not a finite number"
+        );
+        assert_eq!(
+            error("POLYGON ((0 0, 1 0, 0 abc))"),
+            "line 1, column 23: `abc` is not a number"
+        );
+        assert_eq!(
+            error("POLYGON ((0 0, 1 0, 0 1) (2 2, 3 3, 2 3))"),
+            "line 1, column 26: expected ')' or ',', found '('"
+        );
+        assert_eq!(
+            error("POLYGON (0 0, 1 0, 0 1)"),
+            "line 1, column 10: expected '(' opening a ring, found \"0\""
+        );
+        assert_eq!(
+            error("MULTIPOLYGON ((0 0, 1 0, 0 1))"),
+            "line 1, column 16: expected '(' opening a ring, found \"0\""
+        );
+        assert_eq!(
+            error("POLYGON (())"),
+            "line 1, column 10: empty ring '()': expected points `x y` separated by commas"
+        );
+        assert_eq!(
+            error("POLYGON ((0 0, 1 0, 0 1), EMPTY)"),
+            "line 1, column 27: empty ring: a ring cannot be EMPTY, expected '(' and its points"
+        );
+        assert_eq!(
+            error("POLYGON [[0 0, 1 0, 0 1]]"),
+            "line 1, column 9: expected '(' or EMPTY after POLYGON, found \"[[0\""
+        );
+        assert_eq!(
+            error("POLYGON ((0 0, 1 0; 0 1))"),
+            "line 1, column 19: expected ')' or ',', found ';'"
+        );
+        assert_eq!(
+            error("SRID=abc;POLYGON ((0 0, 1 0, 0 1))"),
+            "line 1, column 6: expected an SRID number after 'SRID=', found \"abc\""
+        );
+        assert_eq!(
+            error("POLYGON ((0 0, 1 0, 0 1, ))"),
+            "line 1, column 26: expected a number, found ')'"
+        );
+    }
+
+    #[test]
+    fn rejects_text_after_the_geometry() {
+        assert_eq!(
+            error("POLYGON ((0 0, 1 0, 0 1))\nPOLYGON ((5 5, 6 5, 5 6, 5 5), (1 1, 2 2, 1 2))"),
+            "line 2, column 1: unexpected text after the geometry: \"POLYGON ((5 5, 6 5, 5 6, 5 5), (1 1, 2 2...\" \
+             (a second geometry is not allowed; wrap several in a GEOMETRYCOLLECTION or MULTIPOLYGON)"
+        );
+        assert_eq!(
+            error("POLYGON ((0 0, 1 0, 0 1)))"),
+            "line 1, column 26: unexpected text after the geometry: \")\""
+        );
+        assert_eq!(
+            error("POLYGON ((0 0, 1 0, 0 1)); x"),
+            "line 1, column 28: unexpected text after the geometry: \"x\""
+        );
+        assert_eq!(
+            error("POLYGON ((0 0, 1 0, 0 1));;"),
+            "line 1, column 27: unexpected text after the geometry: \";\""
+        );
+    }
+
+    #[test]
+    fn never_panics_on_hostile_input() {
+        let deep = format!(
+            "{}POLYGON ((0 0, 1 0, 0 1)){}",
+            "GEOMETRYCOLLECTION (".repeat(100),
+            ")".repeat(100)
+        );
+        assert_eq!(
+            error(&deep),
+            "line 1, column 1301: geometry collections nested deeper than 64 levels"
+        );
+        let parens = format!("POLYGON {}", "(".repeat(100_000));
+        assert_eq!(
+            error(&parens),
+            "line 1, column 11: expected a number, found '('"
+        );
+        let long = format!("POLYGON ((0 {}", "1".repeat(10_000_000));
+        let message = error(&long);
+        assert!(message.starts_with("line 1, column 13: `111"), "{message}");
+        assert!(message.len() < 120, "{message}");
+        let binary: String = (0u8..=255).map(char::from).collect();
+        assert!(read(&binary).is_err());
+        assert_eq!(
+            error("POLYGON ((0 0, 1 0, 0 ∞))"),
+            "line 1, column 23: `∞` is not a number"
+        );
+        assert_eq!(error("POLYGÖN ((0 0))"), "line 1, column 1: expected POLYGON, MULTIPOLYGON or GEOMETRYCOLLECTION, found \"POLYGÖN\"");
+        assert_eq!(
+            error("é POLYGON"),
+            "line 1, column 1: expected POLYGON, MULTIPOLYGON or GEOMETRYCOLLECTION, found \"é\""
+        );
+    }
+
+    /// Our polygons as `f64` rings, for comparison with the `wkt` crate.
+    fn as_f64(polygons: &[RawPolygon]) -> Vec<Vec<Vec<[f64; 2]>>> {
+        polygons
+            .iter()
+            .map(|p| {
+                p.rings
+                    .iter()
+                    .map(|r| r.iter().map(|[x, y]| [x.to_f64(), y.to_f64()]).collect())
+                    .collect()
+            })
+            .collect()
+    }
+
+    /// The polygons of a geometry parsed by the `wkt` crate, closing points dropped.
+    fn wkt_crate_polygons(geometry: &wkt::Wkt<f64>, out: &mut Vec<Vec<Vec<[f64; 2]>>>) {
+        let polygon = |p: &wkt::types::Polygon<f64>| -> Vec<Vec<[f64; 2]>> {
+            p.rings()
+                .iter()
+                .map(|r| {
+                    let mut ring: Vec<[f64; 2]> = r.coords().iter().map(|c| [c.x, c.y]).collect();
+                    if ring.len() > 1 && ring.first() == ring.last() {
+                        ring.pop();
+                    }
+                    ring
+                })
+                .collect()
+        };
+        match geometry {
+            wkt::Wkt::Polygon(p) if !p.rings().is_empty() => out.push(polygon(p)),
+            wkt::Wkt::MultiPolygon(m) => out.extend(
+                m.polygons()
+                    .iter()
+                    .filter(|p| !p.rings().is_empty())
+                    .map(polygon),
+            ),
+            wkt::Wkt::GeometryCollection(c) => c
+                .geometries()
+                .iter()
+                .for_each(|g| wkt_crate_polygons(g, out)),
+            _ => {}
+        }
+    }
+
+    #[test]
+    fn agrees_with_the_wkt_crate() {
+        for text in [
+            "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 2 1, 2 2, 1 1))",
+            "POLYGON ((0.1 0.3, 0.2 0.6, -1e-3 7.25, 123456.789 -0.000001))",
+            "POLYGON Z ((0 0 1, 1 0 2, 0 1 3, 0 0 1))",
+            "MULTIPOLYGON (((0 0, 1 0, 0 1, 0 0)), ((2 2, 3 2, 2 3), (2.1 2.1, 2.2 2.1, 2.1 2.2)))",
+            "GEOMETRYCOLLECTION (POLYGON ((0 0, 1 0, 0 1)), MULTIPOLYGON (((5 5, 6 5, 5 6))))",
+        ] {
+            let ours = as_f64(&read(text).unwrap());
+            let theirs = wkt::Wkt::<f64>::from_str(text).unwrap();
+            let mut expected = Vec::new();
+            wkt_crate_polygons(&theirs, &mut expected);
+            assert_eq!(ours, expected, "{text}");
+        }
+    }
 }

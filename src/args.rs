@@ -1,0 +1,134 @@
+//! Command-line flags (clap), turned into a validated [`Config`]; the library never sees clap.
+
+use clap::{Parser, ValueEnum};
+use minitri::{Algorithm, Format, Options};
+use std::path::PathBuf;
+
+/// Triangulate polygons with the minimum number of triangles, exactly.
+///
+/// Reads WKT, GeoJSON or plain vertex lists (files, directories, or standard input) and writes
+/// JSON or SVG. Coordinates are exact as written in decimal.
+#[derive(Parser, Debug)]
+#[command(name = "minitri", version, about, after_help = EXAMPLES)]
+pub struct Flags {
+    /// Input files or directories (searched recursively); none or `-` reads standard input
+    pub inputs: Vec<PathBuf>,
+    /// Algorithm: minitri (minimum, Chen & Chang), asano (minimum, O(n^3) DP), ear (n + 2w - 2)
+    #[arg(short, long, value_enum, default_value = "minitri")]
+    pub algorithm: AlgorithmFlag,
+    /// Input format; auto decides by extension, then by content
+    #[arg(long, value_enum, default_value = "auto")]
+    pub from: FromFlag,
+    /// Output format
+    #[arg(short, long, value_enum, default_value = "json")]
+    pub to: ToFlag,
+    /// Write the output to this file instead of standard output
+    #[arg(short, long, value_name = "PATH")]
+    pub output: Option<PathBuf>,
+    /// Also run every other exact algorithm that applies and check every output independently;
+    /// exit status 3 if anything disagrees or is invalid
+    #[arg(long)]
+    pub verify: bool,
+    /// Worker threads for a batch (default: all cores)
+    #[arg(short, long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
+    pub jobs: Option<u32>,
+    /// Largest polygon (vertices) the O(n^3)-time, O(n^2)-memory asano DP accepts
+    #[arg(long, value_name = "N", default_value_t = minitri::algo::asano::DEFAULT_LIMIT)]
+    pub dp_limit: usize,
+    /// No warnings on standard error
+    #[arg(short, long)]
+    pub quiet: bool,
+}
+
+const EXAMPLES: &str = "Examples:
+  minitri -a asano fixtures/valid/u_shape.wkt        minimum triangulation as JSON
+  cat shape.wkt | minitri -a asano                   read standard input
+  minitri -a asano --to svg -o u.svg u_shape.wkt     draw it
+  minitri -a ear --verify shapes/                    plain triangulation of a directory, checked
+  echo 'POLYGON ((0 0, 0.1 0.3, 0.2 0.6, 0 1))' | minitri -a asano
+
+Exit status: 0 all processed, 1 some input failed, 2 bad command line, 3 --verify found a problem.";
+
+/// `--algorithm`.
+#[derive(Clone, Copy, Debug, ValueEnum)]
+pub enum AlgorithmFlag {
+    /// Chen & Chang's MINITRI (minimum)
+    Minitri,
+    /// Asano, Asano & Pinter's dynamic program (minimum, O(n^3))
+    Asano,
+    /// A plain triangulation into n + 2w - 2 triangles
+    Ear,
+}
+
+/// `--from`.
+#[derive(Clone, Copy, Debug, ValueEnum)]
+pub enum FromFlag {
+    /// By extension, then by content
+    Auto,
+    /// Well-known text
+    Wkt,
+    /// GeoJSON or newline-delimited GeoJSON
+    Geojson,
+    /// One `x y` vertex per line
+    Vertices,
+}
+
+/// `--to`.
+#[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
+pub enum ToFlag {
+    /// The JSON document of the spec
+    Json,
+    /// A picture
+    Svg,
+}
+
+/// The validated configuration the binary runs with.
+#[derive(Debug)]
+pub struct Config {
+    /// Input paths; `-` is standard input.
+    pub inputs: Vec<PathBuf>,
+    /// Forced input format, or `None` for auto-detection.
+    pub from: Option<Format>,
+    /// Output format.
+    pub to: ToFlag,
+    /// Output file, or `None` for standard output.
+    pub output: Option<PathBuf>,
+    /// What to compute.
+    pub options: Options,
+    /// Suppress warnings.
+    pub quiet: bool,
+}
+
+impl Flags {
+    /// Validates the flags into a [`Config`].
+    pub fn into_config(self) -> Config {
+        let algorithm = match self.algorithm {
+            AlgorithmFlag::Minitri => Algorithm::Minitri,
+            AlgorithmFlag::Asano => Algorithm::Asano,
+            AlgorithmFlag::Ear => Algorithm::Ear,
+        };
+        let from = match self.from {
+            FromFlag::Auto => None,
+            FromFlag::Wkt => Some(Format::Wkt),
+            FromFlag::Geojson => Some(Format::GeoJson),
+            FromFlag::Vertices => Some(Format::Vertices),
+        };
+        let inputs = if self.inputs.is_empty() {
+            vec![PathBuf::from("-")]
+        } else {
+            self.inputs
+        };
+        Config {
+            inputs,
+            from,
+            to: self.to,
+            output: self.output,
+            options: Options {
+                algorithm,
+                dp_limit: self.dp_limit,
+                verify: self.verify,
+            },
+            quiet: self.quiet,
+        }
+    }
+}

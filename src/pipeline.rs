@@ -1,0 +1,234 @@
+//! The library's main path: text in, read, validate, triangulate, verify; results out.
+//!
+//! Input contract: text in one of the [`Format`]s. Output guarantee: one [`Outcome`] per polygon
+//! (or a single one for an input that cannot be read at all), in input order, each either solved
+//! or carrying an [`Error`] that names what is wrong. One bad polygon never stops the others.
+//! Complexity: that of reading and validating (O(n log n)) plus the chosen algorithm's.
+
+use crate::algo::{asano, ear, Algorithm, TriangulateError, Triangulation};
+use crate::geom::polygon::{Polygon, Warning};
+use crate::geom::validate::InvalidPolygon;
+use crate::io::read::{self, Format, ParseError};
+use crate::verify::{self, Check};
+use serde::Serialize;
+use std::fmt;
+
+/// What to compute.
+#[derive(Clone, Debug)]
+pub struct Options {
+    /// The algorithm whose triangulation is reported.
+    pub algorithm: Algorithm,
+    /// The largest polygon (in vertices) the O(n^3) dynamic program accepts.
+    pub dp_limit: usize,
+    /// Also run every other exact algorithm that applies and check every output independently.
+    pub verify: bool,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            algorithm: Algorithm::Minitri,
+            dp_limit: asano::DEFAULT_LIMIT,
+            verify: false,
+        }
+    }
+}
+
+/// Any error of the library, naming what is wrong.
+#[derive(Clone, Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum Error {
+    /// The input could not be read.
+    #[error(transparent)]
+    Parse(#[from] ParseError),
+    /// The polygon is not valid (all problems found).
+    #[error("{}", .0.iter().map(ToString::to_string).collect::<Vec<_>>().join("; "))]
+    Invalid(Vec<InvalidPolygon>),
+    /// The algorithm cannot triangulate this polygon.
+    #[error(transparent)]
+    Triangulate(#[from] TriangulateError),
+    /// The input could not be read from its file or stream.
+    #[error("cannot read: {0}")]
+    Read(String),
+}
+
+impl Error {
+    /// Each problem as its own message (an invalid polygon may have several).
+    pub fn messages(&self) -> Vec<String> {
+        match self {
+            Error::Invalid(errors) => errors.iter().map(ToString::to_string).collect(),
+            other => vec![other.to_string()],
+        }
+    }
+}
+
+/// The result of checking one polygon's triangulations (`--verify`).
+#[derive(Clone, Debug, Serialize)]
+pub struct Verification {
+    /// Every check passed and every exact algorithm gave the same count.
+    pub ok: bool,
+    /// One independent check per algorithm run.
+    pub checks: Vec<AlgorithmCheck>,
+    /// How the exact algorithms disagree, if they do.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub disagreement: Option<String>,
+    /// Exact algorithms that could not run on this polygon, and why.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub skipped: Vec<String>,
+}
+
+/// One algorithm's output, checked.
+#[derive(Clone, Debug, Serialize)]
+pub struct AlgorithmCheck {
+    /// The algorithm.
+    pub algorithm: &'static str,
+    /// Its number of triangles.
+    pub triangle_count: usize,
+    /// Its number of degenerate triangles used.
+    pub degenerate_count: usize,
+    /// The independent checker's verdict.
+    #[serde(flatten)]
+    pub check: Check,
+}
+
+/// A triangulated polygon.
+#[derive(Clone, Debug)]
+pub struct Solved {
+    /// The triangulation by the chosen algorithm.
+    pub triangulation: Triangulation,
+    /// The verification report, with `--verify`.
+    pub verification: Option<Verification>,
+}
+
+/// What happened to one polygon (or to an input that could not be read).
+#[derive(Clone, Debug)]
+pub struct Outcome {
+    /// The source name (`-` for standard input).
+    pub source: String,
+    /// The polygon's position in its source; `None` when the source could not be read.
+    pub index: Option<usize>,
+    /// The validated polygon, when it is valid.
+    pub polygon: Option<Polygon>,
+    /// The triangulation, or what went wrong.
+    pub result: Result<Solved, Error>,
+    /// What the tool changed in the input (dropped duplicate vertices).
+    pub warnings: Vec<Warning>,
+}
+
+impl fmt::Display for Outcome {
+    /// `source: polygon 2: ` as a prefix for messages about this outcome.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.index {
+            Some(i) => write!(f, "{}: polygon {i}", self.source),
+            None => write!(f, "{}", self.source),
+        }
+    }
+}
+
+/// Triangulates a valid polygon with one algorithm.
+///
+/// # Errors
+/// [`TriangulateError`] when the algorithm does not apply (holes, size, not implemented).
+pub fn triangulate(
+    polygon: &Polygon,
+    algorithm: Algorithm,
+    dp_limit: usize,
+) -> Result<Triangulation, TriangulateError> {
+    match algorithm {
+        Algorithm::Asano => asano::triangulate(polygon, dp_limit),
+        Algorithm::Ear => ear::triangulate(polygon),
+        Algorithm::Minitri => Err(TriangulateError::NotImplemented(Algorithm::Minitri)),
+    }
+}
+
+/// Triangulates a valid polygon as `options` say, verifying if asked.
+///
+/// # Errors
+/// [`Error::Triangulate`] when the chosen algorithm does not apply.
+pub fn solve(polygon: &Polygon, options: &Options) -> Result<Solved, Error> {
+    let triangulation = triangulate(polygon, options.algorithm, options.dp_limit)?;
+    let verification = options
+        .verify
+        .then(|| verify_all(polygon, &triangulation, options));
+    Ok(Solved {
+        triangulation,
+        verification,
+    })
+}
+
+/// Checks `main` and every other exact algorithm's output independently, and their agreement.
+fn verify_all(polygon: &Polygon, main: &Triangulation, options: &Options) -> Verification {
+    let mut outputs = vec![main.clone()];
+    let mut skipped = Vec::new();
+    for other in [Algorithm::Minitri, Algorithm::Asano] {
+        if other == main.algorithm {
+            continue;
+        }
+        match triangulate(polygon, other, options.dp_limit) {
+            Ok(t) => outputs.push(t),
+            Err(e) => skipped.push(format!("{other}: {e}")),
+        }
+    }
+    let checks: Vec<AlgorithmCheck> = outputs
+        .iter()
+        .map(|t| AlgorithmCheck {
+            algorithm: t.algorithm.name(),
+            triangle_count: t.triangles.len(),
+            degenerate_count: t.degenerate.len(),
+            check: verify::check(polygon, t),
+        })
+        .collect();
+    let exact: Vec<(Algorithm, usize)> = outputs
+        .iter()
+        .filter(|t| t.algorithm.is_minimum())
+        .map(|t| (t.algorithm, t.triangles.len()))
+        .collect();
+    let disagreement = verify::agreement(&exact);
+    let ok = disagreement.is_none() && checks.iter().all(|c| c.check.valid);
+    Verification {
+        ok,
+        checks,
+        disagreement,
+        skipped,
+    }
+}
+
+/// An outcome for a source that could not be read at all.
+pub fn unreadable(source: &str, error: Error) -> Outcome {
+    Outcome {
+        source: source.to_string(),
+        index: None,
+        polygon: None,
+        result: Err(error),
+        warnings: Vec::new(),
+    }
+}
+
+/// Reads, validates and triangulates every polygon of one source text.
+pub fn process(source: &str, text: &str, format: Format, options: &Options) -> Vec<Outcome> {
+    let raws = match read::read(format, text) {
+        Ok(raws) => raws,
+        Err(e) => return vec![unreadable(source, Error::Parse(e))],
+    };
+    raws.iter()
+        .enumerate()
+        .map(|(index, raw)| {
+            let mut outcome = Outcome {
+                source: source.to_string(),
+                index: Some(index),
+                polygon: None,
+                result: Err(Error::Invalid(Vec::new())),
+                warnings: Vec::new(),
+            };
+            match Polygon::from_raw_all_errors(raw) {
+                Err(errors) => outcome.result = Err(Error::Invalid(errors)),
+                Ok((polygon, warnings)) => {
+                    outcome.warnings = warnings;
+                    outcome.result = solve(&polygon, options);
+                    outcome.polygon = Some(polygon);
+                }
+            }
+            outcome
+        })
+        .collect()
+}

@@ -1,0 +1,317 @@
+//! The command line, run as a user runs it: fixtures, formats, errors, exit codes, files.
+
+use crate::util::{expected, fixtures, json, run};
+use serde_json::Value;
+
+#[test]
+fn every_valid_fixture_gives_its_expected_minimum_verified() {
+    let expected = expected("valid");
+    assert!(expected.len() >= 9);
+    for (name, minimum) in &expected {
+        let path = format!("fixtures/valid/{name}");
+        let (code, out, err) = run(&["-a", "asano", "--verify", &path], None);
+        assert_eq!(code, 0, "{name}: {err}");
+        let doc = json(&out);
+        let p = &doc["polygons"][0];
+        assert_eq!(p["triangle_count"].to_string(), *minimum, "{name}");
+        assert_eq!(
+            p["verification"]["ok"], true,
+            "{name}: {}",
+            p["verification"]
+        );
+        let (n, d, t) = (
+            p["vertices"].as_u64().unwrap(),
+            p["degenerate_count"].as_u64().unwrap(),
+            p["triangle_count"].as_u64().unwrap(),
+        );
+        assert_eq!(t, n - d - 2, "{name}: the formula of the spec");
+        assert_eq!(
+            p["degenerate_triangles"].as_array().unwrap().len() as u64,
+            d
+        );
+    }
+}
+
+#[test]
+fn ear_gives_n_minus_2_nondegenerate_triangles_and_verifies() {
+    for name in [
+        "u_shape.wkt",
+        "collinear_bottom.wkt",
+        "comb_clockwise.txt",
+        "decimal_collinear.wkt",
+    ] {
+        let (code, out, err) = run(
+            &["-a", "ear", "--verify", &format!("fixtures/valid/{name}")],
+            None,
+        );
+        assert_eq!(code, 0, "{name}: {err}");
+        let p = &json(&out)["polygons"][0];
+        assert_eq!(
+            p["triangle_count"].as_u64().unwrap(),
+            p["vertices"].as_u64().unwrap() - 2,
+            "{name}"
+        );
+        assert_eq!(p["degenerate_count"], 0);
+        assert_eq!(p["optimal"], false);
+        let checks = p["verification"]["checks"].as_array().unwrap();
+        assert_eq!(
+            checks.len(),
+            2,
+            "ear and the asano reference are both checked"
+        );
+        assert!(
+            checks.iter().all(|c| c["valid"] == true),
+            "{name}: {checks:?}"
+        );
+    }
+}
+
+#[test]
+fn decimal_input_is_exact_as_written() {
+    let (code, out, _) = run(
+        &["-a", "asano"],
+        Some("POLYGON ((0 0, 0.1 0.3, 0.2 0.6, 0 1, 0 0))"),
+    );
+    assert_eq!(code, 0);
+    let p = &json(&out)["polygons"][0];
+    assert_eq!(p["triangle_count"], 1);
+    assert_eq!(p["degenerate_triangles"], serde_json::json!([[0, 1, 2]]));
+    // Not collinear once a digit changes: two triangles.
+    let (_, out, _) = run(
+        &["-a", "asano"],
+        Some("POLYGON ((0 0, 0.1 0.3, 0.2 0.6000000000000001, 0 1, 0 0))"),
+    );
+    assert_eq!(json(&out)["polygons"][0]["triangle_count"], 2);
+}
+
+fn without_source(mut doc: Value) -> Value {
+    for p in doc["polygons"].as_array_mut().unwrap() {
+        p.as_object_mut().unwrap().remove("source");
+    }
+    doc
+}
+
+#[test]
+fn the_same_polygon_in_three_formats_gives_identical_json() {
+    let docs: Vec<Value> = ["u_shape.wkt", "u_shape.geojson", "u_shape.txt"]
+        .iter()
+        .map(|f| {
+            let (code, out, err) = run(&["-a", "asano", &format!("fixtures/valid/{f}")], None);
+            assert_eq!(code, 0, "{f}: {err}");
+            without_source(json(&out))
+        })
+        .collect();
+    assert_eq!(docs[0], docs[1]);
+    assert_eq!(docs[0], docs[2]);
+    // And through standard input with detection by content.
+    let text = std::fs::read_to_string(fixtures().join("valid/u_shape.geojson")).unwrap();
+    let (_, out, _) = run(&["-a", "asano"], Some(&text));
+    let doc = json(&out);
+    assert_eq!(doc["polygons"][0]["source"], "-");
+    assert_eq!(without_source(doc), docs[0]);
+}
+
+#[test]
+fn every_invalid_fixture_exits_1_naming_the_problem_without_panicking() {
+    let expected = expected("invalid");
+    assert!(expected.len() >= 15);
+    for (name, message) in &expected {
+        let path = format!("fixtures/invalid/{name}");
+        let (code, out, err) = run(&["-a", "asano", &path], None);
+        assert_eq!(code, 1, "{name}: {err}");
+        assert!(
+            err.contains(message),
+            "{name}: stderr lacks {message:?}:\n{err}"
+        );
+        assert!(err.contains(&path), "{name}: the source is named: {err}");
+        assert!(!err.contains("panicked"), "{name}: {err}");
+        // The error is also in the JSON document, and no polygon is reported.
+        let doc = json(&out);
+        assert_eq!(doc["polygons"], serde_json::json!([]), "{name}");
+        assert!(
+            doc["errors"][0]["message"]
+                .as_str()
+                .unwrap()
+                .contains(message),
+            "{name}"
+        );
+    }
+}
+
+#[test]
+fn one_bad_input_does_not_stop_the_others() {
+    let (code, out, err) = run(
+        &[
+            "-a",
+            "asano",
+            "fixtures/invalid/bowtie.wkt",
+            "fixtures/valid/l_shape.wkt",
+        ],
+        None,
+    );
+    assert_eq!(code, 1);
+    assert!(
+        err.contains("bowtie.wkt: polygon 0: self-intersection"),
+        "{err}"
+    );
+    let doc = json(&out);
+    assert_eq!(doc["polygons"][0]["source"], "fixtures/valid/l_shape.wkt");
+    assert_eq!(doc["polygons"][0]["triangle_count"], 3);
+    // Within one MULTIPOLYGON as well: polygon 1 fails, polygons 0 and 2 are solved.
+    let multi = "MULTIPOLYGON (((0 0, 2 0, 2 1, 1 1, 1 2, 0 2)), ((0 0, 2 2, 2 0, 0 2)), ((0 0, 1 0, 0 1)))";
+    let (code, out, err) = run(&["-a", "asano"], Some(multi));
+    assert_eq!(code, 1);
+    assert!(err.contains("-: polygon 1: self-intersection"), "{err}");
+    let doc = json(&out);
+    let indexes: Vec<_> = doc["polygons"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| p["index"].clone())
+        .collect();
+    assert_eq!(indexes, [0, 2]);
+}
+
+#[test]
+fn duplicates_are_dropped_with_a_warning_and_keep_their_numbers() {
+    let (code, out, err) = run(&["-a", "asano"], Some("0 0\n1 0\n1 0\n2 0\n2 2\n0 2\n"));
+    assert_eq!(code, 0);
+    assert!(
+        err.contains(
+            "warning: -: polygon 0: outer ring: vertex 2 (1, 0) repeats vertex 1 and was dropped"
+        ),
+        "{err}"
+    );
+    let p = &json(&out)["polygons"][0];
+    assert_eq!(p["vertices"], 5);
+    assert_eq!(p["input_vertices"], 6);
+    let used: Vec<u64> = p["triangles"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .flat_map(|t| t.as_array().unwrap().iter().map(|v| v.as_u64().unwrap()))
+        .collect();
+    assert!(
+        !used.contains(&2),
+        "the dropped vertex appears in no triangle"
+    );
+    assert!(used.contains(&5));
+    let (_, _, err) = run(
+        &["-a", "asano", "--quiet"],
+        Some("0 0\n1 0\n1 0\n2 0\n2 2\n0 2\n"),
+    );
+    assert_eq!(err, "");
+}
+
+#[test]
+fn holes_are_refused_clearly_for_now() {
+    let (code, _, err) = run(
+        &["-a", "asano"],
+        Some("POLYGON ((0 0, 9 0, 9 9, 0 9), (1 1, 2 1, 1 2))"),
+    );
+    assert_eq!(code, 1);
+    assert!(
+        err.contains("handles polygons without holes only, and this polygon has 1 hole"),
+        "{err}"
+    );
+}
+
+#[test]
+fn the_dp_refuses_large_polygons_with_an_estimate() {
+    let (code, _, err) = run(
+        &[
+            "-a",
+            "asano",
+            "--dp-limit",
+            "10",
+            "fixtures/valid/u_shape.wkt",
+        ],
+        None,
+    );
+    assert_eq!(code, 1);
+    assert!(err.contains("needs about 0 MB and 0.0 s for 12 vertices, above its limit of 10 vertices; use --algorithm minitri"), "{err}");
+}
+
+#[test]
+fn exit_codes_and_help() {
+    assert_eq!(run(&["--algorithm", "bogus"], None).0, 2);
+    assert_eq!(run(&["--jobs", "0", "x.wkt"], None).0, 2);
+    let (code, out, _) = run(&["--help"], None);
+    assert_eq!(code, 0);
+    assert!(out.contains("Examples:") && out.contains("--verify"));
+    let (code, _, err) = run(&["no/such/file.wkt"], None);
+    assert_eq!(code, 1);
+    assert!(err.contains("no/such/file.wkt: cannot read"), "{err}");
+}
+
+#[test]
+fn output_files_are_written_whole_or_not_at_all() {
+    let dir = tempfile::tempdir().unwrap();
+    let good = dir.path().join("u.json");
+    let (code, _, _) = run(
+        &[
+            "-a",
+            "asano",
+            "-o",
+            good.to_str().unwrap(),
+            "fixtures/valid/u_shape.wkt",
+        ],
+        None,
+    );
+    assert_eq!(code, 0);
+    let doc: Value = serde_json::from_str(&std::fs::read_to_string(&good).unwrap()).unwrap();
+    assert_eq!(doc["polygons"][0]["triangle_count"], 5);
+    let bad = dir.path().join("bad.json");
+    let (code, _, err) = run(
+        &[
+            "-a",
+            "asano",
+            "-o",
+            bad.to_str().unwrap(),
+            "fixtures/invalid/spike.wkt",
+        ],
+        None,
+    );
+    assert_eq!(code, 1);
+    assert!(
+        !bad.exists(),
+        "no output file for an input that failed: {err}"
+    );
+    assert_eq!(
+        std::fs::read_dir(dir.path()).unwrap().count(),
+        1,
+        "no temporary file left behind"
+    );
+}
+
+#[test]
+fn svg_output_is_a_picture_with_the_legend() {
+    let (code, out, err) = run(
+        &["-a", "asano", "--to", "svg", "fixtures/valid/u_shape.wkt"],
+        None,
+    );
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("<svg") && out.trim_end().ends_with("</svg>"));
+    assert!(out.contains("n = 12") && out.contains("d = 5"), "legend");
+}
+
+#[test]
+fn directories_are_read_recursively_in_sorted_order() {
+    let (code, out, err) = run(&["-a", "asano", "fixtures/valid"], None);
+    assert_eq!(code, 0, "{err}");
+    let doc = json(&out);
+    let sources: Vec<&str> = doc["polygons"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| p["source"].as_str().unwrap())
+        .collect();
+    let mut sorted = sources.clone();
+    sorted.sort();
+    assert_eq!(sources, sorted);
+    assert_eq!(
+        sources.len(),
+        expected("valid").len(),
+        "every fixture, and nothing else"
+    );
+}
