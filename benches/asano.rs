@@ -1,1 +1,50 @@
-fn main() {}
+//! The Asano DP on random star-shaped polygons (the same family as `bench/star.py`), n = 250 .. 2000.
+//! Run: `cargo bench --bench asano`. Peak memory: `bench/asano.sh` (README, Benchmarks).
+
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
+use minitri::algo::{asano, chords::ChordTable};
+use minitri::{Decimal, Polygon, RawPolygon};
+use std::hint::black_box;
+
+/// A random star-shaped polygon on an integer grid: sorted random angles, random radii.
+fn star(n: usize, seed: u64) -> Polygon {
+    let mut state = seed;
+    let mut rnd = || {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let mut angles: Vec<f64> = (0..n).map(|_| rnd() * std::f64::consts::TAU).collect();
+    angles.sort_by(f64::total_cmp);
+    let mut ring: Vec<[Decimal; 2]> = Vec::new();
+    for a in angles {
+        let r = 1e6 * (0.3 + 0.7 * rnd());
+        let d = |v: f64| Decimal::parse(&format!("{}", v.round() as i64)).expect("integer");
+        let p = [d(r * a.cos()), d(r * a.sin())];
+        if !ring.contains(&p) {
+            ring.push(p);
+        }
+    }
+    Polygon::from_raw(&RawPolygon { rings: vec![ring] })
+        .expect("a star-shaped polygon is simple")
+        .0
+}
+
+fn dp(c: &mut Criterion) {
+    let mut group = c.benchmark_group("asano");
+    group.sample_size(10);
+    for n in [250, 500, 1000, 2000] {
+        let polygon = star(n, 1);
+        group.bench_with_input(BenchmarkId::new("dp", n), &polygon, |b, p| {
+            b.iter(|| asano::triangulate(black_box(p), usize::MAX).expect("hole-free"))
+        });
+        group.bench_with_input(BenchmarkId::new("chord_table", n), &polygon, |b, p| {
+            b.iter(|| ChordTable::new(black_box(p)))
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, dp);
+criterion_main!(benches);

@@ -16,36 +16,64 @@
 //! the ray through the vertices in that direction applies (1) and (3) with the exact wedge test.
 //! Works for polygons with holes as well (all rings' edges take part).
 //!
-//! Complexity: O(n log n) per vertex, O(n^2 log n) time in all; O(n^2) bits of memory.
+//! The same angular order also numbers the lines through each vertex ([`ChordTable::line`]):
+//! `k` lies on the line through `i` and `j` exactly when `line(i, k) == line(i, j)`, which
+//! lets the DP test collinearity with one comparison instead of an orientation test.
+//!
+//! Complexity: O(n log n) per vertex, O(n^2 log n) time in all; n^2 bits plus 2 n^2 bytes.
 
 use crate::geom::kernel::{cmp_angle, cross, dot, in_closed_wedge, Point};
 use crate::geom::polygon::Polygon;
 use std::cmp::Ordering;
 use std::collections::BTreeSet;
 
-/// Which vertex pairs are chords, as a symmetric bit matrix over stored vertex indices.
+/// Which vertex pairs are chords, as a symmetric bit matrix over stored vertex indices, and the
+/// numbering of the lines through each vertex.
 #[derive(Clone, Debug)]
 pub struct ChordTable {
     n: usize,
     bits: Vec<u64>,
+    lines: Vec<u16>,
 }
 
 impl ChordTable {
     /// Computes the table for `polygon`.
+    ///
+    /// # Panics
+    /// Above 65,536 vertices (line numbers are `u16`); the DP refuses far smaller inputs.
     pub fn new(polygon: &Polygon) -> ChordTable {
         let n = polygon.len();
+        assert!(
+            n <= 1 << 16,
+            "the chord table is for polygons up to 65,536 vertices"
+        );
         let mut table = ChordTable {
             n,
             bits: vec![0; (n * n).div_ceil(64)],
+            lines: vec![0; n * n],
         };
         let mut visible = Vec::new();
         for v in 0..n {
-            visible_from(polygon, v, &mut visible);
+            let order = visible_from(polygon, v, &mut visible);
+            number_lines(polygon, v, &order, &mut table.lines[v * n..(v + 1) * n]);
             for &u in &visible {
                 table.set(v, u);
             }
         }
         table
+    }
+
+    /// The number of the line through vertices `i` and `k` among the lines through `i`: equal
+    /// for `k` and `j` exactly when `i`, `k`, `j` are collinear. Zero for `k == i`.
+    #[inline]
+    pub fn line(&self, i: usize, k: usize) -> u16 {
+        self.lines[i * self.n + k]
+    }
+
+    /// The line numbers of all vertices around `i` (`line(i, k)` for every `k`).
+    #[inline]
+    pub fn lines_through(&self, i: usize) -> &[u16] {
+        &self.lines[i * self.n..(i + 1) * self.n]
     }
 
     /// Whether the closed segment between stored vertices `a` and `b` is a chord (edges are).
@@ -108,8 +136,50 @@ impl Ord for Cut {
     }
 }
 
-/// Fills `out` with the vertices `u` such that `v u` is a chord.
-fn visible_from(polygon: &Polygon, v: usize, out: &mut Vec<usize>) {
+/// Numbers the lines through `v`: `order` holds the other vertices sorted by angle around `v`
+/// (from the positive x axis, counter-clockwise). Directions in the upper half `[0, pi)` get new
+/// numbers in order; each direction in the lower half takes the number of its opposite direction
+/// if there is one (found by a merge, both halves being sorted), else a new one.
+fn number_lines(polygon: &Polygon, v: usize, order: &[usize], out: &mut [u16]) {
+    let c = polygon.point(v);
+    let upper = |u: usize| {
+        let p = polygon.point(u);
+        p.y > c.y || (p.y == c.y && p.x > c.x)
+    };
+    let split = order.partition_point(|&u| upper(u));
+    let (mut next_id, mut last): (u16, Option<usize>) = (0, None);
+    for &u in &order[..split] {
+        if last.is_none_or(|l| cross(c, polygon.point(l), polygon.point(u)) != 0) {
+            next_id += 1;
+        }
+        out[u] = next_id;
+        last = Some(u);
+    }
+    let (mut j, mut last) = (0, None::<usize>);
+    for &u in &order[split..] {
+        if let Some(l) = last {
+            if cross(c, polygon.point(l), polygon.point(u)) == 0 {
+                out[u] = out[l];
+                continue;
+            }
+        }
+        last = Some(u);
+        // Upper directions before the opposite of u turn clockwise-of-opposite: cross(c, a, u) < 0.
+        while j < split && cross(c, polygon.point(order[j]), polygon.point(u)) < 0 {
+            j += 1;
+        }
+        if j < split && cross(c, polygon.point(order[j]), polygon.point(u)) == 0 {
+            out[u] = out[order[j]];
+        } else {
+            next_id += 1;
+            out[u] = next_id;
+        }
+    }
+}
+
+/// Fills `out` with the vertices `u` such that `v u` is a chord; returns all other vertices
+/// sorted by angle around `v`, then by distance.
+fn visible_from(polygon: &Polygon, v: usize, out: &mut Vec<usize>) -> Vec<usize> {
     out.clear();
     let c = polygon.point(v);
     let (vp, vn) = (
@@ -197,6 +267,7 @@ fn visible_from(polygon: &Polygon, v: usize, out: &mut Vec<usize>) {
         }
         start = end;
     }
+    order
 }
 
 /// The chord test straight from the definition, in O(n) per pair (the sweep's test oracle).
@@ -259,6 +330,14 @@ mod tests {
                         "{a}-{b} in {:?}",
                         p.points()
                     );
+                    for k in (0..p.len()).filter(|&k| k != a && k != b) {
+                        let collinear = cross(p.point(a), p.point(b), p.point(k)) == 0;
+                        assert_eq!(
+                            table.line(a, k) == table.line(a, b),
+                            collinear,
+                            "lines {a} {b} {k}"
+                        );
+                    }
                 }
             }
         }
