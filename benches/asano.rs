@@ -1,4 +1,5 @@
-//! The Asano DP on random star-shaped polygons (the same family as `bench/star.py`), n = 250 .. 2000.
+//! The Asano DP on random star-shaped polygons and on convex polygons (its worst case: every
+//! pair is a chord), n = 250 .. 2000; the same families as `bench/polygon.py`.
 //! Run: `cargo bench --bench asano`. Peak memory: `bench/asano.sh` (README, Benchmarks).
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
@@ -31,6 +32,16 @@ fn star(n: usize, seed: u64) -> Polygon {
         .0
 }
 
+/// A convex polygon: points on a parabola.
+fn convex(n: usize) -> Polygon {
+    let d = |v: usize| Decimal::parse(&v.to_string()).expect("integer");
+    let mut ring: Vec<[Decimal; 2]> = (0..n - 1).map(|i| [d(i), d(i * i)]).collect();
+    ring.push([d(0), d((n - 2) * (n - 2))]);
+    Polygon::from_raw(&RawPolygon { rings: vec![ring] })
+        .expect("convex")
+        .0
+}
+
 fn dp(c: &mut Criterion) {
     let mut group = c.benchmark_group("asano");
     group.sample_size(10);
@@ -41,6 +52,10 @@ fn dp(c: &mut Criterion) {
         });
         group.bench_with_input(BenchmarkId::new("chord_table", n), &polygon, |b, p| {
             b.iter(|| ChordTable::new(black_box(p)))
+        });
+        let polygon = convex(n);
+        group.bench_with_input(BenchmarkId::new("dp_convex", n), &polygon, |b, p| {
+            b.iter(|| asano::triangulate(black_box(p), usize::MAX).expect("hole-free"))
         });
     }
     group.finish();

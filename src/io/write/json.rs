@@ -7,7 +7,6 @@
 //! with its source, index and message. Pretty at the top level, one line per triangle list, so
 //! files stay small and diffable. Complexity: linear in the output size.
 
-use crate::algo::Triangulation;
 use crate::geom::polygon::Polygon;
 use crate::pipeline::Outcome;
 use serde::Serialize;
@@ -19,7 +18,6 @@ use std::io::{self, Write};
 /// Any I/O error of `out`.
 pub fn write_json(outcomes: &[Outcome], out: &mut impl Write) -> io::Result<()> {
     writeln!(out, "{{")?;
-    writeln!(out, "  \"polygons\": [")?;
     let entries: Vec<_> = outcomes
         .iter()
         .filter_map(|o| match (&o.result, &o.polygon, o.index) {
@@ -27,6 +25,11 @@ pub fn write_json(outcomes: &[Outcome], out: &mut impl Write) -> io::Result<()> 
             _ => None,
         })
         .collect();
+    writeln!(
+        out,
+        "  \"polygons\": [{}",
+        if entries.is_empty() { "]," } else { "" }
+    )?;
     for (k, (outcome, solved, polygon, index)) in entries.iter().enumerate() {
         let t = &solved.triangulation;
         let fields: Vec<(&str, String)> = vec![
@@ -57,7 +60,9 @@ pub fn write_json(outcomes: &[Outcome], out: &mut impl Write) -> io::Result<()> 
             if k + 1 < entries.len() { "," } else { "" }
         )?;
     }
-    writeln!(out, "  ],")?;
+    if !entries.is_empty() {
+        writeln!(out, "  ],")?;
+    }
     #[derive(Serialize)]
     struct ErrorEntry<'a> {
         source: &'a str,
@@ -86,9 +91,4 @@ fn ids(polygon: &Polygon, triangles: &[[usize; 3]]) -> Vec<[usize; 3]> {
 
 fn json<T: Serialize + ?Sized>(value: &T) -> String {
     serde_json::to_string(value).unwrap_or_else(|e| format!("\"unserialisable: {e}\""))
-}
-
-/// The triangles of `t` as input vertex numbers (for other writers and tests).
-pub fn input_triangles(polygon: &Polygon, t: &Triangulation) -> Vec<[usize; 3]> {
-    ids(polygon, &t.triangles)
 }
