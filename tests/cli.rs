@@ -315,3 +315,24 @@ fn directories_are_read_recursively_in_sorted_order() {
         "every fixture, and nothing else"
     );
 }
+
+#[test]
+fn verify_reports_a_wrong_output_and_exits_3() {
+    // A fault injected on purpose: every output loses one triangle before it is checked.
+    let out = crate::util::minitri()
+        .args(["-a", "ear", "--verify", "fixtures/valid/u_shape.wkt"])
+        .env(minitri::pipeline::CORRUPT_FOR_TESTS, "1")
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(3));
+    let doc = json(&String::from_utf8_lossy(&out.stdout));
+    let v = &doc["polygons"][0]["verification"];
+    assert_eq!(v["ok"], false);
+    assert_eq!(v["checks"][0]["algorithm"], "ear");
+    assert_eq!(v["checks"][0]["valid"], false);
+    let problems = v["checks"][0]["problems"].to_string();
+    assert!(problems.contains("area") && problems.contains("9 triangles"), "{problems}");
+    assert_eq!(v["checks"][1]["valid"], true, "the asano reference is computed independently");
+    // Without the fault the same run is clean.
+    assert_eq!(run(&["-a", "ear", "--verify", "fixtures/valid/u_shape.wkt"], None).0, 0);
+}
