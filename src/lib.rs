@@ -10,6 +10,8 @@ pub mod geom;
 pub mod io;
 pub mod pipeline;
 pub mod verify;
+#[cfg(test)]
+pub(crate) mod test_support;
 
 pub use algo::{Algorithm, TriangulateError, Triangulation};
 pub use geom::decimal::{Decimal, NumberError};

@@ -162,8 +162,8 @@ pub fn triangulate(polygon: &Polygon, limit: usize) -> Result<Triangulation, Tri
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::algo::chords::tests_support::polygon;
     use crate::geom::kernel::strictly_between;
+    use crate::test_support::{polygon, U_SHAPE};
 
     fn count(ring: &[(i64, i64)]) -> usize {
         triangulate(&polygon(&[ring]), DEFAULT_LIMIT)
@@ -177,21 +177,7 @@ mod tests {
         assert_eq!(count(&[(0, 0), (1, 0), (2, 0), (3, 0), (3, 3), (0, 3)]), 2);
         assert_eq!(count(&[(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)]), 3);
         assert_eq!(count(&[(0, 0), (1, 0), (2, -1), (3, 0), (4, 0), (2, 2)]), 2);
-        let u = [
-            (3, 2),
-            (4, 2),
-            (5, 2),
-            (6, 2),
-            (6, 3),
-            (6, 4),
-            (5, 4),
-            (5, 3),
-            (4, 3),
-            (4, 4),
-            (3, 4),
-            (3, 3),
-        ];
-        assert_eq!(count(&u), 5);
+        assert_eq!(count(&U_SHAPE), 5);
         assert_eq!(
             count(&[
                 (3, 2),

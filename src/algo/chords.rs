@@ -292,32 +292,10 @@ pub(crate) fn is_chord_naive(polygon: &Polygon, v: usize, u: usize) -> bool {
     })
 }
 
-/// Small polygons for unit tests.
-#[cfg(test)]
-pub(crate) mod tests_support {
-    use crate::geom::decimal::Decimal;
-    use crate::geom::polygon::Polygon;
-    use crate::io::read::RawPolygon;
-
-    /// A valid polygon from integer rings (panics if invalid: tests only).
-    pub(crate) fn polygon(rings: &[&[(i64, i64)]]) -> Polygon {
-        let d = |v: i64| Decimal::parse(&v.to_string()).unwrap();
-        let raw = RawPolygon {
-            rings: rings
-                .iter()
-                .map(|r| r.iter().map(|&(x, y)| [d(x), d(y)]).collect())
-                .collect(),
-        };
-        Polygon::from_raw(&raw).expect("valid test polygon").0
-    }
-}
-
 #[cfg(test)]
 mod tests {
-    use super::tests_support::polygon;
     use super::*;
-    use crate::geom::decimal::Decimal;
-    use crate::io::read::RawPolygon;
+    use crate::test_support::{polygon, raw, U_SHAPE};
 
     fn assert_matches_naive(p: &Polygon) {
         let table = ChordTable::new(p);
@@ -345,20 +323,7 @@ mod tests {
 
     #[test]
     fn chords_of_a_u_shape_with_flat_vertices() {
-        let p = polygon(&[&[
-            (3, 2),
-            (4, 2),
-            (5, 2),
-            (6, 2),
-            (6, 3),
-            (6, 4),
-            (5, 4),
-            (5, 3),
-            (4, 3),
-            (4, 4),
-            (3, 4),
-            (3, 3),
-        ]]);
+        let p = polygon(&[&U_SHAPE]);
         let t = ChordTable::new(&p);
         assert!(
             t.is_chord(0, 3),
@@ -394,11 +359,7 @@ mod tests {
                 let at = rnd(ring.len() as u64) as usize + 1;
                 let mut next = ring.clone();
                 next.insert(at, (rnd(7), rnd(7)));
-                let d = |v: i64| Decimal::parse(&v.to_string()).unwrap();
-                let raw = RawPolygon {
-                    rings: vec![next.iter().map(|&(x, y)| [d(x), d(y)]).collect()],
-                };
-                if Polygon::from_raw(&raw).is_ok() {
+                if Polygon::from_raw(&raw(&[&next])).is_ok() {
                     ring = next;
                 }
             }

@@ -145,7 +145,7 @@ impl Grid {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::algo::chords::tests_support::polygon;
+    use crate::test_support::{polygon, U_SHAPE};
 
     fn check(ring: &[(i64, i64)]) {
         let p = polygon(&[ring]);
@@ -163,20 +163,7 @@ mod tests {
     #[test]
     fn flat_vertices_never_give_zero_area_triangles() {
         check(&[(0, 0), (1, 0), (2, 0), (3, 0), (3, 3), (0, 3)]);
-        check(&[
-            (3, 2),
-            (4, 2),
-            (5, 2),
-            (6, 2),
-            (6, 3),
-            (6, 4),
-            (5, 4),
-            (5, 3),
-            (4, 3),
-            (4, 4),
-            (3, 4),
-            (3, 3),
-        ]);
+        check(&U_SHAPE);
         check(&[
             (0, 0),
             (1, 0),

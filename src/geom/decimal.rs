@@ -199,10 +199,7 @@ impl fmt::Display for Decimal {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn d(s: &str) -> Decimal {
-        Decimal::parse(s).expect(s)
-    }
+    use crate::test_support::d;
 
     #[test]
     fn equal_values_written_differently_are_equal() {

@@ -397,23 +397,11 @@ fn to_grid(raw: &RawPolygon) -> Result<(Vec<Point>, Grid), InvalidPolygon> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn raw(rings: &[&[(&str, &str)]]) -> RawPolygon {
-        RawPolygon {
-            rings: rings
-                .iter()
-                .map(|r| {
-                    r.iter()
-                        .map(|(x, y)| [Decimal::parse(x).unwrap(), Decimal::parse(y).unwrap()])
-                        .collect()
-                })
-                .collect(),
-        }
-    }
+    use crate::test_support::raw_decimal;
 
     #[test]
     fn decimals_land_on_one_exact_grid() {
-        let (p, w) = Polygon::from_raw(&raw(&[&[
+        let (p, w) = Polygon::from_raw(&raw_decimal(&[&[
             ("0", "0"),
             ("0.1", "0.3"),
             ("0.2", "0.6"),
@@ -432,7 +420,7 @@ mod tests {
             ]
         );
         assert_eq!(p.format_vertex(2), "(0.2, 0.6)");
-        let (q, _) = Polygon::from_raw(&raw(&[&[
+        let (q, _) = Polygon::from_raw(&raw_decimal(&[&[
             ("0", "0"),
             ("0", "1"),
             ("0.2", "0.6"),
@@ -449,8 +437,12 @@ mod tests {
 
     #[test]
     fn negative_and_offset_coordinates_format_back_exactly() {
-        let (p, _) =
-            Polygon::from_raw(&raw(&[&[("-1.5", "100"), ("2", "100"), ("2", "101.25")]])).unwrap();
+        let (p, _) = Polygon::from_raw(&raw_decimal(&[&[
+            ("-1.5", "100"),
+            ("2", "100"),
+            ("2", "101.25"),
+        ]]))
+        .unwrap();
         assert_eq!(p.format_vertex(0), "(-1.5, 100)");
         assert_eq!(p.format_vertex(2), "(2, 101.25)");
         assert_eq!(p.grid().to_f64(p.point(2)), [2.0, 101.25]);
@@ -458,7 +450,7 @@ mod tests {
 
     #[test]
     fn consecutive_duplicates_are_dropped_but_keep_their_numbers() {
-        let (p, w) = Polygon::from_raw(&raw(&[&[
+        let (p, w) = Polygon::from_raw(&raw_decimal(&[&[
             ("0", "0"),
             ("1", "0"),
             ("1", "0"),
@@ -482,16 +474,21 @@ mod tests {
 
     #[test]
     fn too_large_ranges_are_detected() {
-        let e = Polygon::from_raw(&raw(&[&[("0", "0"), ("1e19", "0"), ("0", "0.1")]])).unwrap_err();
+        let e = Polygon::from_raw(&raw_decimal(&[&[("0", "0"), ("1e19", "0"), ("0", "0.1")]]))
+            .unwrap_err();
         assert!(
             matches!(e, InvalidPolygon::CoordinatesTooLarge { .. }),
             "{e}"
         );
-        let e =
-            Polygon::from_raw(&raw(&[&[("0", "0"), ("1e-30", "0"), ("1e10", "1")]])).unwrap_err();
+        let e = Polygon::from_raw(&raw_decimal(&[&[
+            ("0", "0"),
+            ("1e-30", "0"),
+            ("1e10", "1"),
+        ]]))
+        .unwrap_err();
         assert!(e.to_string().contains("too large"), "{e}");
         // The largest span that fits is accepted.
-        assert!(Polygon::from_raw(&raw(&[&[
+        assert!(Polygon::from_raw(&raw_decimal(&[&[
             ("0", "0"),
             ("4611686018427387904", "0"),
             ("0", "1")

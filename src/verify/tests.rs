@@ -1,18 +1,5 @@
 use super::*;
-use crate::geom::decimal::Decimal;
-use crate::io::read::RawPolygon;
-
-/// A polygon from integer rings (outer first), through the real constructor.
-fn polygon(rings: &[&[(i64, i64)]]) -> Polygon {
-    let number = |v: i64| Decimal::parse(&v.to_string()).expect("an integer parses");
-    let rings = rings
-        .iter()
-        .map(|ring| ring.iter().map(|&(x, y)| [number(x), number(y)]).collect())
-        .collect();
-    Polygon::from_raw(&RawPolygon { rings })
-        .expect("a valid test polygon")
-        .0
-}
+use crate::test_support::polygon;
 
 fn triangulation(triangles: &[[usize; 3]], degenerate: &[[usize; 3]]) -> Triangulation {
     Triangulation {

@@ -1,25 +1,6 @@
 use super::*;
-use crate::geom::decimal::Decimal;
 use crate::geom::kernel::{cross, segment_contact};
-use crate::io::read::RawPolygon;
-
-fn raw(rings: &[&[(i64, i64)]]) -> RawPolygon {
-    RawPolygon {
-        rings: rings
-            .iter()
-            .map(|r| {
-                r.iter()
-                    .map(|&(x, y)| {
-                        [
-                            Decimal::parse(&x.to_string()).unwrap(),
-                            Decimal::parse(&y.to_string()).unwrap(),
-                        ]
-                    })
-                    .collect()
-            })
-            .collect(),
-    }
-}
+use crate::test_support::{raw, U_SHAPE};
 
 fn error(rings: &[&[(i64, i64)]]) -> String {
     match Polygon::from_raw(&raw(rings)) {
@@ -56,21 +37,7 @@ fn valid_polygons_pass() {
         "valid"
     );
     // The U-shape of DESIGN.md.
-    let u = [
-        (3, 2),
-        (4, 2),
-        (5, 2),
-        (6, 2),
-        (6, 3),
-        (6, 4),
-        (5, 4),
-        (5, 3),
-        (4, 3),
-        (4, 4),
-        (3, 4),
-        (3, 3),
-    ];
-    assert_eq!(error(&[&u]), "valid");
+    assert_eq!(error(&[&U_SHAPE]), "valid");
     let (p, _) = Polygon::from_raw(&raw(&[SQUARE, &[(2, 2), (2, 4), (4, 4)]])).unwrap();
     p.check_invariants();
 }

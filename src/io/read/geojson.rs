@@ -436,17 +436,10 @@ fn position(value: &Value) -> Result<[Decimal; 2], Failure> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::test_support::{as_f64, d, ring};
     use serde::de::value::{Error as DeError, MapDeserializer, SeqDeserializer};
     use serde::de::{Deserializer, Error as _, IntoDeserializer, Visitor};
     use serde::Deserialize;
-
-    fn d(s: &str) -> Decimal {
-        Decimal::parse(s).expect(s)
-    }
-
-    fn ring(points: &[(&str, &str)]) -> Vec<[Decimal; 2]> {
-        points.iter().map(|(x, y)| [d(x), d(y)]).collect()
-    }
 
     fn error(text: &str) -> String {
         read(text).expect_err(text).to_string()
@@ -814,19 +807,6 @@ mod tests {
             bool i8 i16 i32 i64 i128 u8 u16 u32 u64 u128 f32 f64 char str string bytes byte_buf
             unit unit_struct seq tuple tuple_struct map struct identifier ignored_any
         }
-    }
-
-    /// Our polygons as `f64` rings, for comparison with the `geojson` crate.
-    fn as_f64(polygons: &[RawPolygon]) -> Vec<Vec<Vec<[f64; 2]>>> {
-        polygons
-            .iter()
-            .map(|p| {
-                p.rings
-                    .iter()
-                    .map(|r| r.iter().map(|[x, y]| [x.to_f64(), y.to_f64()]).collect())
-                    .collect()
-            })
-            .collect()
     }
 
     /// The polygons of a geometry parsed by the `geojson` crate, closing positions dropped.

@@ -220,14 +220,7 @@ fn split_fields(line: &str) -> Result<Vec<(usize, &str)>, (usize, String)> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn d(s: &str) -> Decimal {
-        Decimal::parse(s).expect(s)
-    }
-
-    fn ring(points: &[(&str, &str)]) -> Vec<[Decimal; 2]> {
-        points.iter().map(|(x, y)| [d(x), d(y)]).collect()
-    }
+    use crate::test_support::{d, ring};
 
     fn error(text: &str) -> String {
         read(text).expect_err(text).to_string()

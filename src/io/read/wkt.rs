@@ -456,15 +456,8 @@ impl<'a> Parser<'a> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::test_support::{as_f64, d, ring};
     use std::str::FromStr;
-
-    fn d(s: &str) -> Decimal {
-        Decimal::parse(s).expect(s)
-    }
-
-    fn ring(points: &[(&str, &str)]) -> Vec<[Decimal; 2]> {
-        points.iter().map(|(x, y)| [d(x), d(y)]).collect()
-    }
 
     fn error(text: &str) -> String {
         read(text).expect_err(text).to_string()
@@ -719,19 +712,6 @@ mod tests {
             error("é POLYGON"),
             "line 1, column 1: expected POLYGON, MULTIPOLYGON or GEOMETRYCOLLECTION, found \"é\""
         );
-    }
-
-    /// Our polygons as `f64` rings, for comparison with the `wkt` crate.
-    fn as_f64(polygons: &[RawPolygon]) -> Vec<Vec<Vec<[f64; 2]>>> {
-        polygons
-            .iter()
-            .map(|p| {
-                p.rings
-                    .iter()
-                    .map(|r| r.iter().map(|[x, y]| [x.to_f64(), y.to_f64()]).collect())
-                    .collect()
-            })
-            .collect()
     }
 
     /// The polygons of a geometry parsed by the `wkt` crate, closing points dropped.

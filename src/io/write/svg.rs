@@ -558,40 +558,16 @@ impl fmt::Display for Esc<'_> {
 mod tests {
     use super::*;
     use crate::algo::Algorithm;
-    use crate::geom::decimal::Decimal;
     use crate::io::read::RawPolygon;
-
-    fn polygon(rings: &[Vec<(String, String)>]) -> Polygon {
-        let rings = rings
-            .iter()
-            .map(|r| {
-                r.iter()
-                    .map(|(x, y)| [Decimal::parse(x).unwrap(), Decimal::parse(y).unwrap()])
-                    .collect()
-            })
-            .collect();
-        let (polygon, _) = Polygon::from_raw(&RawPolygon { rings }).unwrap();
-        polygon
-    }
-
-    const U: [(i64, i64); 12] = [
-        (3, 2),
-        (4, 2),
-        (5, 2),
-        (6, 2),
-        (6, 3),
-        (6, 4),
-        (5, 4),
-        (5, 3),
-        (4, 3),
-        (4, 4),
-        (3, 4),
-        (3, 3),
-    ];
+    use crate::test_support::{d, polygon, U_SHAPE};
 
     /// The U shape with every coordinate mapped by `map`.
     fn u_shape(map: impl Fn(i64) -> String) -> Polygon {
-        let p = polygon(&[U.iter().map(|&(x, y)| (map(x), map(y))).collect()]);
+        let rings = vec![U_SHAPE
+            .iter()
+            .map(|&(x, y)| [d(&map(x)), d(&map(y))])
+            .collect()];
+        let (p, _) = Polygon::from_raw(&RawPolygon { rings }).unwrap();
         assert!((0..12).all(|i| p.id(i) == i), "stored in input order");
         p
     }
@@ -640,10 +616,7 @@ mod tests {
                 ring.push(((r * cos).round() as i64, (r * sin).round() as i64));
             }
         }
-        let p = polygon(&[ring
-            .iter()
-            .map(|&(x, y)| (x.to_string(), y.to_string()))
-            .collect()]);
+        let p = polygon(&[&ring]);
         let n = p.len();
         assert!(
             n == ring.len() && (0..n).all(|i| p.id(i) == i),
@@ -947,15 +920,9 @@ mod tests {
     }
 
     fn square_with_hole() -> Polygon {
-        let ring = |points: &[(i64, i64)]| {
-            points
-                .iter()
-                .map(|(x, y)| (x.to_string(), y.to_string()))
-                .collect()
-        };
         polygon(&[
-            ring(&[(0, 0), (10, 0), (10, 10), (0, 10)]),
-            ring(&[(3, 3), (3, 7), (7, 7), (7, 3)]),
+            &[(0, 0), (10, 0), (10, 10), (0, 10)],
+            &[(3, 3), (3, 7), (7, 7), (7, 3)],
         ])
     }
 

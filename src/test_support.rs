@@ -1,0 +1,74 @@
+//! Helpers shared by the unit tests: small polygons and exact numbers from literals.
+
+use crate::geom::decimal::Decimal;
+use crate::geom::polygon::Polygon;
+use crate::io::read::RawPolygon;
+
+/// The U-shape of DESIGN.md: 12 vertices, counter-clockwise from (3, 2), four of them flat, with
+/// a notch from the top down to y = 3.
+pub(crate) const U_SHAPE: [(i64, i64); 12] = [
+    (3, 2),
+    (4, 2),
+    (5, 2),
+    (6, 2),
+    (6, 3),
+    (6, 4),
+    (5, 4),
+    (5, 3),
+    (4, 3),
+    (4, 4),
+    (3, 4),
+    (3, 3),
+];
+
+/// An exact decimal from its text (panics, naming the text, if it does not parse).
+pub(crate) fn d(s: &str) -> Decimal {
+    Decimal::parse(s).expect(s)
+}
+
+/// A ring of exact points from decimal texts.
+pub(crate) fn ring(points: &[(&str, &str)]) -> Vec<[Decimal; 2]> {
+    points.iter().map(|(x, y)| [d(x), d(y)]).collect()
+}
+
+/// A raw polygon from integer rings (outer first), not validated.
+pub(crate) fn raw(rings: &[&[(i64, i64)]]) -> RawPolygon {
+    RawPolygon {
+        rings: rings
+            .iter()
+            .map(|r| r.iter().map(|&(x, y)| [int(x), int(y)]).collect())
+            .collect(),
+    }
+}
+
+/// A raw polygon from rings of decimal texts (outer first), not validated.
+pub(crate) fn raw_decimal(rings: &[&[(&str, &str)]]) -> RawPolygon {
+    RawPolygon {
+        rings: rings.iter().map(|r| ring(r)).collect(),
+    }
+}
+
+/// A valid polygon from integer rings (outer first), through the real constructor (panics if
+/// invalid: tests only).
+pub(crate) fn polygon(rings: &[&[(i64, i64)]]) -> Polygon {
+    Polygon::from_raw(&raw(rings))
+        .expect("a valid test polygon")
+        .0
+}
+
+/// Polygons as `f64` rings, for comparison with other crates' readers.
+pub(crate) fn as_f64(polygons: &[RawPolygon]) -> Vec<Vec<Vec<[f64; 2]>>> {
+    polygons
+        .iter()
+        .map(|p| {
+            p.rings
+                .iter()
+                .map(|r| r.iter().map(|[x, y]| [x.to_f64(), y.to_f64()]).collect())
+                .collect()
+        })
+        .collect()
+}
+
+fn int(v: i64) -> Decimal {
+    d(&v.to_string())
+}
