@@ -41,11 +41,12 @@ pub struct Flags {
 }
 
 const EXAMPLES: &str = "Examples:
-  minitri -a asano fixtures/valid/u_shape.wkt        minimum triangulation as JSON
-  cat shape.wkt | minitri -a asano                   read standard input
-  minitri -a asano --to svg -o u.svg u_shape.wkt     draw it
-  minitri -a ear --verify shapes/                    plain triangulation of a directory, checked
-  echo 'POLYGON ((0 0, 0.1 0.3, 0.2 0.6, 0 1))' | minitri -a asano
+  minitri fixtures/valid/u_shape.wkt               minimum triangulation as JSON
+  cat shape.wkt | minitri                          read standard input
+  minitri --to svg -o u.svg u_shape.wkt            draw it
+  minitri --verify shapes/                         a directory, every output checked by the DP too
+  minitri -a ear shape.geojson                     a plain triangulation (n + 2w - 2 triangles)
+  echo 'POLYGON ((0 0, 0.1 0.3, 0.2 0.6, 0 1))' | minitri      exact decimals: 1 triangle
 
 Exit status: 0 all processed, 1 some input failed, 2 bad command line, 3 --verify found a problem.";
 

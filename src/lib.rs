@@ -9,9 +9,9 @@ pub mod algo;
 pub mod geom;
 pub mod io;
 pub mod pipeline;
-pub mod verify;
 #[cfg(test)]
 pub(crate) mod test_support;
+pub mod verify;
 
 pub use algo::{Algorithm, TriangulateError, Triangulation};
 pub use geom::decimal::{Decimal, NumberError};

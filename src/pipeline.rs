@@ -5,7 +5,7 @@
 //! or carrying an [`Error`] that names what is wrong. One bad polygon never stops the others.
 //! Complexity: that of reading and validating (O(n log n)) plus the chosen algorithm's.
 
-use crate::algo::{asano, ear, Algorithm, TriangulateError, Triangulation};
+use crate::algo::{asano, ear, minitri, Algorithm, TriangulateError, Triangulation};
 use crate::geom::polygon::{Polygon, Warning};
 use crate::geom::validate::InvalidPolygon;
 use crate::io::read::{self, Format, ParseError};
@@ -137,7 +137,7 @@ pub fn triangulate(
     match algorithm {
         Algorithm::Asano => asano::triangulate(polygon, dp_limit),
         Algorithm::Ear => ear::triangulate(polygon),
-        Algorithm::Minitri => Err(TriangulateError::NotImplemented(Algorithm::Minitri)),
+        Algorithm::Minitri => minitri::triangulate(polygon),
     }
 }
 

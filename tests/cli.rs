@@ -9,10 +9,19 @@ fn every_valid_fixture_gives_its_expected_minimum_verified() {
     assert!(expected.len() >= 9);
     for (name, minimum) in &expected {
         let path = format!("fixtures/valid/{name}");
-        let (code, out, err) = run(&["-a", "asano", "--verify", &path], None);
+        let (code, out, err) = run(&["--verify", &path], None);
         assert_eq!(code, 0, "{name}: {err}");
         let doc = json(&out);
         let p = &doc["polygons"][0];
+        assert_eq!(p["algorithm"], "minitri");
+        let checks = p["verification"]["checks"].as_array().unwrap();
+        assert_eq!(checks.len(), 2, "{name}: minitri and the asano DP");
+        assert!(
+            checks
+                .iter()
+                .all(|c| c["valid"] == true && c["triangle_count"] == p["triangle_count"]),
+            "{name}"
+        );
         assert_eq!(p["triangle_count"].to_string(), *minimum, "{name}");
         assert_eq!(
             p["verification"]["ok"], true,
@@ -54,10 +63,14 @@ fn ear_gives_n_minus_2_nondegenerate_triangles_and_verifies() {
         assert_eq!(p["degenerate_count"], 0);
         assert_eq!(p["optimal"], false);
         let checks = p["verification"]["checks"].as_array().unwrap();
+        let names: Vec<&str> = checks
+            .iter()
+            .map(|c| c["algorithm"].as_str().unwrap())
+            .collect();
         assert_eq!(
-            checks.len(),
-            2,
-            "ear and the asano reference are both checked"
+            names,
+            ["ear", "minitri", "asano"],
+            "ear and both exact algorithms are checked"
         );
         assert!(
             checks.iter().all(|c| c["valid"] == true),
@@ -331,8 +344,25 @@ fn verify_reports_a_wrong_output_and_exits_3() {
     assert_eq!(v["checks"][0]["algorithm"], "ear");
     assert_eq!(v["checks"][0]["valid"], false);
     let problems = v["checks"][0]["problems"].to_string();
-    assert!(problems.contains("area") && problems.contains("9 triangles"), "{problems}");
-    assert_eq!(v["checks"][1]["valid"], true, "the asano reference is computed independently");
+    assert!(
+        problems.contains("area") && problems.contains("9 triangles"),
+        "{problems}"
+    );
+    assert_eq!(
+        v["checks"][1]["valid"], true,
+        "minitri is computed independently"
+    );
+    assert_eq!(
+        v["checks"][2]["valid"], true,
+        "the asano reference is computed independently"
+    );
     // Without the fault the same run is clean.
-    assert_eq!(run(&["-a", "ear", "--verify", "fixtures/valid/u_shape.wkt"], None).0, 0);
+    assert_eq!(
+        run(
+            &["-a", "ear", "--verify", "fixtures/valid/u_shape.wkt"],
+            None
+        )
+        .0,
+        0
+    );
 }

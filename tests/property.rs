@@ -5,6 +5,9 @@
 //!   Theorem 3 bounds (generalised to flat vertices), and on polygons of up to 8 vertices equals an exhaustive search over all
 //!   sets of empty vertex triangles (written here from scratch, sharing no code with the crate's
 //!   algorithms);
+//! - MINITRI's output passes the checker and has exactly the DP's count;
+//! - Lemma 3 of Chen & Chang: fewer than 2n - 1 minimally degenerate triangles, on polygons
+//!   without flat vertices (with flat vertices, see `lemma_3_with_flat_vertices` below);
 //! - the plain triangulation passes the checker with exactly n - 2 triangles.
 //!
 //! Random polygons: "general" ones grow from a random triangle by inserting random grid points
@@ -12,7 +15,7 @@
 //! random polyominoes (every lattice point on the boundary is a vertex, so most are flat).
 //! Either kind is used with its flat vertices, and with them removed.
 
-use minitri::algo::{asano, ear};
+use minitri::algo::{asano, ear, minitri as chen_chang};
 use minitri::geom::kernel::{cross, dot, in_closed_wedge, Point};
 use minitri::{verify, Decimal, Polygon, RawPolygon};
 use proptest::prelude::*;
@@ -280,6 +283,19 @@ fn check_all(ring: &[(i64, i64)]) -> Result<(), TestCaseError> {
             ring
         );
     }
+    let k = chen_chang::degenerate::minimally_degenerate(&poly).len();
+    if flat == 0 {
+        prop_assert!(k < 2 * n - 1, "Lemma 3: K = {} for n = {}", k, n);
+    }
+    let fast = chen_chang::triangulate(&poly).map_err(|e| TestCaseError::fail(e.to_string()))?;
+    let report = verify::check(&poly, &fast);
+    prop_assert!(
+        report.valid,
+        "MINITRI output invalid on {:?}: {:?}",
+        ring,
+        report.problems
+    );
+    prop_assert_eq!(fast.triangles.len(), count, "MINITRI vs DP on {:?}", ring);
     let plain = ear::triangulate(&poly).map_err(|e| TestCaseError::fail(e.to_string()))?;
     prop_assert_eq!(plain.triangles.len(), n - 2);
     let report = verify::check(&poly, &plain);
@@ -306,7 +322,7 @@ fn point() -> impl Strategy<Value = (i64, i64)> {
 }
 
 proptest! {
-    #![proptest_config(config(4000, 0x5eed_0001))]
+    #![proptest_config(config(12_000, 0x5eed_0001))]
     #[test]
     fn general_polygons(
         base in [point(), point(), point()],
@@ -321,7 +337,7 @@ proptest! {
 }
 
 proptest! {
-    #![proptest_config(config(2000, 0x5eed_0002))]
+    #![proptest_config(config(8_000, 0x5eed_0002))]
     #[test]
     fn rectilinear_polygons(
         start in (0i64..6, 0i64..6),
@@ -375,4 +391,71 @@ fn the_generators_make_varied_polygons() {
     assert_eq!(without_flat(&ring).len(), 8);
     let ring = general([(0, 0), (6, 0), (3, 6)], &[(0, 3, 0), (1, 3, 2)]).unwrap();
     assert_eq!(ring, vec![(0, 0), (3, 0), (3, 2), (6, 0), (3, 6)]);
+}
+
+/// Polygons from both generators, deterministically, for statistics over the test population.
+fn population(count: usize) -> Vec<Polygon> {
+    let mut seed = 0x0dd_b1a5_e5e5_u64;
+    let mut rnd = move |n: i64| {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed % n as u64) as i64
+    };
+    let mut out = Vec::new();
+    while out.len() < count {
+        let ring = if rnd(2) == 0 {
+            let base = [(rnd(7), rnd(7)), (rnd(7), rnd(7)), (rnd(7), rnd(7))];
+            let ops: Vec<(usize, i64, i64)> = (0..rnd(38) + 2)
+                .map(|_| (rnd(64) as usize, rnd(7), rnd(7)))
+                .collect();
+            general(base, &ops)
+        } else {
+            let ops: Vec<(i64, i64)> = (0..rnd(40)).map(|_| (rnd(6), rnd(6))).collect();
+            Some(rectilinear((rnd(6), rnd(6)), &ops))
+        };
+        if let Some(p) = ring.and_then(|r| to_polygon(&r)) {
+            out.push(p);
+        }
+    }
+    out
+}
+
+#[test]
+fn the_population_has_long_3b_chains_and_large_dependency_clusters() {
+    let (mut chain2, mut chain3, mut chain4) = (0, 0, 0);
+    for p in population(3000) {
+        let mdts = chen_chang::degenerate::minimally_degenerate(&p);
+        let chains = chen_chang::mis::chains(&p, &mdts);
+        let longest = chains.paths.iter().map(Vec::len).max().unwrap_or(0);
+        chain2 += usize::from(longest >= 2);
+        chain3 += usize::from(longest >= 3);
+        chain4 += usize::from(longest >= 4);
+    }
+    // Measured: 834, 249 and 63 of the 3000 polygons.
+    assert!(
+        chain2 >= 600 && chain3 >= 150 && chain4 >= 30,
+        "3b-chains: {chain2} / {chain3} / {chain4}"
+    );
+}
+
+/// Lemma 3 is proved for polygons without flat vertices. With flat vertices no proof is known to
+/// us; on these 3000 polygons (most with flat vertices) K < 2n - 1 still holds, and this test
+/// keeps watching it: a failure would be a finding worth a fixture, not a bug by itself.
+#[test]
+fn lemma_3_with_flat_vertices() {
+    let mut worst = 0.0f64;
+    for p in population(3000) {
+        let n = p.len();
+        let flat = (0..n)
+            .filter(|&i| cross(p.point(p.prev(i)), p.point(i), p.point(p.next(i))) == 0)
+            .count();
+        let k = chen_chang::degenerate::minimally_degenerate(&p).len();
+        assert!(k < 2 * n - 1, "K = {k}, n = {n}, f = {flat}");
+        worst = worst.max(k as f64 / n as f64);
+    }
+    assert!(
+        worst > 0.5,
+        "the population has many degenerate triangles: max K/n = {worst}"
+    );
 }

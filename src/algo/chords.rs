@@ -179,7 +179,7 @@ fn number_lines(polygon: &Polygon, v: usize, order: &[usize], out: &mut [u16]) {
 
 /// Fills `out` with the vertices `u` such that `v u` is a chord; returns all other vertices
 /// sorted by angle around `v`, then by distance.
-fn visible_from(polygon: &Polygon, v: usize, out: &mut Vec<usize>) -> Vec<usize> {
+pub(crate) fn visible_from(polygon: &Polygon, v: usize, out: &mut Vec<usize>) -> Vec<usize> {
     out.clear();
     let c = polygon.point(v);
     let (vp, vn) = (

@@ -33,12 +33,22 @@ pub fn triangulate(polygon: &Polygon) -> Result<Triangulation, TriangulateError>
             holes: polygon.holes(),
         });
     }
-    let n = polygon.len();
-    let pts = polygon.points();
-    let mut next: Vec<usize> = (0..n).map(|i| polygon.next(i)).collect();
-    let mut prev: Vec<usize> = (0..n).map(|i| polygon.prev(i)).collect();
+    Ok(Triangulation {
+        algorithm: Algorithm::Ear,
+        triangles: clip(polygon.points()),
+        degenerate: Vec::new(),
+        optimal: false,
+    })
+}
+
+/// Ear clipping of one counter-clockwise simple polygon given as its cycle of points (flat
+/// vertices allowed): exactly `len - 2` triangles of positive area, as indices into `pts`.
+pub(crate) fn clip(pts: &[Point]) -> Vec<[usize; 3]> {
+    let n = pts.len();
+    let mut next: Vec<usize> = (0..n).map(|i| (i + 1) % n).collect();
+    let mut prev: Vec<usize> = (0..n).map(|i| (i + n - 1) % n).collect();
     let mut grid = Grid::new(pts);
-    let mut triangles = Vec::with_capacity(n - 2);
+    let mut triangles = Vec::with_capacity(n.saturating_sub(2));
     let mut remaining = n;
     let mut v = 0;
     let mut misses = 0; // vertices tested since the last clip
@@ -63,13 +73,10 @@ pub fn triangulate(polygon: &Polygon) -> Result<Triangulation, TriangulateError>
             v = q;
         }
     }
-    triangles.push([prev[v], v, next[v]]);
-    Ok(Triangulation {
-        algorithm: Algorithm::Ear,
-        triangles,
-        degenerate: Vec::new(),
-        optimal: false,
-    })
+    if remaining == 3 {
+        triangles.push([prev[v], v, next[v]]);
+    }
+    triangles
 }
 
 fn is_ear(pts: &[Point], grid: &Grid, p: usize, v: usize, q: usize) -> bool {

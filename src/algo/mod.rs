@@ -7,6 +7,7 @@
 pub mod asano;
 pub mod chords;
 pub mod ear;
+pub mod minitri;
 
 use std::fmt;
 
@@ -120,7 +121,4 @@ pub enum TriangulateError {
         /// Estimated time, in words.
         time: String,
     },
-    /// The algorithm is not available yet.
-    #[error("the {0} algorithm is not implemented yet; use --algorithm asano (exact minimum) or --algorithm ear")]
-    NotImplemented(Algorithm),
 }

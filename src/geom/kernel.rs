@@ -174,6 +174,23 @@ pub fn cmp_angle(centre: Point, a: Point, b: Point) -> Ordering {
         .then_with(|| 0.cmp(&cross(centre, a, b)))
 }
 
+/// Total order of directions around a centre by counter-clockwise angle measured from the
+/// direction towards `reference` (angle 0); equal for directions on the same ray. All points
+/// must differ from `centre`.
+pub fn cmp_angle_from(centre: Point, reference: Point, a: Point, b: Point) -> Ordering {
+    let half = |p: Point| {
+        let s = cross(centre, reference, p);
+        if s > 0 || (s == 0 && dot(centre, reference, p) > 0) {
+            0
+        } else {
+            1
+        }
+    };
+    half(a)
+        .cmp(&half(b))
+        .then_with(|| 0.cmp(&cross(centre, a, b)))
+}
+
 /// An exact sum of many `i128` values (areas of large polygons), immune to overflow.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct WideSum {
@@ -308,6 +325,16 @@ mod tests {
         assert_eq!(pts[..4], [p(1, 0), p(1, 1), p(2, 2), p(0, 1)]);
         assert_eq!(pts[4..], [p(-1, 0), p(0, -1), p(1, -1)]);
         assert_eq!(cmp_angle(c, p(1, 1), p(2, 2)), Ordering::Equal);
+    }
+
+    #[test]
+    fn angles_from_a_reference_direction() {
+        let c = p(0, 0);
+        let r = p(0, 1); // angle 0 points up
+        let mut pts = [p(1, 0), p(-1, 0), p(0, 5), p(0, -1), p(-1, 1)];
+        pts.sort_by(|&a, &b| cmp_angle_from(c, r, a, b));
+        assert_eq!(pts, [p(0, 5), p(-1, 1), p(-1, 0), p(0, -1), p(1, 0)]);
+        assert_eq!(cmp_angle_from(c, r, p(0, 1), p(0, 7)), Ordering::Equal);
     }
 
     #[test]

@@ -1,0 +1,72 @@
+//! Step 2 of MINITRI: the circular representation C(P) (Chen & Chang 1990, §3, Step 2).
+//!
+//! The boundary of P is read as a circle (vertices in boundary order) and each minimally
+//! degenerate triangle `(a, b, c)` becomes the chord `a c` of that circle. Several chords can end
+//! at one vertex: their endpoints are spread over a small arc at that vertex, ordered by the
+//! angle of the chord around the vertex, so that chords which do not cross in the plane do not
+//! cross on the circle. Going round the circle in boundary order the boundary arrives from
+//! `prev(v)` and leaves towards `next(v)`, so at `v` the chord turning furthest from the
+//! direction of `next(v)` (nearest to `prev(v)`) comes first. Two triangles sharing an end
+//! (Theorem 1 (ii)) thus never cross; the only independent triangles whose chords cross are the
+//! pairs of a 3b-chain (relationship (iii)(b)), which [`super::mis`] treats separately.
+//!
+//! Complexity: O(K log K) for K triangles.
+
+use super::degenerate::Degenerate;
+use crate::geom::kernel::cmp_angle_from;
+use crate::geom::polygon::Polygon;
+
+/// Chords on a circle with positions `0..2K`, one endpoint per position.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Circle {
+    /// For each triangle, its chord `(left, right)` with `left < right`.
+    pub chords: Vec<(usize, usize)>,
+    /// For each position, the triangle whose chord ends there.
+    pub owner: Vec<usize>,
+}
+
+impl Circle {
+    /// The other endpoint of the chord ending at `position`.
+    pub fn other(&self, position: usize) -> usize {
+        let (l, r) = self.chords[self.owner[position]];
+        if l == position {
+            r
+        } else {
+            l
+        }
+    }
+
+    /// Whether the chords of triangles `s` and `t` cross on the circle.
+    pub fn cross(&self, s: usize, t: usize) -> bool {
+        let ((a, b), (c, d)) = (self.chords[s], self.chords[t]);
+        (a < c && c < b && b < d) || (c < a && a < d && d < b)
+    }
+}
+
+/// Builds C(P) for the triangles `mdts` of `polygon`.
+pub fn circle(polygon: &Polygon, mdts: &[Degenerate]) -> Circle {
+    // (vertex at the endpoint, triangle, middle vertex the chord heads to)
+    let mut ends: Vec<(usize, usize, usize)> = Vec::with_capacity(2 * mdts.len());
+    for (t, m) in mdts.iter().enumerate() {
+        ends.push((m.a, t, m.b));
+        ends.push((m.c, t, m.b));
+    }
+    ends.sort_by(|&(v, _, x), &(w, _, y)| {
+        v.cmp(&w).then_with(|| {
+            let (c, r) = (polygon.point(v), polygon.point(polygon.next(v)));
+            cmp_angle_from(c, r, polygon.point(x), polygon.point(y)).reverse()
+        })
+    });
+    let mut chords = vec![(usize::MAX, usize::MAX); mdts.len()];
+    let mut owner = Vec::with_capacity(ends.len());
+    for (position, &(_, t, _)) in ends.iter().enumerate() {
+        let chord = &mut chords[t];
+        if chord.0 == usize::MAX {
+            chord.0 = position;
+        } else {
+            chord.1 = position;
+        }
+        owner.push(t);
+    }
+    Circle { chords, owner }
+}

@@ -1,0 +1,240 @@
+//! Unit tests of the MINITRI steps on hand-made polygons.
+
+use super::circle::{circle, Circle};
+use super::degenerate::{minimally_degenerate, Degenerate, Kind};
+use super::mis::{chains, crossing_components, is_3b_pair};
+use super::triangulate;
+use crate::algo::asano;
+use crate::geom::polygon::Polygon;
+use crate::test_support::{polygon, U_SHAPE};
+
+/// The minimally degenerate triangle with these three vertices (by coordinates), if found.
+fn find(
+    p: &Polygon,
+    mdts: &[Degenerate],
+    a: (i64, i64),
+    b: (i64, i64),
+    c: (i64, i64),
+) -> Option<usize> {
+    let at = |q: (i64, i64)| vertex(p, q);
+    let (a, b, c) = (at(a), at(b), at(c));
+    mdts.iter()
+        .position(|m| m.b == b && ((m.a, m.c) == (a.min(c), a.max(c))))
+}
+
+/// The stored index of the vertex at input coordinates `q`.
+fn vertex(p: &Polygon, q: (i64, i64)) -> usize {
+    let text = format!("({}, {})", q.0, q.1);
+    (0..p.len())
+        .find(|&i| p.format_vertex(i) == text)
+        .expect("a vertex there")
+}
+
+fn minimum_agrees(p: &Polygon) -> usize {
+    let t = triangulate(p).unwrap();
+    let reference = asano::triangulate(p, asano::DEFAULT_LIMIT).unwrap();
+    assert_eq!(t.triangles.len(), reference.triangles.len());
+    assert!(
+        crate::verify::check(p, &t).valid,
+        "{:?}",
+        crate::verify::check(p, &t).problems
+    );
+    t.degenerate.len()
+}
+
+#[test]
+fn type_i_neither_side_is_an_edge() {
+    // The L-shape: the reflex corner (1,1) lies on the diagonal from (2,0) to (0,2).
+    let p = polygon(&[&[(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)]]);
+    let mdts = minimally_degenerate(&p);
+    assert_eq!(mdts.len(), 1);
+    assert_eq!(mdts[0].kind, Kind::TypeI);
+    assert_eq!(minimum_agrees(&p), 1);
+}
+
+#[test]
+fn type_ii_one_side_is_an_edge() {
+    // The edge (2,2)-(2,1) extended through the reflex vertex (2,1) reaches the vertex (2,0).
+    let p = polygon(&[&[(0, 0), (2, 0), (4, 0), (4, 2), (2, 2), (2, 1), (0, 1)]]);
+    let mdts = minimally_degenerate(&p);
+    let t = find(&p, &mdts, (2, 2), (2, 1), (2, 0)).expect("found");
+    assert_eq!(mdts[t].kind, Kind::TypeII);
+    minimum_agrees(&p);
+}
+
+#[test]
+fn type_iii_a_vertex_joins_an_edge_on_the_line() {
+    // (0,0)-(1,0) is an edge, (1,0) reflex, and (3,0) continues along the line to (4,0).
+    let p = polygon(&[&[(0, 0), (1, 0), (2, -1), (3, 0), (4, 0), (2, 2)]]);
+    let mdts = minimally_degenerate(&p);
+    let t = find(&p, &mdts, (0, 0), (1, 0), (3, 0)).expect("found");
+    assert_eq!(mdts[t].kind, Kind::TypeIII);
+    assert_eq!(minimum_agrees(&p), 2);
+}
+
+#[test]
+fn flat_vertices_are_middles_of_flat_triangles() {
+    let p = polygon(&[&[(0, 0), (1, 3), (2, 6), (0, 10)]]);
+    let mdts = minimally_degenerate(&p);
+    assert_eq!(mdts.len(), 1);
+    assert_eq!(
+        (mdts[0].a, mdts[0].b, mdts[0].c, mdts[0].kind),
+        (0, 1, 2, Kind::Flat)
+    );
+    assert_eq!(minimum_agrees(&p), 1);
+}
+
+/// A box with a notch from the top down to (2,0) and one from the bottom up to (4,0); the line
+/// y = 0 holds (0,0), (2,0), (4,0), (6,0).
+const ZIGZAG: [(i64, i64); 12] = [
+    (0, -2),
+    (3, -2),
+    (4, 0),
+    (5, -2),
+    (6, -2),
+    (6, 0),
+    (6, 2),
+    (3, 2),
+    (2, 0),
+    (1, 2),
+    (0, 2),
+    (0, 0),
+];
+
+#[test]
+fn relationship_iii_a_sides_shared_with_180_degree_sides_opposite() {
+    let p = polygon(&[&ZIGZAG]);
+    let mdts = minimally_degenerate(&p);
+    let s = find(&p, &mdts, (0, 0), (2, 0), (4, 0)).expect("found");
+    let t = find(&p, &mdts, (2, 0), (4, 0), (6, 0)).expect("found");
+    assert!(!is_3b_pair(&p, &mdts[s], &mdts[t]));
+    assert!(
+        !circle(&p, &mdts).cross(s, t),
+        "independent and apart on the circle"
+    );
+    minimum_agrees(&p);
+}
+
+#[test]
+fn relationship_iii_b_a_3b_chain_of_length_4() {
+    // A comb whose gap bottoms (1,1) .. (6,1) lie on one line, every middle with its 180-degree
+    // side below: four triangles, consecutive ones crossing on the circle, all independent.
+    let ring = [
+        (0, 0),
+        (7, 0),
+        (7, 3),
+        (6, 3),
+        (6, 1),
+        (5, 1),
+        (5, 3),
+        (4, 3),
+        (4, 1),
+        (3, 1),
+        (3, 3),
+        (2, 3),
+        (2, 1),
+        (1, 1),
+        (1, 3),
+        (0, 3),
+    ];
+    let p = polygon(&[&ring]);
+    let mdts = minimally_degenerate(&p);
+    let ids: Vec<usize> = (1..=4)
+        .map(|x| find(&p, &mdts, (x, 1), (x + 1, 1), (x + 2, 1)).expect("found"))
+        .collect();
+    let c = circle(&p, &mdts);
+    for w in ids.windows(2) {
+        assert!(is_3b_pair(&p, &mdts[w[0]], &mdts[w[1]]));
+        assert!(c.cross(w[0], w[1]), "3b pairs cross on the circle");
+    }
+    let ch = chains(&p, &mdts);
+    let (chain, _) = ch.place[ids[0]];
+    assert_eq!(ch.paths[chain].len(), 4);
+    assert!(ids.iter().all(|&t| ch.place[t].0 == chain));
+    let t = triangulate(&p).unwrap();
+    let middles: Vec<usize> = t.degenerate.iter().map(|d| d[1]).collect();
+    for x in 2..=5 {
+        let v = vertex(&p, (x, 1));
+        assert!(middles.contains(&v), "the whole chain is used: ({x}, 1)");
+    }
+    minimum_agrees(&p);
+}
+
+#[test]
+fn touching_at_a_middle_vertex_on_either_side() {
+    let p = polygon(&[&U_SHAPE]);
+    let mdts = minimally_degenerate(&p);
+    let c: Circle = circle(&p, &mdts);
+    // T = (4,2) (4,3) (4,4): middle (4,3), 180-degree side to the left (x < 4).
+    let t = find(&p, &mdts, (4, 2), (4, 3), (4, 4)).expect("found");
+    // U = (4,3) (5,3) (6,3) ends at T's middle and lies to the right: independent.
+    let u = find(&p, &mdts, (4, 3), (5, 3), (6, 3)).expect("found");
+    assert!(!c.cross(t, u));
+    // The flat (3,4) (3,3) (3,2): anything ending at (3,3) is on its 180-degree side.
+    let flat = find(&p, &mdts, (3, 4), (3, 3), (3, 2)).expect("found");
+    assert_eq!(mdts[flat].kind, Kind::Flat);
+    let w = find(&p, &mdts, (3, 3), (4, 3), (5, 3)).expect("found");
+    assert!(c.cross(flat, w), "dependent on the flat triangle");
+    assert_eq!(minimum_agrees(&p), 5);
+}
+
+#[test]
+fn crossing_components_match_brute_force() {
+    let mut seed = 0x1234_5678_9abc_def0u64;
+    let mut rnd = |n: usize| {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed % n as u64) as usize
+    };
+    for _ in 0..500 {
+        let k = 1 + rnd(12);
+        let mut positions: Vec<usize> = (0..2 * k).collect();
+        for i in (1..positions.len()).rev() {
+            positions.swap(i, rnd(i + 1));
+        }
+        let chords: Vec<(usize, usize)> = (0..k)
+            .map(|t| {
+                (
+                    positions[2 * t].min(positions[2 * t + 1]),
+                    positions[2 * t].max(positions[2 * t + 1]),
+                )
+            })
+            .collect();
+        let mut owner = vec![0; 2 * k];
+        for (t, &(l, r)) in chords.iter().enumerate() {
+            owner[l] = t;
+            owner[r] = t;
+        }
+        let c = Circle { chords, owner };
+        // Brute force: label propagation over crossing pairs.
+        let mut label: Vec<usize> = (0..k).collect();
+        loop {
+            let mut changed = false;
+            for s in 0..k {
+                for t in 0..k {
+                    if c.cross(s, t) && label[s] != label[t] {
+                        let m = label[s].min(label[t]);
+                        label[s] = m;
+                        label[t] = m;
+                        changed = true;
+                    }
+                }
+            }
+            if !changed {
+                break;
+            }
+        }
+        let mut expected: Vec<Vec<usize>> = Vec::new();
+        for l in 0..k {
+            let group: Vec<usize> = (0..k).filter(|&t| label[t] == l).collect();
+            if !group.is_empty() {
+                expected.push(group);
+            }
+        }
+        let mut got = crossing_components(&c);
+        got.sort();
+        expected.sort();
+        assert_eq!(got, expected, "{:?}", c.chords);
+    }
+}
