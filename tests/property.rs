@@ -459,3 +459,41 @@ fn lemma_3_with_flat_vertices() {
         "the population has many degenerate triangles: max K/n = {worst}"
     );
 }
+
+/// The long soak of issue 3: a million random polygons (half general, half rectilinear) through
+/// every property above. Run it with `cargo test --release --test main soak -- --ignored`;
+/// `MINITRI_SOAK_CASES` changes the count.
+#[test]
+#[ignore]
+fn soak() {
+    let cases: u32 = std::env::var("MINITRI_SOAK_CASES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(1_000_000);
+    let mut runner = proptest::test_runner::TestRunner::new(config(cases / 2, 0x50a4_0001));
+    let general_case = (
+        [point(), point(), point()],
+        prop::collection::vec((0usize..64, 0i64..=6, 0i64..=6), 2..40),
+        any::<bool>(),
+    );
+    runner
+        .run(&general_case, |(base, ops, drop_flat)| {
+            if let Some(ring) = general(base, &ops) {
+                check_all(&if drop_flat { without_flat(&ring) } else { ring })?;
+            }
+            Ok(())
+        })
+        .expect("general polygons");
+    let mut runner = proptest::test_runner::TestRunner::new(config(cases / 2, 0x50a4_0002));
+    let rectilinear_case = (
+        (0i64..6, 0i64..6),
+        prop::collection::vec((0i64..6, 0i64..6), 0..40),
+        any::<bool>(),
+    );
+    runner
+        .run(&rectilinear_case, |(start, ops, drop_flat)| {
+            let ring = rectilinear(start, &ops);
+            check_all(&if drop_flat { without_flat(&ring) } else { ring })
+        })
+        .expect("rectilinear polygons");
+}

@@ -1,7 +1,9 @@
-//! A plain triangulation of a polygon without holes into n - 2 nondegenerate triangles, by ear
-//! clipping (Meisters, "Polygons have ears", *Amer. Math. Monthly* 82 (1975); the lecture notes
+//! The plain triangulation (`--algorithm ear`) of a polygon without holes into n - 2
+//! nondegenerate triangles: [`crate::algo::monotone`] pieces in O(n log n), and, for small
+//! polygons (up to 16 vertices, where it is quickest), ear clipping (Meisters, "Polygons have
+//! ears", *Amer. Math. Monthly* 82 (1975); the lecture notes
 //! `papers/goldwasser-1991-lecture-triangulating-simple-polygons.txt` and
-//! `papers/toussaint-1993-lecture-triangulations.txt`).
+//! `papers/toussaint-1993-lecture-triangulations.txt`), which this module implements.
 //!
 //! Input contract: a valid polygon without holes; flat vertices allowed.
 //! Output guarantee: exactly n - 2 counter-clockwise triangles of positive area; no zero-area
@@ -15,8 +17,8 @@
 //! clipper that accepts `cross >= 0` emits zero-area triangles at flat vertices; one that tests
 //! only the open triangle can cut a diagonal through a vertex.
 //!
-//! Complexity: O(n^2) worst case (each ear test looks at the remaining vertices in the
-//! triangle's bounding box, found through a uniform grid); close to linear on typical inputs.
+//! Complexity of the ear clipper: O(n^2) worst case (each ear test looks at the remaining
+//! vertices in the triangle's bounding box, found through a uniform grid).
 
 use super::{Algorithm, TriangulateError, Triangulation};
 use crate::geom::kernel::{cross, Point};
@@ -35,7 +37,7 @@ pub fn triangulate(polygon: &Polygon) -> Result<Triangulation, TriangulateError>
     }
     Ok(Triangulation {
         algorithm: Algorithm::Ear,
-        triangles: clip(polygon.points()),
+        triangles: super::plain(polygon.points()),
         degenerate: Vec::new(),
         optimal: false,
     })

@@ -1,6 +1,9 @@
 //! Triangulation algorithms. Each returns a plain [`Triangulation`]; writers consume it.
 //!
-//! - [`ear`]: a plain triangulation into n + 2w - 2 nondegenerate triangles.
+//! - [`ear`]: the plain triangulation into n + 2w - 2 nondegenerate triangles (`--algorithm ear`),
+//!   by [`monotone`] pieces; ear clipping for small pieces.
+//! - [`monotone`]: O(n log n) triangulation by monotone pieces, safe with flat vertices.
+//! - [`minitri`]: the exact minimum by Chen & Chang's MINITRI.
 //! - [`asano`]: the exact minimum by the dynamic program of Asano, Asano & Pinter.
 //! - [`chords`]: which vertex pairs are chords (used by the DP).
 
@@ -8,6 +11,7 @@ pub mod asano;
 pub mod chords;
 pub mod ear;
 pub mod minitri;
+pub mod monotone;
 
 use std::fmt;
 
@@ -95,6 +99,17 @@ pub(crate) fn t_junctions(polygon: &crate::Polygon, triangles: &[[usize; 3]]) ->
         }
     }
     out
+}
+
+/// A plain triangulation of one counter-clockwise simple polygon given as its cycle of points
+/// (flat vertices allowed): `len - 2` positive triangles as indices into `pts`. Ear clipping for
+/// small polygons, where it is quickest, monotone pieces (O(n log n)) otherwise.
+pub(crate) fn plain(pts: &[crate::geom::kernel::Point]) -> Vec<[usize; 3]> {
+    if pts.len() <= 16 {
+        ear::clip(pts)
+    } else {
+        monotone::triangulate_cycle(pts)
+    }
 }
 
 /// Why an algorithm could not triangulate a (valid) polygon.

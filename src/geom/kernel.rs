@@ -191,6 +191,61 @@ pub fn cmp_angle_from(centre: Point, reference: Point, a: Point, b: Point) -> Or
         .then_with(|| 0.cmp(&cross(centre, a, b)))
 }
 
+/// A direction: the difference of two grid points, or its negation. Both components lie within
+/// `±MAX_COORD`, so cross and dot products of two directions are exact in `i128`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Dir {
+    /// x component.
+    pub x: i64,
+    /// y component.
+    pub y: i64,
+}
+
+impl Dir {
+    /// The direction from `from` to `to`.
+    #[inline]
+    pub fn between(from: Point, to: Point) -> Dir {
+        Dir {
+            x: to.x - from.x,
+            y: to.y - from.y,
+        }
+    }
+
+    /// The opposite direction.
+    #[inline]
+    pub fn reversed(self) -> Dir {
+        Dir {
+            x: -self.x,
+            y: -self.y,
+        }
+    }
+
+    /// The cross product `self x other` (positive when `other` turns counter-clockwise).
+    #[inline]
+    pub fn cross(self, other: Dir) -> i128 {
+        i128::from(self.x) * i128::from(other.y) - i128::from(self.y) * i128::from(other.x)
+    }
+
+    /// The dot product.
+    #[inline]
+    pub fn dot(self, other: Dir) -> i128 {
+        i128::from(self.x) * i128::from(other.x) + i128::from(self.y) * i128::from(other.y)
+    }
+}
+
+/// Total order of directions by counter-clockwise angle measured from `reference` (angle 0).
+pub fn cmp_dir_from(reference: Dir, a: Dir, b: Dir) -> Ordering {
+    let half = |d: Dir| {
+        let s = reference.cross(d);
+        if s > 0 || (s == 0 && reference.dot(d) > 0) {
+            0
+        } else {
+            1
+        }
+    };
+    half(a).cmp(&half(b)).then_with(|| 0.cmp(&a.cross(b)))
+}
+
 /// An exact sum of many `i128` values (areas of large polygons), immune to overflow.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct WideSum {

@@ -11,22 +11,28 @@
 //! side is an edge and some vertex has another edge on that line; `Flat` when both sides are
 //! edges (`b` is a flat vertex; its only degenerate triangle is `(prev, b, next)`).
 //!
-//! Method: for a flat vertex, its one triangle. For a reflex vertex `b`, the angular visibility
-//! sweep around `b` ([`crate::algo::chords`]) lists the vertices in angular order with those seen
-//! along chords; the nearest vertex of each direction, if seen, is paired with the nearest seen
-//! vertex of the exactly opposite direction, found by merging the two half-turns (both sorted).
-//! This covers all three types at once (types (ii)/(iii) are the directions of `b`'s own edges).
+//! Method: for a flat vertex, its one triangle. For a reflex vertex `b`, only the directions `d`
+//! with both `d` and `-d` in its closed angle matter: a double cone. Triangular expansion over a
+//! plain triangulation ([`super::expansion`]) lists the nearest vertices seen from `b` in each of
+//! the two cones, sorted by angle; merging them pairs exactly opposite directions. This covers
+//! all three types at once (types (ii)/(iii) are the directions along `b`'s own edges). The
+//! paper instead finds types (ii)/(iii) by ray shooting and type (i) by divide and conquer with
+//! polygon cutting; [`minimally_degenerate_by_sweep`] keeps a simpler O(r n log n) method (an
+//! angular sweep around each reflex vertex) as the reference for the tests.
 //!
 //! Lemma 3 of the paper, K < 2n - 1 triangles, is proved there for polygons without flat
 //! vertices, and checked by the property tests on those. With flat vertices we know no proof; on
 //! the test population (thousands of random grid polygons, most with flat vertices) K < 2n - 1
 //! still held, which `tests/property.rs` keeps watching.
 //!
-//! Complexity: O(n log n) per reflex vertex, O(r n log n) in all (r reflex vertices), O(n)
-//! memory. The paper's O(n log^2 n) by polygon cutting and ray shooting is not implemented yet.
+//! Complexity: a plain triangulation, then work proportional to the triangles seen inside each
+//! reflex vertex's double cone: O(n^2) in the worst case (every reflex vertex seeing most of the
+//! polygon), near-linear on typical polygons (see the README's benchmarks). The paper's
+//! O(n log^2 n) worst case (polygon cutting and ray shooting) is not implemented.
 
+use super::expansion::{double_cone, Mesh};
 use crate::algo::chords::visible_from;
-use crate::geom::kernel::{cross, Point};
+use crate::geom::kernel::{cross, Dir, Point};
 use crate::geom::polygon::Polygon;
 
 /// The kind of a minimally degenerate triangle (Chen & Chang, §3).
@@ -101,8 +107,48 @@ impl Degenerate {
     }
 }
 
-/// All minimally degenerate triangles of a polygon without holes.
+/// All minimally degenerate triangles of a polygon without holes, by triangular expansion from
+/// each reflex vertex inside its double cone ([`super::expansion`]) over a plain triangulation.
 pub fn minimally_degenerate(polygon: &Polygon) -> Vec<Degenerate> {
+    let mesh = Mesh::new(
+        polygon,
+        crate::algo::monotone::triangulate_cycle(polygon.points()),
+    );
+    let mut out = Vec::new();
+    for b in 0..polygon.len() {
+        let (p, q) = (polygon.prev(b), polygon.next(b));
+        let turn = cross(polygon.point(p), polygon.point(b), polygon.point(q));
+        if turn == 0 {
+            out.push(Degenerate::new(polygon, p, b, q));
+            continue;
+        }
+        if turn > 0 {
+            continue; // convex: no two opposite directions fit in its angle
+        }
+        let (first, second) = double_cone(polygon, &mesh, b);
+        // Opposite directions are at the same place of the two cones (both sorted by angle).
+        let c = polygon.point(b);
+        let dir = |v: usize| Dir::between(c, polygon.point(v));
+        let (mut i, mut j) = (0, 0);
+        while i < first.len() && j < second.len() {
+            let (d, e) = (dir(first[i]), dir(second[j]).reversed());
+            match d.cross(e).cmp(&0) {
+                std::cmp::Ordering::Greater => i += 1,
+                std::cmp::Ordering::Less => j += 1,
+                std::cmp::Ordering::Equal => {
+                    out.push(Degenerate::new(polygon, first[i], b, second[j]));
+                    i += 1;
+                    j += 1;
+                }
+            }
+        }
+    }
+    out
+}
+
+/// The same triangles by an angular visibility sweep around every reflex vertex: O(r n log n).
+/// The reference for tests of [`minimally_degenerate`].
+pub fn minimally_degenerate_by_sweep(polygon: &Polygon) -> Vec<Degenerate> {
     let mut out = Vec::new();
     let mut visible = Vec::new();
     let mut seen = vec![false; polygon.len()];

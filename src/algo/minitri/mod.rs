@@ -17,6 +17,7 @@
 
 pub mod circle;
 pub mod degenerate;
+pub mod expansion;
 pub mod mis;
 pub mod partition;
 

@@ -7,14 +7,14 @@
 //! simple polygon. On its 180-degree side a chosen middle vertex `b` is straight (its neighbours in
 //! the piece are `a` and `c`, collinear with it): it is dropped from that piece, which then has the
 //! side `a c` with `b` inside it, the T-junction that saves a triangle. Input flat vertices that
-//! are not chosen middles stay, and the ear clipper ([`crate::algo::ear`]) never makes a zero-area
+//! are not chosen middles stay, and the plain triangulation ([`crate::algo::plain`]) never makes a zero-area
 //! triangle at them. Each piece with `n_i` vertices gives `n_i - 2` triangles, `n - 2 - d` in all.
 //!
-//! Complexity: O(n + K) to build the graph and walk its faces, plus the ear clipper on each piece
-//! (O(n_i^2) worst case; an O(n_i log n_i) monotone triangulation is still to come).
+//! Complexity: O((n + K) log n) to build the graph and walk its faces, plus O(n_i log n_i) for
+//! each piece ([`crate::algo::plain`]).
 
 use super::degenerate::Degenerate;
-use crate::algo::ear;
+use crate::algo::plain;
 use crate::geom::kernel::{cmp_angle, cross, Point};
 use crate::geom::polygon::Polygon;
 
@@ -85,7 +85,7 @@ pub fn triangulate_pieces(polygon: &Polygon, chosen: &[Degenerate]) -> Vec<[usiz
                 .map(|i| face[i])
                 .collect();
             let piece: Vec<Point> = keep.iter().map(|&i| polygon.point(i)).collect();
-            triangles.extend(ear::clip(&piece).into_iter().map(|t| t.map(|i| keep[i])));
+            triangles.extend(plain(&piece).into_iter().map(|t| t.map(|i| keep[i])));
         }
     }
     triangles

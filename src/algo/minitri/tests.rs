@@ -238,3 +238,42 @@ fn crossing_components_match_brute_force() {
         assert_eq!(got, expected, "{:?}", c.chords);
     }
 }
+
+#[test]
+fn expansion_finds_the_same_triangles_as_the_sweep() {
+    let mut seed = 0x7777_1234_abcd_0001u64;
+    let mut rnd = |n: i64| {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed % n as u64) as i64
+    };
+    let mut with_type_i = 0;
+    for _ in 0..3000 {
+        let mut ring: Vec<(i64, i64)> = vec![(0, 0), (8, 0), (4, 8)];
+        for _ in 0..rnd(30) {
+            let at = rnd(ring.len() as i64) as usize + 1;
+            let mut next = ring.clone();
+            next.insert(at, (rnd(9), rnd(9)));
+            if Polygon::from_raw(&crate::test_support::raw(&[&next])).is_ok() {
+                ring = next;
+            }
+        }
+        let p = polygon(&[&ring]);
+        let key = |m: &Degenerate| (m.a, m.b, m.c);
+        let mut fast: Vec<_> = minimally_degenerate(&p).iter().map(key).collect();
+        let mut slow: Vec<_> = super::degenerate::minimally_degenerate_by_sweep(&p)
+            .iter()
+            .map(key)
+            .collect();
+        fast.sort_unstable();
+        slow.sort_unstable();
+        assert_eq!(fast, slow, "{ring:?}");
+        with_type_i += usize::from(
+            minimally_degenerate(&p)
+                .iter()
+                .any(|m| m.kind == Kind::TypeI),
+        );
+    }
+    assert!(with_type_i > 300, "type (i) triangles occur: {with_type_i}");
+}

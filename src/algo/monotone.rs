@@ -1,0 +1,621 @@
+//! An O(n log n) plain triangulation of a simple polygon into exactly n - 2 nondegenerate
+//! triangles, by decomposition into monotone pieces (Lee & Preparata, "Location of a point in a
+//! planar subdivision and its applications", *SIAM J. Comput.* 6 (1977); Garey, Johnson,
+//! Preparata & Tarjan, "Triangulating a simple polygon", *Inform. Process. Lett.* 7 (1978); de
+//! Berg, Cheong, van Kreveld & Overmars, *Computational Geometry*, ch. 3; the lecture notes
+//! `papers/goldwasser-1991-lecture-triangulating-simple-polygons.txt` and
+//! `papers/toussaint-1993-lecture-triangulations.txt`).
+//!
+//! Input contract: one counter-clockwise simple polygon given as its cycle of points, at least 3,
+//! no two equal, no spike (an edge folding back onto its neighbour), flat vertices (three
+//! consecutive collinear vertices) and any other collinearity allowed; coordinates on the kernel's
+//! grid, so every cross product is exact in `i128`. This is what [`crate::Polygon`] guarantees for
+//! its outer ring.
+//! Output guarantee: exactly n - 2 counter-clockwise triangles of positive area, as indices into
+//! the cycle, with disjoint interiors, covering the polygon; every triangle side is a polygon edge
+//! or a proper diagonal (it touches the boundary only at its two end vertices). All decisions are
+//! exact orientation tests ([`cross`]) and coordinate comparisons; nothing is constructed.
+//!
+//! # Height order
+//!
+//! "Above" and "below" mean the lexicographic order of `(y, x)`. This is the order of the
+//! height `y + εx` for an infinitesimal `ε > 0`, a linear function, i.e. a sweep by a line turned
+//! infinitesimally clockwise; so the textbook theory for a generic sweep direction applies
+//! verbatim: no two vertices are at the same height, a horizontal edge simply rises to the east,
+//! and the two neighbours of a flat vertex are one above and one below it (opposite vectors have
+//! opposite lexicographic signs). "West" and "east" mean left and right of the upward direction:
+//! for a segment `lo -> hi` (`lo` below `hi`) and a point `v` strictly between them in height and
+//! not on the segment, `v` is west of it exactly when `cross(lo, hi, v) > 0` (if `q` is the
+//! segment's point at `v`'s height, `v - q = t(-1, ε)` with `t > 0` for `v` west, and
+//! `cross(hi - lo, v - q) = t ((hi - lo).y + ε (hi - lo).x) > 0` since `hi` is above `lo`; the
+//! sign is never 0, because a point on the segment's line at a height strictly inside its span
+//! lies on the segment).
+//!
+//! # Vertex classification
+//!
+//! For a vertex `v` with boundary neighbours `p` (previous) and `n` (next); the interior is on
+//! the left of `p -> v -> n`, so `cross(p, v, n) > 0` means convex:
+//!
+//! | `p`   | `n`   | `cross(p, v, n)` | kind                                                |
+//! |-------|-------|------------------|-----------------------------------------------------|
+//! | above | above | `> 0`            | start                                               |
+//! | above | above | `< 0`            | split (the exterior wedge is above `v`)             |
+//! | below | below | `> 0`            | end                                                 |
+//! | below | below | `< 0`            | merge (the exterior wedge is below `v`)             |
+//! | above | below | any              | downward: regular, interior east (on a west chain)  |
+//! | below | above | any              | upward: regular, interior west (on an east chain)   |
+//!
+//! `cross == 0` with both neighbours on one side is a spike, excluded by the contract; a flat
+//! vertex is always regular. Since the polygon is counter-clockwise, an edge running downward has
+//! the interior on its east, one running upward on its west.
+//!
+//! # The sweep (monotone decomposition)
+//!
+//! Vertices are processed upward (the textbook sweeps downward; this is its mirror image). The
+//! status holds the edges with the interior on their east that the sweep line cuts, i.e. the
+//! downward edges `e = i -> i+1` with `lo = pts[i+1]` already passed and `hi = pts[i]` not yet,
+//! ordered west to east; each has a helper, the highest vertex passed so far that sees `e`
+//! horizontally to its west. Edge `e` is named by its first vertex `i`; `e_v` is the downward edge
+//! `v -> next(v)` ending at `v`, `e_p` the downward edge `prev(v) -> v` starting at `v`;
+//! "replace helper(e) by `v`" means: if `helper(e)` is a merge vertex, add the diagonal
+//! `v helper(e)`; then helper(e) = `v`. "finish `e`" means: replace helper(e) by `v`, remove `e`.
+//! "The edge west of `v`" is the status edge immediately west of `v`.
+//!
+//! | kind     | action                                                                   |
+//! |----------|--------------------------------------------------------------------------|
+//! | start    | insert `e_p` with helper `v`                                             |
+//! | end      | finish `e_v`                                                             |
+//! | split    | `e` = edge west of `v`; diagonal `v helper(e)`; helper(e) = `v`;         |
+//! |          | insert `e_p` with helper `v`                                             |
+//! | merge    | finish `e_v`; `e` = edge west of `v`; replace helper(e) by `v`           |
+//! | downward | finish `e_v`; insert `e_p` with helper `v`                               |
+//! | upward   | `e` = edge west of `v`; replace helper(e) by `v`                         |
+//!
+//! The status is a `BTreeSet` of [`Cut`]s compared by exact orientation tests only (as
+//! `geom::validate`'s `Cut`, turned to the `(y, x)` order). Two facts make that comparison exact
+//! and consistent: (1) status edges are pairwise disjoint closed segments (two downward edges meet
+//! only at a "downward" regular vertex, where one is removed before the other is inserted) and no
+//! status edge touches the vertex being processed when the status is searched or changed (edges
+//! ending at `v` are removed first; the searches happen when no status edge is incident to `v`);
+//! (2) of two edges cut by the sweep line at once, the later-starting one's lower end lies at a
+//! height strictly inside the other's span, so the sign of one [`cross`] against the other edge
+//! says which is west, and is never 0. The edge west of `v` is the greatest cut below a probe at
+//! `v`, compared the same way.
+//!
+//! Every diagonal is proper, by de Berg et al.'s Lemma 3.5: when `v` gets the diagonal to
+//! `h = helper(e)`, the quadrilateral between `e`, the edge east of `v` and the sweep lines
+//! through `h` and `v` has no vertex in its interior (such a vertex would have become the helper)
+//! nor on its sides other than `h` and `v` (heights are distinct; polygon edges contain no
+//! vertices), and `h`, `v` lie on its bottom and top sides; a merge helper is never an end of `e`
+//! (it gets `e` as the edge west of it), so the open diagonal misses every vertex and edge. Each
+//! split vertex gets a diagonal downward, each merge vertex one upward, so the pieces have no
+//! split or merge vertex, hence are monotone in the height order (de Berg et al., Lemma 3.4 and
+//! Theorem 3.6). No diagonal repeats or is an edge: each is added at the event of its upper end,
+//! to a helper below; a split helper gets none; a merge vertex helps one edge at a time and both
+//! its neighbours are below it, so they are processed before it and cannot be the upper end.
+//!
+//! # Splitting into pieces
+//!
+//! The polygon edges and diagonals form a plane graph. Around each vertex the neighbours are
+//! sorted counter-clockwise starting from the next boundary vertex (all lie in the closed interior
+//! angle, which is then swept up to the previous boundary vertex; the sort is exact: half-plane,
+//! then [`cross`]). Each piece is then the cycle of half-edges with the piece on their left: after
+//! `u -> w` comes `w -> x`, `x` the neighbour of `w` just before `u` counter-clockwise. Each
+//! piece comes out counter-clockwise.
+//!
+//! # Monotone pieces, with flat vertices
+//!
+//! Each piece (m vertices, `u_1 > ... > u_m` in height) is triangulated by the stack algorithm
+//! (Garey et al.; de Berg et al., Section 3.3), emitting triangles instead of diagonals, with one
+//! change: a candidate triangle at the top of the stack is cut off only if it is strictly convex
+//! (`cross > 0`); when it is collinear (`cross == 0`) the new vertex waits on the stack exactly as
+//! in the reflex case. Proof that it still ends with exactly m - 2 triangles, all positive:
+//!
+//! Invariant before `u_j` (3 <= j <= m): the untriangulated part is the polygon `Q` bounded by the
+//! stack `s_0, ..., s_k` (k >= 1, `s_k = u_(j-1)`, `s_1..s_k` consecutive on one chain, `s_0`
+//! the top or on the other chain, adjacent to `s_1` in `Q`) and `u_j, ..., u_m` along the chains;
+//! every `s_i`, `0 < i < k`, is reflex or flat in `Q`. Being monotone and turning weakly one way
+//! (the exterior way), the stack chain is convex: it lies in the closed exterior half-plane of the
+//! line through any of its edges.
+//!
+//! Fan step (`u = u_j` on the other chain than `s_k`, or `u = u_m`): `u` lies strictly on the
+//! interior side of every stack edge. Otherwise, for the edge `s_i s_(i+1)`, all of `s_0..s_k` and
+//! `u` lie in the closed exterior half-plane; the part of `Q` at or above `u`'s height is a polygon
+//! with those vertices plus at most one point `X` at `u`'s height on the edge leaving `s_k`
+//! downward; so its part strictly on the interior side is bounded by the line and the two sides
+//! at `X`, at heights below `s_k`, and `Q` would have no interior next to `s_i s_(i+1)`, which it
+//! has. So each fan triangle `(u, s_i, s_(i+1))` is positive; the rays from `u` to `s_0..s_k` all
+//! point upward and turn one way, so the triangles have disjoint interiors and form the polygon
+//! `s_0..s_k u`, which contains no other vertex (all others are below `u`) and which no edge
+//! enters; `u s_k` is a proper diagonal and the rest is `s_k, u` plus the unprocessed vertices,
+//! i.e. the invariant with k = 1.
+//!
+//! Same-chain step: while `cross > 0` at `s_k` towards `u_j`, the triangle `s_(k-1) s_k u_j` is
+//! positive, lies on the interior side of the line `s_(k-1) s_k` (where no other stack vertex is),
+//! above `u_j`'s height (where no unprocessed vertex is), and the other chain's edge below `s_0`
+//! cannot cross its third side without an end inside it; so it is cut off along a proper
+//! diagonal and `s_k` popped. When `cross <= 0`, `u_j` is pushed and the old top is reflex or flat:
+//! the invariant holds, and no zero-area triangle is emitted.
+//!
+//! Count: each emitted triangle removes exactly one vertex from `Q` (a same-chain triangle `s_k`;
+//! a fan of k triangles `s_0..s_(k-1)`; the final fan of k triangles all k + 2 vertices left), so
+//! there are exactly m - 2, all positive. Over all pieces (D diagonals, D + 1 pieces, vertex
+//! counts summing to n + 2D) that is n - 2. In particular a positive triangulation of a monotone
+//! polygon with flat vertices always exists.
+//!
+//! # Complexity and departures
+//!
+//! O(n log n) time (the sort by height, O(log n) per status operation, the angular sort of the
+//! neighbours of each vertex), O(n) memory (status, helpers, at most one diagonal per split or
+//! merge vertex, the adjacency of the plane graph, one stack). Departures from the textbook: the
+//! sweep runs upward in the `(y, x)` order instead of downward with ties broken by x, which removes
+//! every special case for horizontal edges and equal heights; the status comparator is the
+//! orientation test above instead of computed intersections; pieces are found by face walking over
+//! sorted adjacency lists instead of a DCEL; the stack algorithm emits triangles and waits on
+//! collinear triples as on reflex ones.
+
+use crate::geom::kernel::{cross, dot, Point};
+use std::cmp::Ordering;
+use std::collections::BTreeSet;
+
+/// Triangulates one counter-clockwise simple polygon given as its cycle of points (flat vertices
+/// allowed, no two points equal): exactly `len - 2` counter-clockwise triangles of positive area,
+/// as indices into `pts`. See the module documentation for the contract and the method.
+// Not yet called outside the tests: the callers (ear for large inputs, MINITRI's pieces) are
+// wired in separately.
+pub(crate) fn triangulate_cycle(pts: &[Point]) -> Vec<[usize; 3]> {
+    let n = pts.len();
+    if n < 3 {
+        return Vec::new();
+    }
+    let mut triangles = Vec::with_capacity(n - 2);
+    let mut work = Work::default();
+    let diagonals = Sweep::run(pts);
+    if diagonals.is_empty() {
+        let cycle: Vec<usize> = (0..n).collect();
+        triangulate_monotone(pts, &cycle, &mut work, &mut triangles);
+    } else {
+        let (vertices, starts) = pieces(pts, &diagonals);
+        for w in starts.windows(2) {
+            triangulate_monotone(pts, &vertices[w[0]..w[1]], &mut work, &mut triangles);
+        }
+    }
+    assert_eq!(
+        triangles.len(),
+        n - 2,
+        "monotone triangulation: wrong triangle count, invariant broken"
+    );
+    triangles
+}
+
+/// The sweep key of a point: lexicographic `(y, x)`, the height order of the module
+/// documentation.
+#[inline]
+fn height(p: Point) -> (i64, i64) {
+    (p.y, p.x)
+}
+
+/// The kind of a vertex in the sweep (see the classification table of the module documentation).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Kind {
+    /// Both neighbours above, convex.
+    Start,
+    /// Both neighbours above, reflex.
+    Split,
+    /// Both neighbours below, convex.
+    End,
+    /// Both neighbours below, reflex.
+    Merge,
+    /// Regular; the boundary runs downward through it (interior east).
+    Downward,
+    /// Regular; the boundary runs upward through it (interior west).
+    Upward,
+}
+
+impl Kind {
+    /// The kind of vertex `v` with previous neighbour `p` and next neighbour `n`.
+    fn of(p: Point, v: Point, n: Point) -> Kind {
+        let hv = height(v);
+        let convex = cross(p, v, n) > 0; // never 0 at a local extremum: that would be a spike
+        match (height(p) > hv, height(n) > hv) {
+            (true, true) if convex => Kind::Start,
+            (true, true) => Kind::Split,
+            (false, false) if convex => Kind::End,
+            (false, false) => Kind::Merge,
+            (true, false) => Kind::Downward,
+            (false, true) => Kind::Upward,
+        }
+    }
+}
+
+/// An edge in the sweep status, or a probe for a point (`lo == hi`, `edge == PROBE`): `lo` below
+/// `hi` in the height order; `edge` is the index of the edge's first vertex along the cycle.
+#[derive(Clone, Copy, Debug)]
+struct Cut {
+    lo: Point,
+    hi: Point,
+    edge: usize,
+}
+
+/// The `edge` of a probe.
+const PROBE: usize = usize::MAX;
+
+impl Cut {
+    /// The cut of edge `edge` from `a` to `b`.
+    fn new(a: Point, b: Point, edge: usize) -> Cut {
+        if height(a) < height(b) {
+            Cut { lo: a, hi: b, edge }
+        } else {
+            Cut { lo: b, hi: a, edge }
+        }
+    }
+
+    /// A probe at `v`.
+    fn probe(v: Point) -> Cut {
+        Cut {
+            lo: v,
+            hi: v,
+            edge: PROBE,
+        }
+    }
+}
+
+impl PartialEq for Cut {
+    fn eq(&self, other: &Self) -> bool {
+        self.cmp(other) == Ordering::Equal
+    }
+}
+impl Eq for Cut {}
+impl PartialOrd for Cut {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+impl Ord for Cut {
+    /// West (`Less`) to east at the current sweep position, for disjoint edges both cut by the
+    /// sweep line, or an edge and a probe at a point strictly inside its height span and not on it
+    /// (the only pairs a set ever compares, see the module documentation): test the later-starting
+    /// one's lower end against the earlier-starting edge.
+    fn cmp(&self, other: &Self) -> Ordering {
+        if self.edge == other.edge {
+            return Ordering::Equal;
+        }
+        let (first, second, flipped) = if height(self.lo) <= height(other.lo) {
+            (self, other, false)
+        } else {
+            (other, self, true)
+        };
+        // `second.lo` west of `first` (cross > 0) means `first` is Greater.
+        let first_vs_second = match cross(first.lo, first.hi, second.lo).cmp(&0) {
+            Ordering::Greater => Ordering::Greater,
+            Ordering::Less => Ordering::Less,
+            Ordering::Equal => first.edge.cmp(&second.edge), // only for invalid input
+        };
+        if flipped {
+            first_vs_second.reverse()
+        } else {
+            first_vs_second
+        }
+    }
+}
+
+/// The state of the monotone-decomposition sweep.
+struct Sweep<'a> {
+    pts: &'a [Point],
+    kind: Vec<Kind>,
+    status: BTreeSet<Cut>,
+    /// `helper[e]` for every edge `e` in the status.
+    helper: Vec<usize>,
+    diagonals: Vec<[usize; 2]>,
+}
+
+impl<'a> Sweep<'a> {
+    /// The diagonals splitting the polygon into monotone pieces (proper, pairwise
+    /// non-crossing, none repeated).
+    fn run(pts: &'a [Point]) -> Vec<[usize; 2]> {
+        let n = pts.len();
+        let kind = (0..n)
+            .map(|v| Kind::of(pts[(v + n - 1) % n], pts[v], pts[(v + 1) % n]))
+            .collect();
+        let mut sweep = Sweep {
+            pts,
+            kind,
+            status: BTreeSet::new(),
+            helper: vec![usize::MAX; n],
+            diagonals: Vec::new(),
+        };
+        let mut order: Vec<usize> = (0..n).collect();
+        order.sort_unstable_by_key(|&v| height(pts[v]));
+        for v in order {
+            sweep.event(v);
+        }
+        debug_assert!(sweep.status.is_empty(), "edges left in the sweep status");
+        sweep.diagonals
+    }
+
+    fn next(&self, i: usize) -> usize {
+        if i + 1 == self.pts.len() {
+            0
+        } else {
+            i + 1
+        }
+    }
+
+    fn prev(&self, i: usize) -> usize {
+        if i == 0 {
+            self.pts.len() - 1
+        } else {
+            i - 1
+        }
+    }
+
+    fn cut(&self, e: usize) -> Cut {
+        Cut::new(self.pts[e], self.pts[self.next(e)], e)
+    }
+
+    /// Processes vertex `v` (see the action table of the module documentation).
+    fn event(&mut self, v: usize) {
+        let p = self.prev(v);
+        match self.kind[v] {
+            Kind::Start => self.insert(p, v),
+            Kind::End => self.finish(v, v),
+            Kind::Split => {
+                let e = self.west_of(v);
+                self.diagonals.push([v, self.helper[e]]);
+                self.helper[e] = v;
+                self.insert(p, v);
+            }
+            Kind::Merge => {
+                self.finish(v, v);
+                let e = self.west_of(v);
+                self.replace_helper(e, v);
+            }
+            Kind::Downward => {
+                self.finish(v, v);
+                self.insert(p, v);
+            }
+            Kind::Upward => {
+                let e = self.west_of(v);
+                self.replace_helper(e, v);
+            }
+        }
+    }
+
+    /// Inserts edge `e` with helper `v`.
+    fn insert(&mut self, e: usize, v: usize) {
+        self.helper[e] = v;
+        let inserted = self.status.insert(self.cut(e));
+        debug_assert!(inserted, "edge inserted twice into the sweep status");
+    }
+
+    /// Removes edge `e`, which ends at `v`, adding the diagonal to its helper if that is a merge
+    /// vertex.
+    fn finish(&mut self, e: usize, v: usize) {
+        self.replace_helper(e, v);
+        let removed = self.status.remove(&self.cut(e));
+        assert!(
+            removed,
+            "edge missing from the sweep status: invariant broken"
+        );
+    }
+
+    /// Makes `v` the helper of `e`, adding the diagonal to the old helper if it is a merge vertex.
+    fn replace_helper(&mut self, e: usize, v: usize) {
+        let h = self.helper[e];
+        if self.kind[h] == Kind::Merge {
+            self.diagonals.push([v, h]);
+        }
+        self.helper[e] = v;
+    }
+
+    /// The status edge immediately west of vertex `v`, which exists whenever the interior lies
+    /// west of `v` (split, merge and upward vertices).
+    fn west_of(&self, v: usize) -> usize {
+        self.status
+            .range(..Cut::probe(self.pts[v]))
+            .next_back()
+            .expect("no edge west of a split, merge or upward vertex: invariant broken")
+            .edge
+    }
+}
+
+/// The pieces cut out of the polygon by `diagonals` (proper, pairwise non-crossing): all their
+/// vertex cycles, counter-clockwise, concatenated, and the start of each (plus the end).
+fn pieces(pts: &[Point], diagonals: &[[usize; 2]]) -> (Vec<usize>, Vec<usize>) {
+    let n = pts.len();
+    let next = |i: usize| if i + 1 == n { 0 } else { i + 1 };
+    let prev = |i: usize| if i == 0 { n - 1 } else { i - 1 };
+    // Adjacency lists: `start[v]..start[v + 1]` holds next(v), the diagonal ends sorted
+    // counter-clockwise, prev(v). A slot is also the half-edge from `v` to the neighbour there.
+    let mut start = vec![0usize; n + 1];
+    for v in 0..n {
+        start[v + 1] = 2;
+    }
+    for &[a, b] in diagonals {
+        start[a + 1] += 1;
+        start[b + 1] += 1;
+    }
+    for v in 0..n {
+        start[v + 1] += start[v];
+    }
+    let slots = start[n];
+    let mut to = vec![0usize; slots];
+    // `label`: for a diagonal slot, 2 d + (0 from a, 1 from b); to find twins after sorting.
+    let mut fill: Vec<usize> = start[..n].iter().map(|s| s + 1).collect();
+    let mut middle: Vec<(usize, usize)> = vec![(0, 0); slots];
+    for (d, &[a, b]) in diagonals.iter().enumerate() {
+        middle[fill[a]] = (b, 2 * d);
+        fill[a] += 1;
+        middle[fill[b]] = (a, 2 * d + 1);
+        fill[b] += 1;
+    }
+    let mut slot_of_label = vec![0usize; 2 * diagonals.len()];
+    for v in 0..n {
+        let (lo, hi) = (start[v], start[v + 1]);
+        to[lo] = next(v);
+        to[hi - 1] = prev(v);
+        let w = pts[v];
+        let reference = pts[next(v)];
+        let part = &mut middle[lo + 1..hi - 1];
+        if part.len() > 1 {
+            part.sort_unstable_by(|&(a, _), &(b, _)| around(w, reference, pts[a], pts[b]));
+        }
+        for (k, &(x, label)) in part.iter().enumerate() {
+            to[lo + 1 + k] = x;
+            slot_of_label[label] = lo + 1 + k;
+        }
+    }
+    drop(middle);
+    let mut twin = vec![0usize; slots];
+    for v in 0..n {
+        twin[start[v]] = start[next(v) + 1] - 1; // v -> next(v) against next(v) -> v (its last)
+        twin[start[v + 1] - 1] = start[prev(v)]; // v -> prev(v) against prev(v) -> v (its first)
+    }
+    for pair in slot_of_label.chunks_exact(2) {
+        twin[pair[0]] = pair[1];
+        twin[pair[1]] = pair[0];
+    }
+    // Walk every interior half-edge (all but the last slot of each vertex, v -> prev(v)).
+    let mut used = vec![false; slots];
+    let mut vertices = Vec::with_capacity(n + 2 * diagonals.len());
+    let mut starts = vec![0];
+    for v in 0..n {
+        for first in start[v]..start[v + 1] - 1 {
+            if used[first] {
+                continue;
+            }
+            let (mut h, mut w) = (first, v);
+            loop {
+                assert!(!used[h], "half-edge on two pieces: invariant broken");
+                used[h] = true;
+                vertices.push(w);
+                // At x = to[h], the twin is x -> w; the next half-edge is the slot before it.
+                w = to[h];
+                h = twin[h] - 1;
+                if h == first {
+                    break;
+                }
+            }
+            starts.push(vertices.len());
+        }
+    }
+    (vertices, starts)
+}
+
+/// Counter-clockwise order of the directions from `w` to `a` and to `b`, measured from the
+/// direction of `reference` (exact: the half-plane first, then the turn). Directions must differ.
+fn around(w: Point, reference: Point, a: Point, b: Point) -> Ordering {
+    let half = |q: Point| {
+        let c = cross(w, reference, q);
+        usize::from(!(c > 0 || (c == 0 && dot(w, reference, q) > 0)))
+    };
+    half(a).cmp(&half(b)).then_with(|| 0.cmp(&cross(w, a, b)))
+}
+
+/// The chain a vertex of a monotone piece lies on, seen from above.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Chain {
+    /// The chain from the top down to the bottom along the cycle (interior east).
+    West,
+    /// The chain from the bottom up to the top along the cycle (interior west).
+    East,
+}
+
+/// Scratch space reused across pieces.
+#[derive(Default)]
+struct Work {
+    sorted: Vec<(usize, Chain)>,
+    stack: Vec<(usize, Chain)>,
+}
+
+/// Triangulates a monotone piece (a counter-clockwise cycle of indices into `pts`, monotone in
+/// the height order, flat vertices allowed) into `cycle.len() - 2` positive triangles, appended to
+/// `out` (the stack algorithm; see the module documentation for the proof).
+fn triangulate_monotone(
+    pts: &[Point],
+    cycle: &[usize],
+    work: &mut Work,
+    out: &mut Vec<[usize; 3]>,
+) {
+    let m = cycle.len();
+    let h = |k: usize| height(pts[cycle[k]]);
+    let (mut top, mut bottom) = (0, 0);
+    for k in 1..m {
+        if h(k) > h(top) {
+            top = k;
+        }
+        if h(k) < h(bottom) {
+            bottom = k;
+        }
+    }
+    // Merge the two chains, both descending from the top, into one descending order.
+    let sorted = &mut work.sorted;
+    sorted.clear();
+    sorted.push((cycle[top], Chain::West)); // the top's chain is never consulted
+    let (mut west, mut east) = ((top + 1) % m, (top + m - 1) % m);
+    while west != bottom || east != bottom {
+        let take_west = east == bottom || (west != bottom && h(west) > h(east));
+        if take_west {
+            sorted.push((cycle[west], Chain::West));
+            let step = (west + 1) % m;
+            assert!(h(step) < h(west), "piece not monotone: invariant broken");
+            west = step;
+        } else {
+            sorted.push((cycle[east], Chain::East));
+            let step = (east + m - 1) % m;
+            assert!(h(step) < h(east), "piece not monotone: invariant broken");
+            east = step;
+        }
+    }
+    sorted.push((cycle[bottom], Chain::West)); // the bottom's chain is never consulted
+    let stack = &mut work.stack;
+    stack.clear();
+    stack.extend_from_slice(&sorted[..2]);
+    for &(u, chain) in &sorted[2..m - 1] {
+        let top_chain = stack[stack.len() - 1].1;
+        if chain != top_chain {
+            fan(pts, stack, u, top_chain, out);
+            let last = stack[stack.len() - 1];
+            stack.clear();
+            stack.push(last);
+        } else {
+            while stack.len() >= 2 {
+                let (s, r) = (stack[stack.len() - 1].0, stack[stack.len() - 2].0);
+                let t = match chain {
+                    Chain::West => [r, s, u],
+                    Chain::East => [u, s, r],
+                };
+                // Strictly convex only: a collinear triple waits like a reflex one.
+                if cross(pts[t[0]], pts[t[1]], pts[t[2]]) > 0 {
+                    out.push(t);
+                    stack.pop();
+                } else {
+                    break;
+                }
+            }
+        }
+        stack.push((u, chain));
+    }
+    let top_chain = stack[stack.len() - 1].1;
+    fan(pts, stack, sorted[m - 1].0, top_chain, out);
+}
+
+/// The fan from `u` (below the whole stack, on the other chain or the bottom) over the stack
+/// chain, whose vertices `s_1..` lie on `chain`.
+fn fan(pts: &[Point], stack: &[(usize, Chain)], u: usize, chain: Chain, out: &mut Vec<[usize; 3]>) {
+    for w in stack.windows(2) {
+        let (a, b) = (w[0].0, w[1].0);
+        let t = match chain {
+            Chain::West => [a, b, u],
+            Chain::East => [u, b, a],
+        };
+        debug_assert!(
+            cross(pts[t[0]], pts[t[1]], pts[t[2]]) > 0,
+            "fan triangle not positive: invariant broken"
+        );
+        out.push(t);
+    }
+}
+
+#[cfg(test)]
+mod tests;
