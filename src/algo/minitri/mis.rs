@@ -17,9 +17,18 @@
 //! `MIS(i, j) = max(MIS(i, j - 1), max over S of |S| + sum of MIS(gap))`, which is exact
 //! (Theorem 6), with 3b-chains of any length.
 //!
-//! Complexity (this version): O(P^2) table entries for P = 2K endpoints, each trying the O(L^2)
-//! contiguous pieces of a chain of length L: O(K^2 L^3) time and O(K^2) memory. It is the
-//! reference implementation; an O(K)-memory method is still to come.
+//! Computation: the paper fills the table `MIS(i, j)` (O(K^2) memory). Here the circle is first
+//! split into the connected components of its crossing graph (dependent chords cross, so the
+//! components are independent problems; a lone chord is always taken), and each component is
+//! solved by weighted interval scheduling over "units" (a chord, or a contiguous piece of a
+//! 3b-chain) taken in order of span, in the manner of G. Valiente, "A new simple algorithm for
+//! the maximum-weight independent set problem on circle graphs", ISAAC 2003: each unit's value
+//! needs only the best sets in the gaps inside it, found by one scan each.
+//!
+//! Complexity: O(K alpha(K)) for the components; then the sum over units of their spans (in
+//! endpoint positions of their component): O(K L) units for chains of length at most L, each span
+//! at most the component's size, so O(K^2 L) in the worst case, near-linear when chords are
+//! local; O(K L) memory.
 
 use super::circle::Circle;
 use super::degenerate::Degenerate;
@@ -189,7 +198,15 @@ struct Sub<'a> {
     local: &'a [u32],
 }
 
-type Choice = (Vec<usize>, Vec<(usize, usize)>);
+/// A candidate for the top level of some range: one chord, or a contiguous piece of a 3b-chain
+/// (whose chords cross one after the other), spanning local positions `lo..=hi`.
+struct Unit {
+    chords: Vec<usize>,
+    lo: usize,
+    hi: usize,
+    /// Its chords plus the best inside each gap between their endpoints.
+    value: u32,
+}
 
 impl Sub<'_> {
     fn chord(&self, t: usize) -> (usize, usize) {
@@ -197,94 +214,96 @@ impl Sub<'_> {
         (self.local[l] as usize, self.local[r] as usize)
     }
 
-    /// The recurrence over this component's endpoints `0..p`, then the recovered set.
+    /// The gaps between consecutive endpoints of a unit's chords (inside its span).
+    fn gaps(&self, chords: &[usize]) -> Vec<(usize, usize)> {
+        let mut ends: Vec<usize> = chords.iter().flat_map(|&t| <[usize; 2]>::from(self.chord(t))).collect();
+        ends.sort_unstable();
+        ends.windows(2).filter(|w| w[1] > w[0] + 1).map(|w| (w[0] + 1, w[1] - 1)).collect()
+    }
+
+    /// A maximum independent set of this component.
+    ///
+    /// Any independent set splits into groups connected by crossings; each group is a unit (a
+    /// lone chord, or a contiguous piece of a 3b-chain, the only independent chords that cross),
+    /// the spans of two groups are nested or disjoint (a chord reaching from a gap of a group to
+    /// outside that gap would cross the group), and a group nested in another lies in one of its
+    /// gaps. So the best set in a range is a heaviest set of units with disjoint spans in it
+    /// (weighted interval scheduling, one scan), where a unit weighs its chords plus the best in
+    /// each of its gaps: ranges strictly inside it, already known when units are taken in order
+    /// of span. Time: the sum of the units' spans; memory: linear in the units.
     fn solve(&self) -> Vec<usize> {
         let p = self.positions.len();
-        let mut table = vec![0u32; p * p];
-        for j in 0..p {
-            for i in (0..=j).rev() {
-                let skip = if j > i { table[i * p + j - 1] } else { 0 };
-                let best = self
-                    .options(&table, i, j)
-                    .into_iter()
-                    .map(|(v, _)| v)
-                    .fold(skip, u32::max);
-                table[i * p + j] = best;
+        let mut units: Vec<Unit> = Vec::new();
+        let mut seen_chain = std::collections::HashSet::new();
+        for &g in self.positions {
+            let t = self.circle.owner[g];
+            let (chain, _) = self.chains.place[t];
+            if !seen_chain.insert(chain) {
+                continue;
+            }
+            let path = &self.chains.paths[chain];
+            for s in 0..path.len() {
+                for e in s..path.len() {
+                    let chords = path[s..=e].to_vec();
+                    let lo = chords.iter().map(|&c| self.chord(c).0).min().unwrap_or(0);
+                    let hi = chords.iter().map(|&c| self.chord(c).1).max().unwrap_or(0);
+                    units.push(Unit { chords, lo, hi, value: 0 });
+                }
             }
         }
+        units.sort_by_key(|u| u.hi - u.lo);
+        let mut ending: Vec<Vec<usize>> = vec![Vec::new(); p];
+        let mut scratch = Vec::new();
+        for k in 0..units.len() {
+            let gaps = self.gaps(&units[k].chords);
+            let inside: u32 = gaps.iter().map(|&(a, b)| best_in(&units, &ending, a, b, &mut scratch).0).sum();
+            units[k].value = units[k].chords.len() as u32 + inside;
+            ending[units[k].hi].push(k);
+        }
         let mut chosen = Vec::new();
-        let mut stack = vec![(0usize, p - 1)];
-        while let Some((i, j)) = stack.pop() {
-            let value = table[i * p + j];
-            if value == 0 {
-                continue;
+        let mut ranges = vec![(0, p - 1)];
+        while let Some((a, b)) = ranges.pop() {
+            let (_, picked) = best_in(&units, &ending, a, b, &mut scratch);
+            for k in picked {
+                chosen.extend(&units[k].chords);
+                ranges.extend(self.gaps(&units[k].chords));
             }
-            if j > i && value == table[i * p + j - 1] {
-                stack.push((i, j - 1));
-                continue;
-            }
-            let (_, (piece, gaps)) = self
-                .options(&table, i, j)
-                .into_iter()
-                .find(|(v, _)| *v == value)
-                .expect("the table value comes from some option");
-            chosen.extend(piece);
-            stack.extend(gaps);
         }
         chosen
     }
+}
 
-    /// Every way to use the chord ending at local position `j` within `i..=j`: its value and
-    /// (piece of its 3b-chain, gaps left between the piece's endpoints).
-    fn options(&self, table: &[u32], i: usize, j: usize) -> Vec<(u32, Choice)> {
-        let p = self.positions.len();
-        let t = self.circle.owner[self.positions[j]];
-        let (k, _) = self.chord(t);
-        if k < i || k == j {
-            return Vec::new();
-        }
-        let (chain, at) = self.chains.place[t];
-        let path = &self.chains.paths[chain];
-        let inside = |s: usize| {
-            let (l, r) = self.chord(s);
-            l >= i && r <= j
-        };
-        let mut first = at;
-        while first > 0 && inside(path[first - 1]) {
-            first -= 1;
-        }
-        let mut last = at;
-        while last + 1 < path.len() && inside(path[last + 1]) {
-            last += 1;
-        }
-        let mut out = Vec::new();
-        for s in first..=at {
-            for e in at..=last {
-                let piece: Vec<usize> = path[s..=e].to_vec();
-                let mut ends: Vec<usize> = piece
-                    .iter()
-                    .flat_map(|&x| {
-                        let (l, r) = self.chord(x);
-                        [l, r]
-                    })
-                    .collect();
-                ends.sort_unstable();
-                let mut gaps = Vec::new();
-                let mut from = i;
-                for &x in &ends {
-                    if x > from {
-                        gaps.push((from, x - 1));
-                    }
-                    from = x + 1;
-                }
-                if from <= j {
-                    gaps.push((from, j));
-                }
-                let value =
-                    piece.len() as u32 + gaps.iter().map(|&(a, b)| table[a * p + b]).sum::<u32>();
-                out.push((value, (piece, gaps)));
+/// Weighted interval scheduling over the units lying within `a..=b`: the best total value and
+/// the units achieving it.
+fn best_in(units: &[Unit], ending: &[Vec<usize>], a: usize, b: usize, best: &mut Vec<(u32, usize)>) -> (u32, Vec<usize>) {
+    const NONE: usize = usize::MAX;
+    best.clear();
+    // best[x - a] = (value of the best set within a..=x, the unit ending at x in it, or NONE)
+    for x in a..=b {
+        let mut here = if x > a { (best[x - a - 1].0, NONE) } else { (0, NONE) };
+        for &k in &ending[x] {
+            let u = &units[k];
+            if u.lo < a {
+                continue;
+            }
+            let before = if u.lo > a { best[u.lo - a - 1].0 } else { 0 };
+            if before + u.value > here.0 {
+                here = (before + u.value, k);
             }
         }
-        out
+        best.push(here);
     }
+    let total = best.last().map_or(0, |b| b.0);
+    let mut picked = Vec::new();
+    let mut x = b as isize;
+    while x >= a as isize {
+        let (_, k) = best[x as usize - a];
+        if k == NONE {
+            x -= 1;
+        } else {
+            picked.push(k);
+            x = units[k].lo as isize - 1;
+        }
+    }
+    (total, picked)
 }
