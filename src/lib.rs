@@ -5,6 +5,24 @@
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
+/// Implements `PartialEq`, `Eq` and `PartialOrd` from a type's hand-written `Ord::cmp`, for the
+/// sweep-status keys whose order is geometric (`chords`, `validate`, `monotone`).
+macro_rules! order_from_cmp {
+    ($t:ty) => {
+        impl PartialEq for $t {
+            fn eq(&self, other: &Self) -> bool {
+                self.cmp(other) == std::cmp::Ordering::Equal
+            }
+        }
+        impl Eq for $t {}
+        impl PartialOrd for $t {
+            fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
+                Some(self.cmp(other))
+            }
+        }
+    };
+}
+
 pub mod algo;
 pub mod geom;
 pub mod io;

@@ -99,17 +99,8 @@ struct Cut {
     edge: usize,
 }
 
-impl PartialEq for Cut {
-    fn eq(&self, other: &Self) -> bool {
-        self.edge == other.edge
-    }
-}
-impl Eq for Cut {}
-impl PartialOrd for Cut {
-    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
-        Some(self.cmp(other))
-    }
-}
+order_from_cmp!(Cut);
+
 impl Ord for Cut {
     /// Nearer to `v` along the common ray is Less. `f` lies wholly on `v`'s side of `e`'s line:
     /// `f` is nearer; wholly beyond: farther; otherwise `f` straddles `e`'s line, so (as edges do

@@ -260,17 +260,8 @@ impl Cut {
     }
 }
 
-impl PartialEq for Cut {
-    fn eq(&self, other: &Self) -> bool {
-        self.cmp(other) == Ordering::Equal
-    }
-}
-impl Eq for Cut {}
-impl PartialOrd for Cut {
-    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
-        Some(self.cmp(other))
-    }
-}
+order_from_cmp!(Cut);
+
 impl Ord for Cut {
     /// West (`Less`) to east at the current sweep position, for disjoint edges both cut by the
     /// sweep line, or an edge and a probe at a point strictly inside its height span and not on it

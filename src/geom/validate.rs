@@ -222,17 +222,8 @@ impl Cut {
     }
 }
 
-impl PartialEq for Cut {
-    fn eq(&self, other: &Self) -> bool {
-        self.cmp(other) == Ordering::Equal
-    }
-}
-impl Eq for Cut {}
-impl PartialOrd for Cut {
-    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
-        Some(self.cmp(other))
-    }
-}
+order_from_cmp!(Cut);
+
 impl Ord for Cut {
     /// Below/above at the current sweep position, for edges cut by the sweep line at the same
     /// time (the only ones a set ever compares): test the later-starting edge's start (or, if it

@@ -107,6 +107,17 @@ impl Degenerate {
     }
 }
 
+/// Whether `b` is reflex (to be searched); a flat `b` adds its one triangle to `out` instead, and
+/// a convex `b` is the middle of nothing (no two opposite directions fit in its angle).
+fn reflex_or_flat(polygon: &Polygon, b: usize, out: &mut Vec<Degenerate>) -> bool {
+    let (p, q) = (polygon.prev(b), polygon.next(b));
+    let turn = cross(polygon.point(p), polygon.point(b), polygon.point(q));
+    if turn == 0 {
+        out.push(Degenerate::new(polygon, p, b, q));
+    }
+    turn < 0
+}
+
 /// All minimally degenerate triangles of a polygon without holes, by triangular expansion from
 /// each reflex vertex inside its double cone ([`super::expansion`]) over a plain triangulation.
 pub fn minimally_degenerate(polygon: &Polygon) -> Vec<Degenerate> {
@@ -116,14 +127,8 @@ pub fn minimally_degenerate(polygon: &Polygon) -> Vec<Degenerate> {
     );
     let mut out = Vec::new();
     for b in 0..polygon.len() {
-        let (p, q) = (polygon.prev(b), polygon.next(b));
-        let turn = cross(polygon.point(p), polygon.point(b), polygon.point(q));
-        if turn == 0 {
-            out.push(Degenerate::new(polygon, p, b, q));
+        if !reflex_or_flat(polygon, b, &mut out) {
             continue;
-        }
-        if turn > 0 {
-            continue; // convex: no two opposite directions fit in its angle
         }
         let (first, second) = double_cone(polygon, &mesh, b);
         // Opposite directions are at the same place of the two cones (both sorted by angle).
@@ -153,14 +158,8 @@ pub fn minimally_degenerate_by_sweep(polygon: &Polygon) -> Vec<Degenerate> {
     let mut visible = Vec::new();
     let mut seen = vec![false; polygon.len()];
     for b in 0..polygon.len() {
-        let (p, q) = (polygon.prev(b), polygon.next(b));
-        let turn = cross(polygon.point(p), polygon.point(b), polygon.point(q));
-        if turn == 0 {
-            out.push(Degenerate::new(polygon, p, b, q));
+        if !reflex_or_flat(polygon, b, &mut out) {
             continue;
-        }
-        if turn > 0 {
-            continue; // convex: no two opposite directions fit in its angle
         }
         let order = visible_from(polygon, b, &mut visible);
         for &u in &visible {

@@ -216,9 +216,15 @@ impl Sub<'_> {
 
     /// The gaps between consecutive endpoints of a unit's chords (inside its span).
     fn gaps(&self, chords: &[usize]) -> Vec<(usize, usize)> {
-        let mut ends: Vec<usize> = chords.iter().flat_map(|&t| <[usize; 2]>::from(self.chord(t))).collect();
+        let mut ends: Vec<usize> = chords
+            .iter()
+            .flat_map(|&t| <[usize; 2]>::from(self.chord(t)))
+            .collect();
         ends.sort_unstable();
-        ends.windows(2).filter(|w| w[1] > w[0] + 1).map(|w| (w[0] + 1, w[1] - 1)).collect()
+        ends.windows(2)
+            .filter(|w| w[1] > w[0] + 1)
+            .map(|w| (w[0] + 1, w[1] - 1))
+            .collect()
     }
 
     /// A maximum independent set of this component.
@@ -247,7 +253,12 @@ impl Sub<'_> {
                     let chords = path[s..=e].to_vec();
                     let lo = chords.iter().map(|&c| self.chord(c).0).min().unwrap_or(0);
                     let hi = chords.iter().map(|&c| self.chord(c).1).max().unwrap_or(0);
-                    units.push(Unit { chords, lo, hi, value: 0 });
+                    units.push(Unit {
+                        chords,
+                        lo,
+                        hi,
+                        value: 0,
+                    });
                 }
             }
         }
@@ -256,7 +267,10 @@ impl Sub<'_> {
         let mut scratch = Vec::new();
         for k in 0..units.len() {
             let gaps = self.gaps(&units[k].chords);
-            let inside: u32 = gaps.iter().map(|&(a, b)| best_in(&units, &ending, a, b, &mut scratch).0).sum();
+            let inside: u32 = gaps
+                .iter()
+                .map(|&(a, b)| best_in(&units, &ending, a, b, &mut scratch).0)
+                .sum();
             units[k].value = units[k].chords.len() as u32 + inside;
             ending[units[k].hi].push(k);
         }
@@ -275,12 +289,22 @@ impl Sub<'_> {
 
 /// Weighted interval scheduling over the units lying within `a..=b`: the best total value and
 /// the units achieving it.
-fn best_in(units: &[Unit], ending: &[Vec<usize>], a: usize, b: usize, best: &mut Vec<(u32, usize)>) -> (u32, Vec<usize>) {
+fn best_in(
+    units: &[Unit],
+    ending: &[Vec<usize>],
+    a: usize,
+    b: usize,
+    best: &mut Vec<(u32, usize)>,
+) -> (u32, Vec<usize>) {
     const NONE: usize = usize::MAX;
     best.clear();
     // best[x - a] = (value of the best set within a..=x, the unit ending at x in it, or NONE)
     for x in a..=b {
-        let mut here = if x > a { (best[x - a - 1].0, NONE) } else { (0, NONE) };
+        let mut here = if x > a {
+            (best[x - a - 1].0, NONE)
+        } else {
+            (0, NONE)
+        };
         for &k in &ending[x] {
             let u = &units[k];
             if u.lo < a {
