@@ -201,7 +201,10 @@ struct Sub<'a> {
 /// A candidate for the top level of some range: one chord, or a contiguous piece of a 3b-chain
 /// (whose chords cross one after the other), spanning local positions `lo..=hi`.
 struct Unit {
-    chords: Vec<usize>,
+    /// The piece `paths[chain][first..=last]` of a 3b-chain (a lone chord is a piece of one).
+    chain: usize,
+    first: usize,
+    last: usize,
     lo: usize,
     hi: usize,
     /// Its chords plus the best inside each gap between their endpoints.
@@ -209,6 +212,10 @@ struct Unit {
 }
 
 impl Sub<'_> {
+    fn piece(&self, unit: &Unit) -> &[usize] {
+        &self.chains.paths[unit.chain][unit.first..=unit.last]
+    }
+
     fn chord(&self, t: usize) -> (usize, usize) {
         let (l, r) = self.circle.chords[t];
         (self.local[l] as usize, self.local[r] as usize)
@@ -248,30 +255,27 @@ impl Sub<'_> {
                 continue;
             }
             let path = &self.chains.paths[chain];
-            for s in 0..path.len() {
-                for e in s..path.len() {
-                    let chords = path[s..=e].to_vec();
-                    let lo = chords.iter().map(|&c| self.chord(c).0).min().unwrap_or(0);
-                    let hi = chords.iter().map(|&c| self.chord(c).1).max().unwrap_or(0);
-                    units.push(Unit {
-                        chords,
-                        lo,
-                        hi,
-                        value: 0,
-                    });
+            for first in 0..path.len() {
+                let (mut lo, mut hi) = (usize::MAX, 0);
+                for (last, &c) in path.iter().enumerate().skip(first) {
+                    let (l, r) = self.chord(c);
+                    (lo, hi) = (lo.min(l), hi.max(r));
+                    units.push(Unit { chain, first, last, lo, hi, value: 0 });
                 }
             }
         }
         units.sort_by_key(|u| u.hi - u.lo);
         let mut ending: Vec<Vec<usize>> = vec![Vec::new(); p];
         let mut scratch = Vec::new();
+        // The best value inside a range, once known, stays known: every unit inside a gap of a
+        // unit is narrower than that unit, so it was valued before the gap was first asked for.
+        let mut memo: HashMap<(usize, usize), u32> = HashMap::new();
         for k in 0..units.len() {
-            let gaps = self.gaps(&units[k].chords);
-            let inside: u32 = gaps
-                .iter()
-                .map(|&(a, b)| best_in(&units, &ending, a, b, &mut scratch).0)
-                .sum();
-            units[k].value = units[k].chords.len() as u32 + inside;
+            let mut inside = 0;
+            for (a, b) in self.gaps(self.piece(&units[k])) {
+                inside += *memo.entry((a, b)).or_insert_with(|| best_in(&units, &ending, a, b, &mut scratch).0);
+            }
+            units[k].value = (units[k].last - units[k].first + 1) as u32 + inside;
             ending[units[k].hi].push(k);
         }
         let mut chosen = Vec::new();
@@ -279,8 +283,9 @@ impl Sub<'_> {
         while let Some((a, b)) = ranges.pop() {
             let (_, picked) = best_in(&units, &ending, a, b, &mut scratch);
             for k in picked {
-                chosen.extend(&units[k].chords);
-                ranges.extend(self.gaps(&units[k].chords));
+                let piece = self.piece(&units[k]);
+                chosen.extend(piece);
+                ranges.extend(self.gaps(piece));
             }
         }
         chosen
