@@ -4,6 +4,7 @@
 //! ([`algo`]) -> verify ([`verify`]) -> write ([`io::write`]); [`pipeline`] runs it.
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
+#![deny(rustdoc::broken_intra_doc_links)]
 
 /// Implements `PartialEq`, `Eq` and `PartialOrd` from a type's hand-written `Ord::cmp`, for the
 /// sweep-status keys whose order is geometric (`chords`, `validate`, `monotone`).

@@ -19,7 +19,7 @@
 //!    the degenerate triangles saved, but need not be minimally degenerate themselves (a dummy
 //!    `(4,2) (3,2) (1,2)` may have the vertex `(2,2)` on its long side, and two dummies may
 //!    share it); so the reported degenerate triangles are read off the final triangles: every
-//!    vertex inside a triangle side, with its neighbours along that side ([`super::t_junctions`]).
+//!    vertex inside a triangle side, with its neighbours along that side (`super::t_junctions`).
 //!
 //! Departures from the paper: the polygon is counter-clockwise (the paper: clockwise); the
 //! answer is `cost[0][n-1]` because `n-1 -> 0` is an edge.

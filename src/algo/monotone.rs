@@ -71,7 +71,7 @@
 //! | downward | finish `e_v`; insert `e_p` with helper `v`                               |
 //! | upward   | `e` = edge west of `v`; replace helper(e) by `v`                         |
 //!
-//! The status is a `BTreeSet` of [`Cut`]s compared by exact orientation tests only (as
+//! The status is a `BTreeSet` of `Cut`s compared by exact orientation tests only (as
 //! `geom::validate`'s `Cut`, turned to the `(y, x)` order). Two facts make that comparison exact
 //! and consistent: (1) status edges are pairwise disjoint closed segments (two downward edges meet
 //! only at a "downward" regular vertex, where one is removed before the other is inserted) and no

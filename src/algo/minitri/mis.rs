@@ -260,7 +260,14 @@ impl Sub<'_> {
                 for (last, &c) in path.iter().enumerate().skip(first) {
                     let (l, r) = self.chord(c);
                     (lo, hi) = (lo.min(l), hi.max(r));
-                    units.push(Unit { chain, first, last, lo, hi, value: 0 });
+                    units.push(Unit {
+                        chain,
+                        first,
+                        last,
+                        lo,
+                        hi,
+                        value: 0,
+                    });
                 }
             }
         }
@@ -273,7 +280,9 @@ impl Sub<'_> {
         for k in 0..units.len() {
             let mut inside = 0;
             for (a, b) in self.gaps(self.piece(&units[k])) {
-                inside += *memo.entry((a, b)).or_insert_with(|| best_in(&units, &ending, a, b, &mut scratch).0);
+                inside += *memo
+                    .entry((a, b))
+                    .or_insert_with(|| best_in(&units, &ending, a, b, &mut scratch).0);
             }
             units[k].value = (units[k].last - units[k].first + 1) as u32 + inside;
             ending[units[k].hi].push(k);

@@ -7,11 +7,11 @@
 //! simple polygon. On its 180-degree side a chosen middle vertex `b` is straight (its neighbours in
 //! the piece are `a` and `c`, collinear with it): it is dropped from that piece, which then has the
 //! side `a c` with `b` inside it, the T-junction that saves a triangle. Input flat vertices that
-//! are not chosen middles stay, and the plain triangulation ([`crate::algo::plain`]) never makes a zero-area
+//! are not chosen middles stay, and the plain triangulation (`crate::algo::plain`) never makes a zero-area
 //! triangle at them. Each piece with `n_i` vertices gives `n_i - 2` triangles, `n - 2 - d` in all.
 //!
 //! Complexity: O((n + K) log n) to build the graph and walk its faces, plus O(n_i log n_i) for
-//! each piece ([`crate::algo::plain`]).
+//! each piece (`crate::algo::plain`).
 
 use super::degenerate::Degenerate;
 use crate::algo::plain;
