@@ -14,6 +14,15 @@ fn every_valid_fixture_gives_its_expected_minimum_verified() {
         let doc = json(&out);
         let p = &doc["polygons"][0];
         assert_eq!(p["algorithm"], "minitri");
+        let (lower, upper) = (
+            p["bounds"]["lower"].as_u64().unwrap(),
+            p["bounds"]["upper"].as_u64().unwrap(),
+        );
+        let count = p["triangle_count"].as_u64().unwrap();
+        assert!(
+            lower <= count && count <= upper,
+            "{name}: {lower} <= {count} <= {upper}"
+        );
         let checks = p["verification"]["checks"].as_array().unwrap();
         assert_eq!(checks.len(), 2, "{name}: minitri and the asano DP");
         assert!(

@@ -304,6 +304,32 @@ impl Polygon {
         self.grid.format_point(self.points[i])
     }
 
+    /// Number of flat vertices (collinear with both neighbours, between them).
+    pub fn flat_vertices(&self) -> usize {
+        (0..self.len())
+            .filter(|&i| {
+                cross(
+                    self.points[self.prev(i)],
+                    self.points[i],
+                    self.points[self.next(i)],
+                ) == 0
+            })
+            .count()
+    }
+
+    /// Bounds on the minimum number of triangles: Chen & Chang's Theorem 3 gives
+    /// `ceil(n/3) <= minimum <= n + 2w - 2` for polygons without flat vertices. A flat vertex
+    /// need not be a corner of any triangle (`(0 0, 0.1 0.3, 0.2 0.6, 0 1)` has n = 4 and a
+    /// minimum of 1), while every other vertex must be (each triangle has 3 corners), so in general
+    /// the lower bound is `ceil((n - f)/3)` with `f` flat vertices; that is what this returns.
+    pub fn minimum_bounds(&self) -> (usize, usize) {
+        let n = self.len();
+        (
+            (n - self.flat_vertices()).div_ceil(3),
+            n + 2 * self.holes() - 2,
+        )
+    }
+
     /// Twice the area, exactly.
     pub fn twice_area(&self) -> WideSum {
         let mut sum = WideSum::default();
@@ -470,6 +496,29 @@ mod tests {
             w[1].0,
             "outer ring: vertex 4 (0, 0) repeats vertex 0 and was dropped"
         );
+    }
+
+    #[test]
+    fn bounds_on_the_minimum_count_flat_vertices_out() {
+        let (p, _) = Polygon::from_raw(&raw_decimal(&[&[
+            ("0", "0"),
+            ("0.1", "0.3"),
+            ("0.2", "0.6"),
+            ("0", "1"),
+        ]]))
+        .unwrap();
+        assert_eq!(p.flat_vertices(), 1);
+        assert_eq!(
+            p.minimum_bounds(),
+            (1, 2),
+            "ceil(3/3) = 1, not ceil(4/3) = 2"
+        );
+        let (q, _) = Polygon::from_raw(&raw_decimal(&[
+            &[("0", "0"), ("4", "0"), ("4", "4"), ("0", "4")],
+            &[("1", "1"), ("1", "2"), ("2", "1")],
+        ]))
+        .unwrap();
+        assert_eq!(q.minimum_bounds(), (3, 7));
     }
 
     #[test]

@@ -2,7 +2,8 @@
 //!
 //! Output: `{"polygons": [...], "errors": [...]}`, one object per triangulated polygon with the
 //! spec's fields (vertex numbers are INPUT numbers, triangles counter-clockwise), plus
-//! `input_vertices` (vertex numbers used, including dropped duplicates), `warnings`, and
+//! `input_vertices` (vertex numbers used, including dropped duplicates), `flat_vertices`,
+//! `bounds` (Theorem 3's bounds on the minimum, generalised to flat vertices), `warnings`, and
 //! `verification` with `--verify`. Every polygon or input that failed is listed under `errors`
 //! with its source, index and message. Pretty at the top level, one line per triangle list, so
 //! files stay small and diffable. Complexity: linear in the output size.
@@ -44,6 +45,11 @@ pub fn write_json(outcomes: &[Outcome], out: &mut impl Write) -> io::Result<()> 
             ("degenerate_triangles", json(&ids(polygon, &t.degenerate))),
             ("optimal", json(&t.optimal)),
             ("input_vertices", json(&polygon.input_vertices())),
+            ("flat_vertices", json(&polygon.flat_vertices())),
+            ("bounds", {
+                let (lower, upper) = polygon.minimum_bounds();
+                format!("{{\"lower\": {lower}, \"upper\": {upper}}}")
+            }),
         ];
         writeln!(out, "    {{")?;
         for (name, value) in &fields {
