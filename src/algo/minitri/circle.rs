@@ -26,16 +26,6 @@ pub struct Circle {
 }
 
 impl Circle {
-    /// The other endpoint of the chord ending at `position`.
-    pub fn other(&self, position: usize) -> usize {
-        let (l, r) = self.chords[self.owner[position]];
-        if l == position {
-            r
-        } else {
-            l
-        }
-    }
-
     /// Whether the chords of triangles `s` and `t` cross on the circle.
     pub fn cross(&self, s: usize, t: usize) -> bool {
         let ((a, b), (c, d)) = (self.chords[s], self.chords[t]);

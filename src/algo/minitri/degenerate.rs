@@ -32,8 +32,9 @@
 
 use super::expansion::{double_cone, Mesh};
 use crate::algo::chords::visible_from;
-use crate::geom::kernel::{cross, Dir, Point};
+use crate::geom::kernel::{cmp_angle, cross, Dir};
 use crate::geom::polygon::Polygon;
+use std::cmp::Ordering;
 
 /// The kind of a minimally degenerate triangle (Chen & Chang, §3).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -138,9 +139,9 @@ pub fn minimally_degenerate(polygon: &Polygon) -> Vec<Degenerate> {
         while i < first.len() && j < second.len() {
             let (d, e) = (dir(first[i]), dir(second[j]).reversed());
             match d.cross(e).cmp(&0) {
-                std::cmp::Ordering::Greater => i += 1,
-                std::cmp::Ordering::Less => j += 1,
-                std::cmp::Ordering::Equal => {
+                Ordering::Greater => i += 1,
+                Ordering::Less => j += 1,
+                Ordering::Equal => {
                     out.push(Degenerate::new(polygon, first[i], b, second[j]));
                     i += 1;
                     j += 1;
@@ -170,7 +171,9 @@ pub fn minimally_degenerate_by_sweep(polygon: &Polygon) -> Vec<Degenerate> {
         let mut nearest: Vec<usize> = Vec::new();
         let mut last: Option<usize> = None;
         for &u in &order {
-            if last.is_some_and(|l| same_direction(c, polygon.point(l), polygon.point(u))) {
+            if last.is_some_and(|l| {
+                cmp_angle(c, polygon.point(l), polygon.point(u)) == Ordering::Equal
+            }) {
                 continue;
             }
             last = Some(u);
@@ -199,8 +202,4 @@ pub fn minimally_degenerate_by_sweep(polygon: &Polygon) -> Vec<Degenerate> {
         }
     }
     out
-}
-
-fn same_direction(c: Point, p: Point, q: Point) -> bool {
-    cross(c, p, q) == 0 && crate::geom::kernel::dot(c, p, q) > 0
 }

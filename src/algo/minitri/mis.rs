@@ -32,7 +32,7 @@
 
 use super::circle::Circle;
 use super::degenerate::Degenerate;
-use crate::geom::kernel::cross;
+use crate::geom::kernel::{cross, Dir};
 use crate::geom::polygon::Polygon;
 use std::collections::HashMap;
 
@@ -56,11 +56,7 @@ pub fn is_3b_pair(polygon: &Polygon, s: &Degenerate, t: &Degenerate) -> bool {
     let (qa, qc) = (polygon.point(t.a), polygon.point(t.c));
     debug_assert!(cross(pa, pc, qa) == 0 && cross(pa, pc, qc) == 0);
     // Express t's side in s's orientation of the common line.
-    let along = |p: crate::geom::kernel::Point, q: crate::geom::kernel::Point| {
-        (i128::from(q.x - p.x), i128::from(q.y - p.y))
-    };
-    let ((sx, sy), (tx, ty)) = (along(pa, pc), along(qa, qc));
-    let same_direction = sx * tx + sy * ty > 0;
+    let same_direction = Dir::between(pa, pc).dot(Dir::between(qa, qc)) > 0;
     let t_side = if same_direction {
         t.non_straight_side(polygon)
     } else {
