@@ -25,10 +25,21 @@
 //! the maximum-weight independent set problem on circle graphs", ISAAC 2003: each unit's value
 //! needs only the best sets in the gaps inside it, found by one scan each.
 //!
-//! Complexity: O(K alpha(K)) for the components; then the sum over units of their spans (in
-//! endpoint positions of their component): O(K L) units for chains of length at most L, each span
-//! at most the component's size, so O(K^2 L) in the worst case, near-linear when chords are
-//! local; O(K L) memory.
+//! 3b-chains in the plane are staircases on the circle: the chain's line cuts off one pocket of
+//! the polygon between consecutive chain vertices (on the non-180-degree side), so the boundary
+//! meets `v_0, v_1, .., v_{L+1}` in this order. Then a piece's value splits into a part for its
+//! first chord, a part for its last, and a sum over the chain between (see `Staircase`), and
+//! the scan finds the best piece ending at each chord with a running maximum. The shape is
+//! checked for each chain, and a chain that is not a staircase (none has been seen) is handled
+//! by listing all its pieces.
+//!
+//! Complexity: O(K alpha(K)) for the components; then O(K) units and staircase gaps, each valued
+//! by one scan of its span (in endpoint positions of its component): O(sum of spans), which is
+//! Valiente's O(total chord length), near-linear when chords are local, O(K^2) in the worst case
+//! (many long chords nested inside each other in one crossing component: the "bars" benchmark
+//! of the README). Memory O(K) plus the memo of ranges asked for (at most one per unit gap).
+//! Output-sensitive circle-graph algorithms (Nash & Gregg 2010, O(K min(d, alpha))) do not help
+//! with that worst case either (density and independence number both grow with K).
 
 use super::circle::Circle;
 use super::degenerate::Degenerate;
@@ -109,6 +120,18 @@ pub fn chains(polygon: &Polygon, mdts: &[Degenerate]) -> Chains {
 /// chord is always taken, larger components go through the exact recurrence on their own
 /// endpoints only.
 pub fn maximum_independent_set(circle: &Circle, chains: &Chains) -> Vec<usize> {
+    maximum_independent_set_with(circle, chains, true).0
+}
+
+/// [`maximum_independent_set`], with the staircase shortcut on or off (off: every piece of every
+/// 3b-chain is an explicit unit, the slower and simpler method the tests compare against); also
+/// returns how many staircases were used.
+pub(crate) fn maximum_independent_set_with(
+    circle: &Circle,
+    chains: &Chains,
+    staircases: bool,
+) -> (Vec<usize>, usize) {
+    let mut used = 0;
     let mut chosen = Vec::new();
     let mut local = vec![u32::MAX; circle.owner.len()];
     for component in crossing_components(circle) {
@@ -129,10 +152,13 @@ pub fn maximum_independent_set(circle: &Circle, chains: &Chains) -> Vec<usize> {
             chains,
             positions: &positions,
             local: &local,
+            staircases,
         };
-        chosen.extend(sub.solve());
+        let (set, stairs) = sub.solve();
+        chosen.extend(set);
+        used += stairs;
     }
-    chosen
+    (chosen, used)
 }
 
 /// The connected components of the crossing graph of the chords, each a list of triangles.
@@ -192,6 +218,8 @@ struct Sub<'a> {
     chains: &'a Chains,
     positions: &'a [usize],
     local: &'a [u32],
+    /// Whether long staircase pieces are valued in the scans (else listed as units).
+    staircases: bool,
 }
 
 /// A candidate for the top level of some range: one chord, or a contiguous piece of a 3b-chain
@@ -207,17 +235,138 @@ struct Unit {
     value: u32,
 }
 
-impl Sub<'_> {
-    fn piece(&self, unit: &Unit) -> &[usize] {
-        &self.chains.paths[unit.chain][unit.first..=unit.last]
+/// A 3b-chain whose pieces of three or more chords are valued inside the scans, not as units.
+///
+/// Chain `c_0 .. c_{L-1}` on the line through `v_0 .. v_{L+1}`: `c_i = (v_i, v_{i+1}, v_{i+2})`
+/// starts at `s_i` (its endpoint at `v_i`) and ends at `e_i` (at `v_{i+2}`). In a staircase the
+/// endpoints at each `v_j` all come before those at `v_{j+1}`. Then the gaps of a piece `f..=l`
+/// with `l >= f + 2` are: two at its left end (depending on `f` only), the gaps between
+/// consecutive inner vertices `v_j, v_{j+1}` (`f + 2 <= j < l`), two at its right end (depending
+/// on `l` only), and gaps between the two endpoints at one inner vertex, which hold no whole
+/// chord. So `value(f, l) = (l - f + 1) + left[f] + sum(inner[f + 2 .. l]) + right[l]`.
+struct Staircase {
+    /// The chain's triangles, oriented so that positions increase.
+    tris: Vec<usize>,
+    /// `(s_i, e_i)`, local positions.
+    ends: Vec<(usize, usize)>,
+    /// `left[f]`: the best inside the gaps `(s_f, s_{f+1})` and `(s_{f+1}, min(e_f, s_{f+2}))`.
+    left: Vec<u32>,
+    /// `inner[j]`: the best inside the gap `(max(e_{j-2}, s_j), min(e_{j-1}, s_{j+1}))`.
+    inner: Vec<u32>,
+    /// `right[l]`: the best inside `(max(e_{l-2}, s_l), e_{l-1})` and `(e_{l-1}, e_l)`.
+    right: Vec<u32>,
+}
+
+impl Staircase {
+    /// The chords in the chain order, if the chain is a staircase of at least four chords.
+    fn new(tris: &[usize], chord: impl Fn(usize) -> (usize, usize)) -> Option<Staircase> {
+        if tris.len() < 4 {
+            return None;
+        }
+        let mut tris = tris.to_vec();
+        if chord(tris[0]).0 > chord(tris[1]).0 {
+            tris.reverse();
+        }
+        let ends: Vec<(usize, usize)> = tris.iter().map(|&t| chord(t)).collect();
+        let l = ends.len();
+        // Vertex v_j holds s_j (j < L) and e_{j-2} (j >= 2): its lowest and highest position.
+        let group = |j: usize| {
+            let mut g = (usize::MAX, 0);
+            if j < l {
+                g = (g.0.min(ends[j].0), g.1.max(ends[j].0));
+            }
+            if (2..l + 2).contains(&j) {
+                g = (g.0.min(ends[j - 2].1), g.1.max(ends[j - 2].1));
+            }
+            g
+        };
+        if !(0..l + 1).all(|j| group(j).1 < group(j + 1).0) {
+            return None;
+        }
+        Some(Staircase {
+            tris,
+            ends,
+            left: vec![0; l],
+            inner: vec![0; l],
+            right: vec![0; l],
+        })
     }
 
+    /// The gaps (open ranges of local positions) that make up `left[f]`, `inner[j]`, `right[l]`.
+    fn left_gaps(&self, f: usize) -> [(usize, usize); 2] {
+        let e = &self.ends;
+        [(e[f].0, e[f + 1].0), (e[f + 1].0, e[f].1.min(e[f + 2].0))]
+    }
+
+    fn inner_gap(&self, j: usize) -> (usize, usize) {
+        let e = &self.ends;
+        (e[j - 2].1.max(e[j].0), e[j - 1].1.min(e[j + 1].0))
+    }
+
+    fn right_gaps(&self, l: usize) -> [(usize, usize); 2] {
+        let e = &self.ends;
+        [(e[l - 2].1.max(e[l].0), e[l - 1].1), (e[l - 1].1, e[l].1)]
+    }
+}
+
+const NOT_IN_STAIRCASE: (u32, u32) = (u32::MAX, u32::MAX);
+
+/// What a scan picked as the last unit of a range.
+#[derive(Clone, Copy, Debug)]
+enum Pick {
+    None,
+    /// A unit of the list.
+    Unit(usize),
+    /// The piece `tris[first..=last]` of the staircase `stair`, starting at local position `lo`.
+    Piece {
+        stair: usize,
+        first: usize,
+        last: usize,
+        lo: usize,
+    },
+}
+
+/// Jobs in order of span: units to value, and staircase gap values to fill in.
+#[derive(Clone, Copy, Debug)]
+enum Job {
+    Unit(usize),
+    Left(usize, usize),
+    Inner(usize, usize),
+    Right(usize, usize),
+}
+
+/// What the scans read: the valued units, by end position, and the staircases.
+struct Table {
+    units: Vec<Unit>,
+    ending: Vec<Vec<usize>>,
+    stairs: Vec<Staircase>,
+    /// Per triangle, by the local position of its left end: (its staircase, its index there),
+    /// or `NOT_IN_STAIRCASE`.
+    stair_of: Vec<(u32, u32)>,
+}
+
+/// Scratch for the scans.
+#[derive(Default)]
+struct Scan {
+    /// Per position of the range: the best value within `a..=x` and the last pick of it.
+    best: Vec<(u32, Pick)>,
+    /// Per staircase triangle, by the local position of its left end: (stamp, the best before
+    /// it starts, minus its index, plus `left`).
+    start: Vec<(u32, i64)>,
+    /// Per staircase: (stamp, last end index seen, running maximum, its first index).
+    run: Vec<(u32, usize, i64, usize)>,
+    stamp: u32,
+    /// The best values inside ranges asked for so far.
+    memo: HashMap<(usize, usize), u32>,
+}
+
+impl Sub<'_> {
     fn chord(&self, t: usize) -> (usize, usize) {
         let (l, r) = self.circle.chords[t];
         (self.local[l] as usize, self.local[r] as usize)
     }
 
-    /// The gaps between consecutive endpoints of a unit's chords (inside its span).
+    /// The gaps between consecutive endpoints of some chords (inside their span).
     fn gaps(&self, chords: &[usize]) -> Vec<(usize, usize)> {
         let mut ends: Vec<usize> = chords
             .iter()
@@ -239,24 +388,44 @@ impl Sub<'_> {
     /// gaps. So the best set in a range is a heaviest set of units with disjoint spans in it
     /// (weighted interval scheduling, one scan), where a unit weighs its chords plus the best in
     /// each of its gaps: ranges strictly inside it, already known when units are taken in order
-    /// of span. Time: the sum of the units' spans; memory: linear in the units.
-    fn solve(&self) -> Vec<usize> {
+    /// of span.
+    ///
+    /// Pieces of one or two chords are explicit units. The longer pieces of a staircase chain
+    /// (see [`Staircase`]; every 3b-chain we have met is one, the shape is checked, and other
+    /// chains get explicit units for all their pieces) are valued inside the scans instead: at
+    /// the end `e_l` of chord `l`, the best start `f <= l - 2` is a running maximum,
+    /// `M(l) = max(M(l - 1) + inner[l - 1], start(f = l - 2))`, with `start(f)` the best before
+    /// `s_f` plus `left[f] - f`. So a staircase of length L costs O(L) units and gaps, not the
+    /// O(L^2) of listing its pieces.
+    fn solve(&self) -> (Vec<usize>, usize) {
         let p = self.positions.len();
-        let mut units: Vec<Unit> = Vec::new();
+        let mut table = Table {
+            units: Vec::new(),
+            ending: vec![Vec::new(); p],
+            stairs: Vec::new(),
+            stair_of: vec![NOT_IN_STAIRCASE; p],
+        };
+        let mut jobs: Vec<(usize, u8, Job)> = Vec::new(); // (span, units first, job)
         let mut seen_chain = std::collections::HashSet::new();
         for &g in self.positions {
-            let t = self.circle.owner[g];
-            let (chain, _) = self.chains.place[t];
+            let (chain, _) = self.chains.place[self.circle.owner[g]];
             if !seen_chain.insert(chain) {
                 continue;
             }
             let path = &self.chains.paths[chain];
+            let stair = if self.staircases {
+                Staircase::new(path, |t| self.chord(t))
+            } else {
+                None
+            };
+            let longest = if stair.is_some() { 2 } else { path.len() };
             for first in 0..path.len() {
                 let (mut lo, mut hi) = (usize::MAX, 0);
-                for (last, &c) in path.iter().enumerate().skip(first) {
+                for (last, &c) in path.iter().enumerate().skip(first).take(longest) {
                     let (l, r) = self.chord(c);
                     (lo, hi) = (lo.min(l), hi.max(r));
-                    units.push(Unit {
+                    jobs.push((hi - lo, 0, Job::Unit(table.units.len())));
+                    table.units.push(Unit {
                         chain,
                         first,
                         last,
@@ -266,78 +435,181 @@ impl Sub<'_> {
                     });
                 }
             }
-        }
-        units.sort_by_key(|u| u.hi - u.lo);
-        let mut ending: Vec<Vec<usize>> = vec![Vec::new(); p];
-        let mut scratch = Vec::new();
-        // The best value inside a range, once known, stays known: every unit inside a gap of a
-        // unit is narrower than that unit, so it was valued before the gap was first asked for.
-        let mut memo: HashMap<(usize, usize), u32> = HashMap::new();
-        for k in 0..units.len() {
-            let mut inside = 0;
-            for (a, b) in self.gaps(self.piece(&units[k])) {
-                inside += *memo
-                    .entry((a, b))
-                    .or_insert_with(|| best_in(&units, &ending, a, b, &mut scratch).0);
+            if let Some(stair) = stair {
+                let s = table.stairs.len();
+                let l = stair.tris.len();
+                let span = |(x, y): (usize, usize)| y - x;
+                for f in 0..l - 2 {
+                    let [g0, g1] = stair.left_gaps(f);
+                    jobs.push((span(g0).max(span(g1)), 1, Job::Left(s, f)));
+                }
+                for j in 2..l - 1 {
+                    jobs.push((span(stair.inner_gap(j)), 1, Job::Inner(s, j)));
+                }
+                for r in 2..l {
+                    let [g0, g1] = stair.right_gaps(r);
+                    jobs.push((span(g0).max(span(g1)), 1, Job::Right(s, r)));
+                }
+                for (i, &t) in stair.tris.iter().enumerate() {
+                    table.stair_of[self.chord(t).0] = (s as u32, i as u32);
+                }
+                table.stairs.push(stair);
             }
-            units[k].value = (units[k].last - units[k].first + 1) as u32 + inside;
-            ending[units[k].hi].push(k);
+        }
+        let mut scan = Scan {
+            run: vec![(0, 0, 0, 0); table.stairs.len()],
+            start: vec![(0, 0); p],
+            ..Scan::default()
+        };
+        jobs.sort_by_key(|&(span, kind, _)| (span, kind));
+        for &(_, _, job) in &jobs {
+            match job {
+                Job::Unit(k) => {
+                    let u = &table.units[k];
+                    let piece = &self.chains.paths[u.chain][u.first..=u.last];
+                    let count = piece.len() as u32;
+                    let inside: u32 = self
+                        .gaps(piece)
+                        .into_iter()
+                        .map(|(a, b)| self.best_value(&table, &mut scan, a, b))
+                        .sum();
+                    table.units[k].value = count + inside;
+                    let hi = table.units[k].hi;
+                    table.ending[hi].push(k);
+                }
+                Job::Left(s, f) => {
+                    let gaps = table.stairs[s].left_gaps(f);
+                    let v = gaps
+                        .map(|g| self.gap_value(&table, &mut scan, g))
+                        .iter()
+                        .sum();
+                    table.stairs[s].left[f] = v;
+                }
+                Job::Inner(s, j) => {
+                    let gap = table.stairs[s].inner_gap(j);
+                    table.stairs[s].inner[j] = self.gap_value(&table, &mut scan, gap);
+                }
+                Job::Right(s, r) => {
+                    let gaps = table.stairs[s].right_gaps(r);
+                    let v = gaps
+                        .map(|g| self.gap_value(&table, &mut scan, g))
+                        .iter()
+                        .sum();
+                    table.stairs[s].right[r] = v;
+                }
+            }
         }
         let mut chosen = Vec::new();
         let mut ranges = vec![(0, p - 1)];
         while let Some((a, b)) = ranges.pop() {
-            let (_, picked) = best_in(&units, &ending, a, b, &mut scratch);
-            for k in picked {
-                let piece = self.piece(&units[k]);
+            let (_, picked) = self.best_in(&table, &mut scan, a, b);
+            for pick in picked {
+                let piece = match pick {
+                    Pick::Unit(k) => {
+                        let u = &table.units[k];
+                        &self.chains.paths[u.chain][u.first..=u.last]
+                    }
+                    Pick::Piece {
+                        stair, first, last, ..
+                    } => &table.stairs[stair].tris[first..=last],
+                    Pick::None => continue,
+                };
                 chosen.extend(piece);
                 ranges.extend(self.gaps(piece));
             }
         }
-        chosen
+        (chosen, table.stairs.len())
     }
-}
 
-/// Weighted interval scheduling over the units lying within `a..=b`: the best total value and
-/// the units achieving it.
-fn best_in(
-    units: &[Unit],
-    ending: &[Vec<usize>],
-    a: usize,
-    b: usize,
-    best: &mut Vec<(u32, usize)>,
-) -> (u32, Vec<usize>) {
-    const NONE: usize = usize::MAX;
-    best.clear();
-    // best[x - a] = (value of the best set within a..=x, the unit ending at x in it, or NONE)
-    for x in a..=b {
-        let mut here = if x > a {
-            (best[x - a - 1].0, NONE)
+    /// The best value strictly between local positions `x` and `y`.
+    fn gap_value(&self, table: &Table, scan: &mut Scan, (x, y): (usize, usize)) -> u32 {
+        if y > x + 1 {
+            self.best_value(table, scan, x + 1, y - 1)
         } else {
-            (0, NONE)
-        };
-        for &k in &ending[x] {
-            let u = &units[k];
-            if u.lo < a {
-                continue;
-            }
-            let before = if u.lo > a { best[u.lo - a - 1].0 } else { 0 };
-            if before + u.value > here.0 {
-                here = (before + u.value, k);
-            }
-        }
-        best.push(here);
-    }
-    let total = best.last().map_or(0, |b| b.0);
-    let mut picked = Vec::new();
-    let mut x = b as isize;
-    while x >= a as isize {
-        let (_, k) = best[x as usize - a];
-        if k == NONE {
-            x -= 1;
-        } else {
-            picked.push(k);
-            x = units[k].lo as isize - 1;
+            0
         }
     }
-    (total, picked)
+
+    /// The best value within `a..=b`, memoised: every unit and staircase gap inside a range is
+    /// narrower than it, so it was valued before the range was first asked for.
+    fn best_value(&self, table: &Table, scan: &mut Scan, a: usize, b: usize) -> u32 {
+        if let Some(&v) = scan.memo.get(&(a, b)) {
+            return v;
+        }
+        let (v, _) = self.best_in(table, scan, a, b);
+        scan.memo.insert((a, b), v);
+        v
+    }
+
+    /// Weighted interval scheduling over the units and staircase pieces lying within `a..=b`:
+    /// the best total value and the picks achieving it.
+    fn best_in(&self, table: &Table, scan: &mut Scan, a: usize, b: usize) -> (u32, Vec<Pick>) {
+        scan.stamp += 1;
+        let stamp = scan.stamp;
+        scan.best.clear();
+        for x in a..=b {
+            let before =
+                |best: &[(u32, Pick)], lo: usize| if lo > a { best[lo - a - 1].0 } else { 0 };
+            let mut here = (before(&scan.best, x), Pick::None);
+            for &k in &table.ending[x] {
+                let u = &table.units[k];
+                if u.lo >= a && before(&scan.best, u.lo) + u.value > here.0 {
+                    here = (before(&scan.best, u.lo) + u.value, Pick::Unit(k));
+                }
+            }
+            let t = self.circle.owner[self.positions[x]];
+            let (s, i) = table.stair_of[self.chord(t).0];
+            if s != NOT_IN_STAIRCASE.0 {
+                let (s, i) = (s as usize, i as usize);
+                let stair = &table.stairs[s];
+                let l = stair.tris.len();
+                if x == stair.ends[i].0 && i + 2 < l {
+                    let value = before(&scan.best, x) as i64 - i as i64 + stair.left[i] as i64;
+                    scan.start[x] = (stamp, value);
+                } else if x == stair.ends[i].1 && i >= 2 {
+                    // M(i) = max(M(i - 1) + inner[i - 1], start(i - 2)).
+                    let run = scan.run[s];
+                    let mut m = (i64::MIN, 0);
+                    if run.0 == stamp && run.1 + 1 == i && run.2 > i64::MIN {
+                        m = (run.2 + stair.inner[i - 1] as i64, run.3);
+                    }
+                    let (st, v) = scan.start[stair.ends[i - 2].0];
+                    if st == stamp && v > m.0 {
+                        m = (v, i - 2);
+                    }
+                    scan.run[s] = (stamp, i, m.0, m.1);
+                    if m.0 > i64::MIN {
+                        let total = (m.0 + i as i64 + 1 + stair.right[i] as i64) as u32;
+                        if total > here.0 {
+                            let piece = Pick::Piece {
+                                stair: s,
+                                first: m.1,
+                                last: i,
+                                lo: stair.ends[m.1].0,
+                            };
+                            here = (total, piece);
+                        }
+                    }
+                }
+            }
+            scan.best.push(here);
+        }
+        let total = scan.best.last().map_or(0, |b| b.0);
+        let mut picked = Vec::new();
+        let mut x = b as isize;
+        while x >= a as isize {
+            let (_, pick) = scan.best[x as usize - a];
+            let lo = match pick {
+                Pick::None => {
+                    x -= 1;
+                    continue;
+                }
+                Pick::Unit(k) => table.units[k].lo,
+                Pick::Piece { lo, .. } => lo,
+            };
+            picked.push(pick);
+            x = lo as isize - 1;
+        }
+        (total, picked)
+    }
 }

@@ -2,7 +2,7 @@
 
 use super::circle::{circle, Circle};
 use super::degenerate::{minimally_degenerate, Degenerate, Kind};
-use super::mis::{chains, crossing_components, is_3b_pair};
+use super::mis::{chains, crossing_components, is_3b_pair, maximum_independent_set_with};
 use super::triangulate;
 use crate::algo::asano;
 use crate::geom::polygon::Polygon;
@@ -276,4 +276,61 @@ fn expansion_finds_the_same_triangles_as_the_sweep() {
         );
     }
     assert!(with_type_i > 300, "type (i) triangles occur: {with_type_i}");
+}
+
+/// A "bars" polygon: a strip whose bottom and top follow random step heights (bottom 0..=2, top
+/// 3..=5), so that the plateaus at heights 2 and 3 form long 3b-chains in boundary order, crossed
+/// by vertical degenerate triangles.
+fn bars(columns: usize, seed: u64) -> Polygon {
+    let mut state = seed | 1;
+    let mut rnd = |n: i64| {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state % n as u64) as i64
+    };
+    let bottom: Vec<i64> = (0..columns).map(|_| rnd(3)).collect();
+    let top: Vec<i64> = (0..columns).map(|_| 3 + rnd(3)).collect();
+    let mut ring: Vec<(i64, i64)> = Vec::new();
+    for (x, &h) in bottom.iter().enumerate() {
+        ring.extend([(x as i64, h), (x as i64 + 1, h)]);
+    }
+    for (x, &h) in top.iter().enumerate().rev() {
+        ring.extend([(x as i64 + 1, h), (x as i64, h)]);
+    }
+    ring.dedup();
+    // Flat vertices stay (minitri allows them); only repeated points go.
+    polygon(&[&ring])
+}
+
+#[test]
+fn staircase_shortcut_matches_listing_every_piece() {
+    let mut stairs_seen = 0;
+    for seed in 1..=300u64 {
+        let p = bars(4 + (seed as usize % 40), seed);
+        let mdts = minimally_degenerate(&p);
+        let c = circle(&p, &mdts);
+        let ch = chains(&p, &mdts);
+        let (fast, used) = maximum_independent_set_with(&c, &ch, true);
+        let (slow, none) = maximum_independent_set_with(&c, &ch, false);
+        assert_eq!(none, 0);
+        assert_eq!(fast.len(), slow.len(), "seed {seed}");
+        // The set is independent: no two chosen chords cross unless they are a 3b pair.
+        for (i, &s) in fast.iter().enumerate() {
+            for &t in &fast[..i] {
+                assert!(
+                    !c.cross(s, t) || is_3b_pair(&p, &mdts[s], &mdts[t]),
+                    "seed {seed}: {s} and {t} are dependent"
+                );
+            }
+        }
+        stairs_seen += used;
+        if p.len() <= 60 {
+            minimum_agrees(&p);
+        }
+    }
+    assert!(
+        stairs_seen >= 100,
+        "only {stairs_seen} staircases were exercised"
+    );
 }
