@@ -35,6 +35,10 @@ pub struct Flags {
     /// Largest polygon (vertices) the O(n^3)-time, O(n^2)-memory asano DP accepts
     #[arg(long, value_name = "N", default_value_t = minitri::algo::asano::DEFAULT_LIMIT)]
     pub dp_limit: usize,
+    /// Seconds the exact search for a polygon with holes may run (0: no limit); past it, the
+    /// best triangulation found is reported with "optimal": false and a lower bound
+    #[arg(long, value_name = "SECONDS", default_value_t = 10.0, value_parser = seconds)]
+    pub time_limit: f64,
     /// No warnings on standard error
     #[arg(short, long)]
     pub quiet: bool,
@@ -127,9 +131,21 @@ impl Flags {
             options: Options {
                 algorithm,
                 dp_limit: self.dp_limit,
+                time_limit: (self.time_limit > 0.0)
+                    .then(|| std::time::Duration::from_secs_f64(self.time_limit)),
                 verify: self.verify,
             },
             quiet: self.quiet,
         }
+    }
+}
+
+/// A number of seconds: finite, not negative, at most a year.
+fn seconds(text: &str) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(v) if v.is_finite() && (0.0..=3.2e7).contains(&v) => Ok(v),
+        _ => Err(format!(
+            "expected a number of seconds from 0 (no limit) to 32000000, got {text:?}"
+        )),
     }
 }

@@ -22,6 +22,8 @@ pub struct Options {
     pub dp_limit: usize,
     /// Also run every other exact algorithm that applies and check every output independently.
     pub verify: bool,
+    /// How long the exact search for a polygon with holes may run (`None`: no limit).
+    pub time_limit: Option<std::time::Duration>,
 }
 
 impl Default for Options {
@@ -30,6 +32,7 @@ impl Default for Options {
             algorithm: Algorithm::Minitri,
             dp_limit: asano::DEFAULT_LIMIT,
             verify: false,
+            time_limit: Some(minitri::DEFAULT_TIME_LIMIT),
         }
     }
 }
@@ -132,12 +135,17 @@ impl fmt::Display for Outcome {
 pub fn triangulate(
     polygon: &Polygon,
     algorithm: Algorithm,
-    dp_limit: usize,
+    options: &Options,
 ) -> Result<Triangulation, TriangulateError> {
     match algorithm {
-        Algorithm::Asano => asano::triangulate(polygon, dp_limit),
+        Algorithm::Asano => asano::triangulate(polygon, options.dp_limit),
         Algorithm::Ear => ear::triangulate(polygon),
-        Algorithm::Minitri => minitri::triangulate(polygon),
+        Algorithm::Minitri => {
+            let deadline = options
+                .time_limit
+                .and_then(|limit| std::time::Instant::now().checked_add(limit));
+            minitri::triangulate_within(polygon, deadline)
+        }
     }
 }
 
@@ -150,7 +158,7 @@ pub const CORRUPT_FOR_TESTS: &str = "MINITRI_CORRUPT_FOR_TESTS";
 /// # Errors
 /// [`Error::Triangulate`] when the chosen algorithm does not apply.
 pub fn solve(polygon: &Polygon, options: &Options) -> Result<Solved, Error> {
-    let mut triangulation = triangulate(polygon, options.algorithm, options.dp_limit)?;
+    let mut triangulation = triangulate(polygon, options.algorithm, options)?;
     if options.verify && std::env::var_os(CORRUPT_FOR_TESTS).is_some() {
         // Fault injection, so that tests can see --verify catch a wrong output and exit 3.
         triangulation.triangles.pop();
@@ -172,7 +180,7 @@ fn verify_all(polygon: &Polygon, main: &Triangulation, options: &Options) -> Ver
         if other == main.algorithm {
             continue;
         }
-        match triangulate(polygon, other, options.dp_limit) {
+        match triangulate(polygon, other, options) {
             Ok(t) => outputs.push(t),
             Err(e) => skipped.push(format!("{other}: {e}")),
         }

@@ -296,6 +296,23 @@ fn check_all(ring: &[(i64, i64)]) -> Result<(), TestCaseError> {
         report.problems
     );
     prop_assert_eq!(fast.triangles.len(), count, "MINITRI vs DP on {:?}", ring);
+    // The general method (for holes: dependency graph, exact search, cuts) on the same polygon.
+    let general = chen_chang::triangulate_general(&poly, None)
+        .map_err(|e| TestCaseError::fail(e.to_string()))?;
+    let report = verify::check(&poly, &general);
+    prop_assert!(
+        report.valid,
+        "general method output invalid on {:?}: {:?}",
+        ring,
+        report.problems
+    );
+    prop_assert!(general.optimal);
+    prop_assert_eq!(
+        general.triangles.len(),
+        count,
+        "general method vs DP on {:?}",
+        ring
+    );
     let plain = ear::triangulate(&poly).map_err(|e| TestCaseError::fail(e.to_string()))?;
     prop_assert_eq!(plain.triangles.len(), n - 2);
     let report = verify::check(&poly, &plain);

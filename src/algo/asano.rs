@@ -156,6 +156,7 @@ pub fn triangulate(polygon: &Polygon, limit: usize) -> Result<Triangulation, Tri
         triangles,
         degenerate,
         optimal: true,
+        lower_bound: None,
     })
 }
 

@@ -40,6 +40,7 @@ pub fn triangulate(polygon: &Polygon) -> Result<Triangulation, TriangulateError>
         triangles: super::plain(polygon.points()),
         degenerate: Vec::new(),
         optimal: false,
+        lower_bound: None,
     })
 }
 

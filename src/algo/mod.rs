@@ -65,6 +65,9 @@ pub struct Triangulation {
     pub degenerate: Vec<[usize; 3]>,
     /// Whether the count is proved minimum.
     pub optimal: bool,
+    /// For a minimum algorithm whose search was cut short (`optimal` false): a proved lower
+    /// bound on the minimum number of triangles.
+    pub lower_bound: Option<usize>,
 }
 
 /// The degenerate triangles a set of triangles uses: for every vertex lying strictly inside a

@@ -7,6 +7,7 @@ fn triangulation(triangles: &[[usize; 3]], degenerate: &[[usize; 3]]) -> Triangu
         triangles: triangles.to_vec(),
         degenerate: degenerate.to_vec(),
         optimal: false,
+        lower_bound: None,
     }
 }
 

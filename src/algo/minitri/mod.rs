@@ -15,25 +15,42 @@
 //!    (Algorithm MISMDT).
 //! 4. and 5. [`partition`]: cut P along the chosen triangles and triangulate every piece.
 
+pub mod branch_and_bound;
 pub mod circle;
+pub mod cut;
 pub mod degenerate;
+pub mod dependency;
 pub mod expansion;
 pub mod mis;
 pub mod partition;
 
 use super::{Algorithm, TriangulateError, Triangulation};
 use crate::geom::polygon::Polygon;
+use std::time::{Duration, Instant};
 
-/// The minimum triangulation of a polygon without holes.
+/// How long the exact search for polygons with holes runs by default (`--time-limit`).
+pub const DEFAULT_TIME_LIMIT: Duration = Duration::from_secs(10);
+
+/// The minimum triangulation of a polygon, with the default time limit for polygons with holes
+/// ([`triangulate_within`]).
 ///
 /// # Errors
-/// [`TriangulateError::HolesUnsupported`] for a polygon with holes.
+/// Those of [`triangulate_within`].
 pub fn triangulate(polygon: &Polygon) -> Result<Triangulation, TriangulateError> {
+    triangulate_within(polygon, Instant::now().checked_add(DEFAULT_TIME_LIMIT))
+}
+
+/// The minimum triangulation of a polygon: by Chen & Chang's steps without holes (exact, no
+/// search); with holes by [`triangulate_general`], searching until `deadline`.
+///
+/// # Errors
+/// None for valid polygons today (the plain triangulation's, for holes).
+pub fn triangulate_within(
+    polygon: &Polygon,
+    deadline: Option<Instant>,
+) -> Result<Triangulation, TriangulateError> {
     if polygon.holes() > 0 {
-        return Err(TriangulateError::HolesUnsupported {
-            algorithm: Algorithm::Minitri,
-            holes: polygon.holes(),
-        });
+        return triangulate_general(polygon, deadline);
     }
     let mdts = degenerate::minimally_degenerate(polygon);
     let circle = circle::circle(polygon, &mdts);
@@ -49,6 +66,40 @@ pub fn triangulate(polygon: &Polygon) -> Result<Triangulation, TriangulateError>
         triangles,
         degenerate,
         optimal: true,
+        lower_bound: None,
+    })
+}
+
+/// The minimum triangulation of any valid polygon, holes allowed, by the general method: all
+/// minimally degenerate triangles, their dependency graph ([`dependency`], Theorem 1), a maximum
+/// independent set by exact search ([`branch_and_bound`], until `deadline`), and the chosen
+/// triangles cut into a plain triangulation ([`cut`]). `optimal` is true only when the search
+/// finished; otherwise `lower_bound` holds the proved bound `n + 2w - 2 - (upper bound on d)`.
+/// Without holes it gives the same count as [`triangulate`] (the tests compare them).
+///
+/// # Errors
+/// Those of the plain triangulation it starts from.
+pub fn triangulate_general(
+    polygon: &Polygon,
+    deadline: Option<Instant>,
+) -> Result<Triangulation, TriangulateError> {
+    let mdts = if polygon.holes() > 0 {
+        degenerate::minimally_degenerate_by_sweep(polygon)
+    } else {
+        degenerate::minimally_degenerate(polygon)
+    };
+    let graph = dependency::graph(polygon, &mdts);
+    let found = branch_and_bound::maximum_independent_set(&graph, deadline);
+    let chosen: Vec<degenerate::Degenerate> = found.set.iter().map(|&t| mdts[t]).collect();
+    let base = super::ear::triangulate(polygon)?.triangles;
+    let plain_count = base.len();
+    let triangles = cut::triangulate_with_cuts(polygon, base, &chosen);
+    Ok(Triangulation {
+        algorithm: Algorithm::Minitri,
+        triangles,
+        degenerate: chosen.iter().map(|m| [m.a, m.b, m.c]).collect(),
+        optimal: found.optimal,
+        lower_bound: (!found.optimal).then(|| plain_count - found.upper_bound),
     })
 }
 

@@ -2,6 +2,7 @@
 
 use super::circle::{circle, Circle};
 use super::degenerate::{minimally_degenerate, Degenerate, Kind};
+use super::dependency::dependent;
 use super::mis::{chains, crossing_components, is_3b_pair, maximum_independent_set_with};
 use super::triangulate;
 use crate::algo::asano;
@@ -333,4 +334,35 @@ fn staircase_shortcut_matches_listing_every_piece() {
         stairs_seen >= 100,
         "only {stairs_seen} staircases were exercised"
     );
+}
+
+#[test]
+fn the_dependency_relation_is_the_circle_crossing_relation_without_holes() {
+    let mut pairs = [0usize; 2];
+    for seed in 1..=200u64 {
+        let p = bars(3 + (seed as usize % 20), seed);
+        let mdts = minimally_degenerate(&p);
+        let c = circle(&p, &mdts);
+        for s in 0..mdts.len() {
+            for t in 0..s {
+                let on_circle = c.cross(s, t) && !is_3b_pair(&p, &mdts[s], &mdts[t]);
+                assert_eq!(dependent(&p, &mdts[s], &mdts[t]), on_circle, "seed {seed}");
+                pairs[usize::from(on_circle)] += 1;
+            }
+        }
+    }
+    assert!(pairs[0] > 1000 && pairs[1] > 1000, "{pairs:?}");
+}
+
+/// Found while building the cutting method: a 3b pair on the line x = 1, both chosen. Merging
+/// the first fan leaves a T-junction at the shared end, so the second fan must be found by its
+/// half-plane, not by walking shared edges.
+#[test]
+fn cutting_a_3b_pair_merges_both_fans() {
+    let p = polygon(&[&[(1, 3), (0, 0), (1, 4), (1, 5), (2, 0), (1, 2)]]);
+    let t = super::triangulate_general(&p, None).unwrap();
+    assert_eq!(t.degenerate.len(), 2);
+    assert_eq!(t.triangles.len(), 2);
+    assert!(crate::verify::check(&p, &t).valid);
+    assert_eq!(minimum_agrees(&p), 2);
 }

@@ -51,6 +51,11 @@ pub fn write_json(outcomes: &[Outcome], out: &mut impl Write) -> io::Result<()> 
                 format!("{{\"lower\": {lower}, \"upper\": {upper}}}")
             }),
         ];
+        let mut fields = fields;
+        if let Some(lower) = t.lower_bound {
+            // A search cut short: what is proved about the minimum.
+            fields.insert(10, ("lower_bound", json(&lower)));
+        }
         writeln!(out, "    {{")?;
         for (name, value) in &fields {
             writeln!(out, "      \"{name}\": {value},")?;

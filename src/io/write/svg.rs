@@ -587,6 +587,7 @@ mod tests {
             ],
             degenerate: vec![[0, 1, 3], [1, 2, 3], [11, 8, 4], [8, 7, 4]],
             optimal: true,
+            lower_bound: None,
         }
     }
 
@@ -630,6 +631,7 @@ mod tests {
                 .collect(),
             degenerate: near.iter().map(|&k| [0, k, k + 1]).collect(),
             optimal: false,
+            lower_bound: None,
         };
         (p, t)
     }

@@ -1,0 +1,98 @@
+//! The dependency graph of minimally degenerate triangles, for any polygon (holes allowed).
+//!
+//! Chen & Chang (1990, §2, Theorem 1) list when two minimally degenerate triangles can be used
+//! together. Made concrete (`DESIGN.md`, "Theorem 1 made concrete"): triangles `T = (a, b, c)`
+//! and `U = (x, y, z)` (middles `b`, `y`) are dependent exactly when
+//! - the segments `a c` and `x z` cross properly, or
+//! - they share their middle vertex (`b == y`), or
+//! - an end of `U` is `b` and the other end of `U` lies strictly on `T`'s 180-degree side (or the
+//!   same with `T` and `U` swapped).
+//!
+//! No other contact is possible: a vertex never lies inside a minimally degenerate segment except
+//! its middle, so segments meet properly, at vertices that are ends or middles, or overlap along
+//! one line sharing a side (relationship (iii): independent). Without holes this is the crossing
+//! relation of the circle representation with the 3b-chain exception
+//! ([`super::circle`], [`super::mis`]); the tests check that the two agree.
+//!
+//! Complexity: pairs sharing a vertex are found through per-vertex lists; proper crossings by a
+//! sweep over x-extents, comparing segments whose x-ranges overlap: O(K log K + candidate
+//! pairs), near-linear when segments are short, O(K^2) at worst.
+
+use super::degenerate::Degenerate;
+use crate::geom::kernel::{cross, properly_cross};
+use crate::geom::polygon::Polygon;
+
+/// Whether triangles `t` and `u` cannot both be used (Theorem 1, made concrete).
+pub fn dependent(polygon: &Polygon, t: &Degenerate, u: &Degenerate) -> bool {
+    if t.b == u.b {
+        return true;
+    }
+    let p = |v: usize| polygon.point(v);
+    if properly_cross(p(t.a), p(t.c), p(u.a), p(u.c)) {
+        return true;
+    }
+    reaches_straight_side(polygon, t, u) || reaches_straight_side(polygon, u, t)
+}
+
+/// Whether `u` has an end at `t`'s middle and its other end strictly on `t`'s 180-degree side.
+fn reaches_straight_side(polygon: &Polygon, t: &Degenerate, u: &Degenerate) -> bool {
+    let other = if u.a == t.b {
+        u.c
+    } else if u.c == t.b {
+        u.a
+    } else {
+        return false;
+    };
+    let side = cross(polygon.point(t.a), polygon.point(t.c), polygon.point(other)).signum() as i32;
+    side != 0 && side != t.non_straight_side(polygon)
+}
+
+/// The dependency graph: for each triangle, the sorted list of triangles it depends on.
+pub fn graph(polygon: &Polygon, mdts: &[Degenerate]) -> Vec<Vec<usize>> {
+    let k = mdts.len();
+    let mut adjacent: Vec<Vec<usize>> = vec![Vec::new(); k];
+    let link = |s: usize, t: usize, adjacent: &mut Vec<Vec<usize>>| {
+        if s != t && dependent(polygon, &mdts[s], &mdts[t]) {
+            adjacent[s].push(t);
+            adjacent[t].push(s);
+        }
+    };
+    // Pairs meeting at a vertex that is a middle of one of them.
+    let mut at_vertex: Vec<Vec<usize>> = vec![Vec::new(); polygon.len()];
+    for (t, m) in mdts.iter().enumerate() {
+        for v in [m.a, m.b, m.c] {
+            at_vertex[v].push(t);
+        }
+    }
+    for (t, m) in mdts.iter().enumerate() {
+        for &u in &at_vertex[m.b] {
+            link(t, u, &mut adjacent);
+        }
+    }
+    // Proper crossings: sweep over x, comparing segments whose x-ranges overlap.
+    let range = |m: &Degenerate| {
+        let (a, c) = (polygon.point(m.a).x, polygon.point(m.c).x);
+        (a.min(c), a.max(c))
+    };
+    let mut order: Vec<usize> = (0..k).collect();
+    order.sort_by_key(|&t| range(&mdts[t]).0);
+    let mut active: Vec<usize> = Vec::new();
+    for &t in &order {
+        let (lo, _) = range(&mdts[t]);
+        active.retain(|&u| range(&mdts[u]).1 >= lo);
+        for &u in &active {
+            let (m, o) = (&mdts[t], &mdts[u]);
+            let p = |v: usize| polygon.point(v);
+            if properly_cross(p(m.a), p(m.c), p(o.a), p(o.c)) {
+                adjacent[t].push(u);
+                adjacent[u].push(t);
+            }
+        }
+        active.push(t);
+    }
+    for list in &mut adjacent {
+        list.sort_unstable();
+        list.dedup();
+    }
+    adjacent
+}
