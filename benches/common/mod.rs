@@ -1,0 +1,178 @@
+//! Benchmark inputs shared by `benches/minitri.rs` (criterion) and `benches/compare.rs` (the
+//! table beside the `earcut` crate): the two families of `bench/polygon.py`, deterministic by seed.
+//!
+//! - [`star`]: a random star-shaped polygon in general position: random angles and radii around
+//!   the origin on an integer grid, sorted exactly by angle (then by distance), so the polygon is
+//!   simple; no flat vertices, and (on a grid this fine) collinear triples are rare.
+//! - [`rectilinear`]: a random rectilinear "bar" of about 0.83 n vertices (`n / 4` columns, as in
+//!   `bench/polygon.py`): the bottom follows random step heights 0..=4 and the top 6..=12, so long
+//!   runs of horizontal edges at equal heights see each other (many degenerate triangles).
+//!   Consecutive equal points and flat vertices are removed, as in `bench/polygon.py`.
+//!
+//! Both give the outer ring counter-clockwise as integer points, which [`polygon`] turns into a
+//! validated [`minitri::Polygon`] through the public API (exact decimals, `Polygon::from_raw`)
+//! and [`earcut_input`] into the `f64` pairs the `earcut` crate takes (exact: |coordinates| < 2^53).
+
+use minitri::{Decimal, Polygon, RawPolygon};
+use std::cmp::Ordering;
+
+/// A benchmark family.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Shape {
+    /// Random star-shaped polygon in general position.
+    Star,
+    /// Random rectilinear bar with many degenerate triangles.
+    Rectilinear,
+}
+
+impl Shape {
+    /// The name used in tables and on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Shape::Star => "star",
+            Shape::Rectilinear => "rectilinear",
+        }
+    }
+
+    /// The outer ring of this family's polygon for nominal size `n` and `seed`.
+    pub fn points(self, n: usize, seed: u64) -> Vec<[i64; 2]> {
+        match self {
+            Shape::Star => star(n, seed),
+            Shape::Rectilinear => rectilinear(n, seed),
+        }
+    }
+}
+
+/// SplitMix64: a small, fast, deterministic generator (no dependency needed).
+struct Rng(u64);
+
+impl Rng {
+    fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    }
+
+    /// Uniform in [0, 1).
+    fn unit(&mut self) -> f64 {
+        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    /// Uniform in `lo..=hi`.
+    fn range(&mut self, lo: i64, hi: i64) -> i64 {
+        lo + (self.next_u64() % (hi - lo + 1) as u64) as i64
+    }
+}
+
+/// Exact counter-clockwise order of directions from the origin, starting at the positive x axis;
+/// points on one ray by distance.
+fn by_angle(p: &[i64; 2], q: &[i64; 2]) -> Ordering {
+    let half = |a: &[i64; 2]| !(a[1] > 0 || (a[1] == 0 && a[0] > 0));
+    let cross = i128::from(p[0]) * i128::from(q[1]) - i128::from(p[1]) * i128::from(q[0]);
+    let norm = |a: &[i64; 2]| i128::from(a[0]).pow(2) + i128::from(a[1]).pow(2);
+    half(p)
+        .cmp(&half(q))
+        .then(0.cmp(&cross))
+        .then(norm(p).cmp(&norm(q)))
+}
+
+/// A random star-shaped polygon with (at most) `n` vertices: `n` random angles and radii in
+/// `[0.3, 1] * (10 n + 1000)`, rounded to the integer grid, duplicates and the origin dropped,
+/// sorted exactly by angle around the origin. Simple as long as no angular gap reaches pi
+/// (checked; it never happens for n >= 20 with any seed tried).
+///
+/// # Panics
+/// If the angular gap condition fails (pick another seed).
+pub fn star(n: usize, seed: u64) -> Vec<[i64; 2]> {
+    let mut rng = Rng(seed);
+    let scale = 10.0 * n as f64 + 1000.0;
+    let mut pts: Vec<[i64; 2]> = (0..n)
+        .map(|_| {
+            let a = rng.unit() * std::f64::consts::TAU;
+            let r = scale * (0.3 + 0.7 * rng.unit());
+            [(r * a.cos()).round() as i64, (r * a.sin()).round() as i64]
+        })
+        .filter(|&p| p != [0, 0])
+        .collect();
+    pts.sort_unstable();
+    pts.dedup();
+    pts.sort_unstable_by(by_angle);
+    // Every turn around the origin between consecutive vertices must be less than pi.
+    for (i, p) in pts.iter().enumerate() {
+        let q = pts[(i + 1) % pts.len()];
+        let cross = i128::from(p[0]) * i128::from(q[1]) - i128::from(p[1]) * i128::from(q[0]);
+        assert!(cross >= 0, "star({n}, {seed}): angular gap of pi or more");
+    }
+    pts
+}
+
+/// A random rectilinear bar: `max(2, n / 4)` unit-wide columns, bottom heights in `0..=4`,
+/// top heights in `6..=12`, walked counter-clockwise; then consecutive equal points and flat
+/// vertices removed (about 0.83 n vertices remain).
+pub fn rectilinear(n: usize, seed: u64) -> Vec<[i64; 2]> {
+    let mut rng = Rng(seed);
+    let columns = (n / 4).max(2) as i64;
+    let top: Vec<i64> = (0..columns).map(|_| rng.range(6, 12)).collect();
+    let bottom: Vec<i64> = (0..columns).map(|_| rng.range(0, 4)).collect();
+    let mut ring: Vec<[i64; 2]> = Vec::with_capacity(4 * columns as usize);
+    for (x, &h) in (0..).zip(&bottom) {
+        ring.extend([[x, h], [x + 1, h]]);
+    }
+    for x in (0..columns).rev() {
+        let h = top[x as usize];
+        ring.extend([[x + 1, h], [x, h]]);
+    }
+    ring.dedup();
+    while ring.first() == ring.last() {
+        ring.pop();
+    }
+    let flat = |a: [i64; 2], b: [i64; 2], c: [i64; 2]| {
+        (b[0] - a[0]) * (c[1] - a[1]) == (b[1] - a[1]) * (c[0] - a[0])
+    };
+    loop {
+        let len = ring.len();
+        let kept: Vec<[i64; 2]> = (0..len)
+            .filter(|&i| !flat(ring[(i + len - 1) % len], ring[i], ring[(i + 1) % len]))
+            .map(|i| ring[i])
+            .collect();
+        if kept.len() == len {
+            return ring;
+        }
+        ring = kept;
+    }
+}
+
+/// The reader's form of a ring of integer points.
+pub fn raw(points: &[[i64; 2]]) -> RawPolygon {
+    let d = |v: i64| Decimal::parse(&v.to_string()).expect("an integer is a decimal");
+    RawPolygon {
+        rings: vec![points.iter().map(|p| [d(p[0]), d(p[1])]).collect()],
+    }
+}
+
+/// The validated polygon of a ring of integer points.
+///
+/// # Panics
+/// If the generator made an invalid polygon (a bug in this file).
+#[allow(dead_code)] // used by benches/minitri.rs; benches/compare.rs validates in its workers
+pub fn polygon(points: &[[i64; 2]]) -> Polygon {
+    match Polygon::from_raw(&raw(points)) {
+        Ok((polygon, _warnings)) => polygon,
+        Err(e) => panic!("generated polygon is invalid: {e}"),
+    }
+}
+
+/// The same points as the `f64` pairs the `earcut` crate takes (exact for these magnitudes).
+pub fn earcut_input(points: &[[i64; 2]]) -> Vec<[f64; 2]> {
+    points.iter().map(|p| [p[0] as f64, p[1] as f64]).collect()
+}
+
+/// A plain triangulation by the `earcut` crate (a fresh instance, so that its buffers count in
+/// a memory measurement): triangle corner indices, three per triangle.
+pub fn earcut(coords: &[[f64; 2]], hole_starts: &[u32]) -> Vec<u32> {
+    let mut out = Vec::new();
+    earcut::Earcut::new().earcut_slice(coords, hole_starts, &mut out);
+    out
+}
