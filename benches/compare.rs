@@ -270,9 +270,13 @@ fn worker(case: &str, algo: &str, runs: usize, verify: bool) -> Result<String, S
             if holes > 0 {
                 return Ok("na holes: n/a".into());
             }
+            let unlimited = minitri::pipeline::Options {
+                dp_limit: usize::MAX,
+                ..Default::default()
+            };
             let mut result = None;
             repeat(&mut || {
-                let (r, t, p) = measure(|| triangulate(&polygon, algorithm, usize::MAX));
+                let (r, t, p) = measure(|| triangulate(&polygon, algorithm, &unlimited));
                 result = Some(r);
                 (t, p)
             });

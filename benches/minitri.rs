@@ -16,7 +16,7 @@ mod common;
 
 use common::Shape;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, SamplingMode};
-use minitri::{triangulate, Algorithm};
+use minitri::{triangulate, Algorithm, Options};
 use std::hint::black_box;
 use std::time::Duration;
 
@@ -40,6 +40,10 @@ fn family(c: &mut Criterion, shape: Shape) {
         Shape::Star => max_n,
         Shape::Rectilinear => env_usize("MINITRI_BENCH_RECTILINEAR_MAX_N", 1000),
     };
+    let options = Options {
+        dp_limit: usize::MAX,
+        ..Options::default()
+    };
     let mut group = c.benchmark_group(shape.name());
     group.sample_size(10);
     let sizes = [1_000, 10_000, 100_000, 1_000_000];
@@ -58,7 +62,9 @@ fn family(c: &mut Criterion, shape: Shape) {
         }
         if n <= minitri_max_n {
             group.bench_with_input(BenchmarkId::new("minitri", n), &polygon, |b, p| {
-                b.iter(|| triangulate(black_box(p), Algorithm::Minitri, 0).expect("hole-free"))
+                b.iter(|| {
+                    triangulate(black_box(p), Algorithm::Minitri, &options).expect("hole-free")
+                })
             });
         } else {
             eprintln!(
@@ -67,14 +73,14 @@ fn family(c: &mut Criterion, shape: Shape) {
             );
         }
         group.bench_with_input(BenchmarkId::new("ear", n), &polygon, |b, p| {
-            b.iter(|| triangulate(black_box(p), Algorithm::Ear, 0).expect("hole-free"))
+            b.iter(|| triangulate(black_box(p), Algorithm::Ear, &options).expect("hole-free"))
         });
         group.bench_with_input(BenchmarkId::new("earcut", n), &coords, |b, xy| {
             b.iter(|| common::earcut(black_box(xy), &[]))
         });
         if polygon.len() <= DP_MAX_N {
             group.bench_with_input(BenchmarkId::new("asano", n), &polygon, |b, p| {
-                b.iter(|| triangulate(black_box(p), Algorithm::Asano, usize::MAX).expect("fits"))
+                b.iter(|| triangulate(black_box(p), Algorithm::Asano, &options).expect("fits"))
             });
         }
     }

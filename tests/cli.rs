@@ -226,14 +226,26 @@ fn duplicates_are_dropped_with_a_warning_and_keep_their_numbers() {
 }
 
 #[test]
-fn holes_are_refused_clearly_for_now() {
+fn the_dp_triangulates_polygons_with_up_to_two_holes_and_refuses_more() {
+    // A square with a square hole: n + 2w - 2 = 8; --verify checks it.
+    let (code, out, err) = run(
+        &["-a", "asano", "--verify"],
+        Some("POLYGON ((0 0, 3 0, 3 3, 0 3), (1 1, 2 1, 2 2, 1 2))"),
+    );
+    assert_eq!(code, 0, "{err}");
+    let doc = json(&out);
+    let p = &doc["polygons"][0];
+    assert_eq!(p["triangle_count"], 8);
+    assert_eq!(p["holes"], 1);
+    assert_eq!(p["verification"]["ok"], true);
+    assert_eq!(p["verification"]["checks"][0]["algorithm"], "asano");
     let (code, _, err) = run(
         &["-a", "asano"],
-        Some("POLYGON ((0 0, 9 0, 9 9, 0 9), (1 1, 2 1, 1 2))"),
+        Some("POLYGON ((0 0, 9 0, 9 9, 0 9), (1 1, 2 1, 1 2), (4 4, 5 4, 4 5), (7 7, 8 7, 7 8))"),
     );
     assert_eq!(code, 1);
     assert!(
-        err.contains("handles polygons without holes only, and this polygon has 1 hole"),
+        err.contains("the asano dynamic program handles polygons with at most 2 holes (its time grows like n^(3+2k) with k holes), and this polygon has 3 holes"),
         "{err}"
     );
 }

@@ -34,7 +34,7 @@
 
 use super::chords::ChordTable;
 use super::{Algorithm, TriangulateError, Triangulation};
-use crate::geom::kernel::cross;
+use crate::geom::kernel::{cross, Point};
 use crate::geom::polygon::Polygon;
 
 /// The default largest number of vertices the DP accepts (at most about 6 s and 75 MB at 3000).
@@ -62,18 +62,17 @@ pub fn estimate(n: usize) -> (String, String) {
     (memory, time)
 }
 
-/// The minimum triangulation of a polygon without holes.
+/// The minimum triangulation of a polygon; with 1 or 2 holes by [`super::asano_holes`].
 ///
 /// # Errors
-/// [`TriangulateError::HolesUnsupported`] for a polygon with holes;
-/// [`TriangulateError::TooLarge`] above `limit` vertices (or above 65,000, the table's range).
+/// [`TriangulateError::TooLarge`] above `limit` vertices without holes (or above 65,000, the
+/// table's range); for polygons with holes, those of [`super::asano_holes::triangulate`]
+/// ([`TriangulateError::TooManyHoles`] above 2 holes, [`TriangulateError::TooLargeWithHoles`]
+/// above its size limits).
 pub fn triangulate(polygon: &Polygon, limit: usize) -> Result<Triangulation, TriangulateError> {
     let n = polygon.len();
     if polygon.holes() > 0 {
-        return Err(TriangulateError::HolesUnsupported {
-            algorithm: Algorithm::Asano,
-            holes: polygon.holes(),
-        });
+        return super::asano_holes::triangulate(polygon, limit);
     }
     let limit = limit.min(65_000);
     if n > limit {
@@ -86,6 +85,53 @@ pub fn triangulate(polygon: &Polygon, limit: usize) -> Result<Triangulation, Tri
         });
     }
     let chords = ChordTable::new(polygon);
+    let walk = solve_walk(
+        n,
+        |i| polygon.point(i),
+        |i, j| chords.is_chord(i, j),
+        |i| chords.lines_through(i),
+    )
+    .expect("`n-1 -> 0` is an edge, so the whole polygon always has a triangulation");
+    let degenerate = super::t_junctions(polygon, &walk.triangles);
+    debug_assert_eq!(
+        degenerate.len(),
+        walk.dummies,
+        "each dummy saves exactly one triangle"
+    );
+    Ok(Triangulation {
+        algorithm: Algorithm::Asano,
+        triangles: walk.triangles,
+        degenerate,
+        optimal: true,
+        lower_bound: None,
+    })
+}
+
+/// The DP's answer for one boundary walk: the nondegenerate triangles (counter-clockwise, as
+/// walk positions) and the number of dummies used.
+pub(crate) struct WalkTriangulation {
+    /// Nondegenerate triangles, counter-clockwise, as positions of the walk.
+    pub triangles: Vec<[usize; 3]>,
+    /// Zero-area triangles used (each saves one triangle).
+    pub dummies: usize,
+}
+
+/// The DP (steps 2 and 3 above) on a closed boundary walk of `m` positions `0..m`, interior on
+/// the left of `p -> p + 1` and of `m-1 -> 0`: a simple polygon, or a weakly simple one (a
+/// polygon with holes cut open, whose walk visits some points twice; see `super::asano_holes`).
+/// `point(p)` is the position's point, `is_chord(p, q)` (for `q >= p + 2`) whether the segment
+/// between positions `p` and `q` is a chord of the walk, `lines_through(p)[q]` numbers the lines
+/// through `p` (equal for `q` and `r` exactly when `p`, `q`, `r` are collinear; `q` at `p`'s
+/// own point must get a number no other position on a line through `p` gets).
+///
+/// Returns `None` when the walk has no triangulation (cannot happen for a valid walk).
+pub(crate) fn solve_walk<'a>(
+    m: usize,
+    point: impl Fn(usize) -> Point,
+    is_chord: impl Fn(usize, usize) -> bool,
+    lines_through: impl Fn(usize) -> &'a [u16],
+) -> Option<WalkTriangulation> {
+    let n = m;
     let at = |i: usize, j: usize| i * n + j;
     let mut cost = vec![INF; n * n]; // cost[i][j], row-major
     let mut cost_t = vec![INF; n * n]; // the same, transposed: cost_t[j][i] = cost[i][j]
@@ -97,13 +143,13 @@ pub fn triangulate(polygon: &Polygon, limit: usize) -> Result<Triangulation, Tri
     for gap in 2..n {
         for i in 0..n - gap {
             let j = i + gap;
-            if !chords.is_chord(i, j) {
+            if !is_chord(i, j) {
                 continue;
             }
-            let (pi, pj) = (polygon.point(i), polygon.point(j));
+            let (pi, pj) = (point(i), point(j));
             let row = &cost[at(i, 0)..at(i, 0) + n];
             let col = &cost_t[at(j, 0)..at(j, 0) + n];
-            let lines = chords.lines_through(i);
+            let lines = lines_through(i);
             let line_j = lines[j];
             // The cost through apex k: both parts, plus 1 unless i, k, j are collinear (a
             // dummy). INF parts make the sum exceed any real cost. Branch-free, so it vectorises.
@@ -111,7 +157,7 @@ pub fn triangulate(polygon: &Polygon, limit: usize) -> Result<Triangulation, Tri
                 |k: usize| u32::from(row[k]) + u32::from(col[k]) + u32::from(lines[k] != line_j);
             let mut best = (i + 1..j).map(through).min().unwrap_or(u32::MAX);
             // The apex must not make a clockwise triangle; collinear ones have zero area.
-            let valid = |k: usize| cross(pi, polygon.point(k), pj) >= 0;
+            let valid = |k: usize| cross(pi, point(k), pj) >= 0;
             let mut arg = (i + 1..j).find(|&k| through(k) == best && valid(k));
             if arg.is_none() && best < u32::from(INF) {
                 // Every cheapest apex turns clockwise: an exact scan over the valid ones.
@@ -127,7 +173,10 @@ pub fn triangulate(polygon: &Polygon, limit: usize) -> Result<Triangulation, Tri
             }
         }
     }
-    // `n-1 -> 0` is an edge, so the whole polygon is P(0..n-1), which always has a triangulation.
+    if cost[at(0, n - 1)] == INF {
+        return None;
+    }
+    // `m-1 -> 0` is an edge, so the whole walk is P(0..m-1).
     let mut triangles = Vec::new();
     let mut dummies = 0;
     let mut stack = vec![(0, n - 1)];
@@ -136,7 +185,7 @@ pub fn triangulate(polygon: &Polygon, limit: usize) -> Result<Triangulation, Tri
             continue;
         }
         let k = usize::from(choice[at(i, j)]);
-        let (a, b, c) = (polygon.point(i), polygon.point(k), polygon.point(j));
+        let (a, b, c) = (point(i), point(k), point(j));
         if cross(a, b, c) > 0 {
             triangles.push([i, k, j]);
         } else {
@@ -145,19 +194,7 @@ pub fn triangulate(polygon: &Polygon, limit: usize) -> Result<Triangulation, Tri
         stack.push((i, k));
         stack.push((k, j));
     }
-    let degenerate = super::t_junctions(polygon, &triangles);
-    debug_assert_eq!(
-        degenerate.len(),
-        dummies,
-        "each dummy saves exactly one triangle"
-    );
-    Ok(Triangulation {
-        algorithm: Algorithm::Asano,
-        triangles,
-        degenerate,
-        optimal: true,
-        lower_bound: None,
-    })
+    Some(WalkTriangulation { triangles, dummies })
 }
 
 #[cfg(test)]
@@ -235,14 +272,19 @@ mod tests {
     }
 
     #[test]
-    fn refuses_holes_and_oversized_inputs_with_an_estimate() {
+    fn holes_go_to_the_holed_dp_and_oversized_inputs_are_refused_with_an_estimate() {
         let p = polygon(&[&[(0, 0), (9, 0), (9, 9), (0, 9)], &[(1, 1), (2, 1), (1, 2)]]);
+        let t = triangulate(&p, DEFAULT_LIMIT).unwrap();
+        assert_eq!(t.triangles.len(), 7, "n + 2w - 2: nothing collinear");
+        assert!(crate::verify::check(&p, &t).valid);
+        let p = polygon(&[
+            &[(0, 0), (9, 0), (9, 9), (0, 9)],
+            &[(1, 1), (2, 1), (1, 2)],
+            &[(4, 4), (5, 4), (4, 5)],
+            &[(7, 7), (8, 7), (7, 8)],
+        ]);
         let e = triangulate(&p, DEFAULT_LIMIT).unwrap_err();
-        assert!(
-            e.to_string()
-                .contains("without holes only, and this polygon has 1 hole"),
-            "{e}"
-        );
+        assert!(e.to_string().contains("at most 2 holes"), "{e}");
         let p = polygon(&[&[(0, 0), (1, 0), (2, 0), (3, 0), (3, 3), (0, 3)]]);
         let e = triangulate(&p, 5).unwrap_err();
         assert!(

@@ -5,9 +5,11 @@
 //! - [`monotone`]: O(n log n) triangulation by monotone pieces, safe with flat vertices.
 //! - [`minitri`]: the exact minimum by Chen & Chang's MINITRI.
 //! - [`asano`]: the exact minimum by the dynamic program of Asano, Asano & Pinter.
+//! - [`asano_holes`]: the same for polygons with 1 or 2 holes, by cutting each hole open.
 //! - [`chords`]: which vertex pairs are chords (used by the DP).
 
 pub mod asano;
+pub mod asano_holes;
 pub mod chords;
 pub mod ear;
 pub mod minitri;
@@ -126,6 +128,26 @@ pub enum TriangulateError {
         algorithm: Algorithm,
         /// The number of holes.
         holes: usize,
+    },
+    /// The dynamic program for polygons with holes handles at most 2 holes.
+    #[error("the asano dynamic program handles polygons with at most {max} holes (its time grows like n^(3+2k) with k holes), and this polygon has {holes} holes")]
+    TooManyHoles {
+        /// The number of holes.
+        holes: usize,
+        /// The most holes it handles.
+        max: usize,
+    },
+    /// The polygon with holes is too large for the dynamic program's time (n^(3+2k)).
+    #[error("the asano dynamic program with {holes} hole{} needs about {time} for {n} vertices (its time grows like n^{}), above its limit of {limit} vertices with {holes} hole{}", if *holes == 1 { "" } else { "s" }, 3 + 2 * holes, if *holes == 1 { "" } else { "s" })]
+    TooLargeWithHoles {
+        /// Number of vertices (all rings).
+        n: usize,
+        /// Number of holes.
+        holes: usize,
+        /// The limit in force for this number of holes.
+        limit: usize,
+        /// Estimated time, in words.
+        time: String,
     },
     /// The polygon is too large for an algorithm with polynomial memory.
     #[error("the asano dynamic program needs about {memory} and {time} for {n} vertices, above its limit of {limit} vertices; use --algorithm minitri, or raise the limit with --dp-limit")]
