@@ -89,6 +89,41 @@ fn ear_gives_n_minus_2_nondegenerate_triangles_and_verifies() {
 }
 
 #[test]
+fn ear_triangulates_polygons_with_holes_into_n_plus_2w_minus_2_and_verifies() {
+    let expected = expected("holes");
+    assert!(expected.len() >= 5);
+    for (name, count) in &expected {
+        let (code, out, err) = run(
+            &["-a", "ear", "--verify", &format!("fixtures/holes/{name}")],
+            None,
+        );
+        assert_eq!(code, 0, "{name}: {err}");
+        let p = &json(&out)["polygons"][0];
+        let (n, w) = (
+            p["vertices"].as_u64().unwrap(),
+            p["holes"].as_u64().unwrap(),
+        );
+        assert!(w >= 1, "{name}: a fixture with holes");
+        assert_eq!(p["triangle_count"].to_string(), *count, "{name}");
+        assert_eq!(
+            p["triangle_count"].as_u64().unwrap(),
+            n + 2 * w - 2,
+            "{name}"
+        );
+        assert_eq!(p["degenerate_count"], 0, "{name}");
+        assert_eq!(p["optimal"], false, "{name}");
+        let v = &p["verification"];
+        assert_eq!(v["ok"], true, "{name}: {v}");
+        let checks = v["checks"].as_array().unwrap();
+        assert_eq!(checks.len(), 1, "{name}: only ear applies to holes");
+        assert_eq!(checks[0]["algorithm"], "ear");
+        assert_eq!(checks[0]["valid"], true, "{name}: {v}");
+        let skipped = v["skipped"].as_array().unwrap();
+        assert_eq!(skipped.len(), 2, "{name}: minitri and asano refuse holes");
+    }
+}
+
+#[test]
 fn decimal_input_is_exact_as_written() {
     let (code, out, _) = run(
         &["-a", "asano"],

@@ -1,13 +1,15 @@
-//! The plain triangulation (`--algorithm ear`) of a polygon without holes into n - 2
-//! nondegenerate triangles: [`crate::algo::monotone`] pieces in O(n log n), and, for small
-//! polygons (up to 16 vertices, where it is quickest), ear clipping (Meisters, "Polygons have
+//! The plain triangulation (`--algorithm ear`) of a polygon with w holes into n + 2w - 2
+//! nondegenerate triangles: [`crate::algo::monotone`] pieces in O(n log n) (holes included), and,
+//! for small polygons without holes (up to 16 vertices, where it is quickest), ear clipping
+//! (Meisters, "Polygons have
 //! ears", *Amer. Math. Monthly* 82 (1975); the lecture notes
 //! `papers/goldwasser-1991-lecture-triangulating-simple-polygons.txt` and
 //! `papers/toussaint-1993-lecture-triangulations.txt`), which this module implements.
 //!
-//! Input contract: a valid polygon without holes; flat vertices allowed.
-//! Output guarantee: exactly n - 2 counter-clockwise triangles of positive area; no zero-area
-//! triangle ever, also with flat vertices.
+//! Input contract: a valid polygon, with or without holes; flat vertices allowed, on any ring.
+//! Output guarantee: exactly n + 2w - 2 counter-clockwise triangles of positive area (n - 2
+//! without holes); no zero-area triangle ever, also with flat vertices and with vertices of
+//! different rings collinear.
 //!
 //! An ear is a vertex `v` with a strict left turn `prev, v, next` whose CLOSED triangle contains
 //! no other remaining vertex. Then `prev next` is a proper diagonal (nothing on it), so the rest
@@ -17,27 +19,44 @@
 //! clipper that accepts `cross >= 0` emits zero-area triangles at flat vertices; one that tests
 //! only the open triangle can cut a diagonal through a vertex.
 //!
-//! Complexity of the ear clipper: O(n^2) worst case (each ear test looks at the remaining
-//! vertices in the triangle's bounding box, found through a uniform grid).
+//! Complexity: O(n log n) for [`triangulate`] (monotone pieces; the ear clipper only ever sees at
+//! most 16 vertices), whatever the number of holes. The ear clipper itself (`clip`) is O(n^2)
+//! worst case (each ear test looks at the remaining vertices in the triangle's bounding box,
+//! found through a uniform grid); it handles no holes, so holes never reach it.
 
 use super::{Algorithm, TriangulateError, Triangulation};
 use crate::geom::kernel::{cross, Point};
 use crate::geom::polygon::Polygon;
 
-/// Triangulates a polygon without holes into n - 2 nondegenerate triangles.
+/// Triangulates a polygon with w holes (possibly none) into n + 2w - 2 nondegenerate
+/// counter-clockwise triangles, in O(n log n).
 ///
 /// # Errors
-/// [`TriangulateError::HolesUnsupported`] for a polygon with holes.
+/// None for a valid polygon: the `Result` keeps the signature of the other algorithms.
+///
+/// # Examples
+/// ```
+/// use minitri::{algo::ear, Decimal, Polygon, RawPolygon};
+/// let ring = |pts: &[(i32, i32)]| -> Result<Vec<[Decimal; 2]>, minitri::NumberError> {
+///     pts.iter()
+///         .map(|&(x, y)| Ok([Decimal::parse(&x.to_string())?, Decimal::parse(&y.to_string())?]))
+///         .collect()
+/// };
+/// let raw = RawPolygon {
+///     rings: vec![
+///         ring(&[(0, 0), (4, 0), (4, 4), (0, 4)])?,
+///         ring(&[(1, 1), (1, 3), (3, 3), (3, 1)])?,
+///     ],
+/// };
+/// let (polygon, _warnings) = Polygon::from_raw(&raw)?;
+/// let t = ear::triangulate(&polygon)?;
+/// assert_eq!(t.triangles.len(), 8); // n + 2w - 2 = 8 + 2 - 2
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn triangulate(polygon: &Polygon) -> Result<Triangulation, TriangulateError> {
-    if polygon.holes() > 0 {
-        return Err(TriangulateError::HolesUnsupported {
-            algorithm: Algorithm::Ear,
-            holes: polygon.holes(),
-        });
-    }
     Ok(Triangulation {
         algorithm: Algorithm::Ear,
-        triangles: super::plain(polygon.points()),
+        triangles: super::plain_polygon(polygon),
         degenerate: Vec::new(),
         optimal: false,
         lower_bound: None,
@@ -204,5 +223,30 @@ mod tests {
             comb.extend([(4 * k + 4, 1), (4 * k + 2, 1), (4 * k + 2, 5), (4 * k, 5)]);
         }
         check(&comb);
+    }
+
+    #[test]
+    fn holes_give_n_plus_2w_minus_2_triangles_even_when_small() {
+        // Small polygons with holes must not reach the ear clipper (which knows no holes).
+        let cases: [&[&[(i64, i64)]]; 3] = [
+            &[
+                &[(0, 0), (4, 0), (4, 4), (0, 4)],
+                &[(1, 1), (1, 3), (3, 3), (3, 1)],
+            ],
+            &[&[(0, 0), (9, 0), (9, 9), (0, 9)], &[(1, 1), (2, 1), (1, 2)]],
+            // Flat vertices on the outer ring and a hole, all on the line x = 4 with the apexes.
+            &[
+                &[(0, 0), (4, 0), (8, 0), (8, 8), (0, 8)],
+                &[(2, 2), (4, 2), (6, 2), (4, 4)],
+                &[(2, 6), (6, 6), (4, 5)],
+            ],
+        ];
+        for rings in cases {
+            let p = polygon(rings);
+            let t = triangulate(&p).unwrap();
+            assert_eq!(t.triangles.len(), p.len() + 2 * p.holes() - 2, "{rings:?}");
+            let report = crate::verify::check(&p, &t);
+            assert!(report.valid, "{rings:?}: {:?}", report.problems);
+        }
     }
 }

@@ -117,6 +117,31 @@ pub(crate) fn plain(pts: &[crate::geom::kernel::Point]) -> Vec<[usize; 3]> {
     }
 }
 
+/// A plain triangulation of a polygon with holes given as rings of points one after another
+/// (`ring_starts` as in [`monotone::triangulate_rings`]: outer ring counter-clockwise first, holes
+/// clockwise; flat vertices allowed): `n + 2w - 2` positive triangles as indices into `pts`. Without
+/// holes this is [`plain`]; with holes, monotone pieces in O(n log n).
+///
+/// # Panics
+/// As [`monotone::triangulate_rings`], if `ring_starts` does not describe rings of at least 3
+/// points.
+pub(crate) fn plain_rings(
+    pts: &[crate::geom::kernel::Point],
+    ring_starts: &[usize],
+) -> Vec<[usize; 3]> {
+    if ring_starts.len() == 1 {
+        plain(pts)
+    } else {
+        monotone::triangulate_rings(pts, ring_starts)
+    }
+}
+
+/// A plain triangulation of a valid polygon, holes included: `n + 2w - 2` positive triangles as
+/// stored vertex indices ([`plain_rings`] on its rings).
+pub(crate) fn plain_polygon(polygon: &crate::Polygon) -> Vec<[usize; 3]> {
+    plain_rings(polygon.points(), polygon.ring_starts())
+}
+
 /// Why an algorithm could not triangulate a (valid) polygon.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 #[non_exhaustive]

@@ -1,20 +1,25 @@
-//! An O(n log n) plain triangulation of a simple polygon into exactly n - 2 nondegenerate
-//! triangles, by decomposition into monotone pieces (Lee & Preparata, "Location of a point in a
-//! planar subdivision and its applications", *SIAM J. Comput.* 6 (1977); Garey, Johnson,
-//! Preparata & Tarjan, "Triangulating a simple polygon", *Inform. Process. Lett.* 7 (1978); de
-//! Berg, Cheong, van Kreveld & Overmars, *Computational Geometry*, ch. 3; the lecture notes
-//! `papers/goldwasser-1991-lecture-triangulating-simple-polygons.txt` and
+//! An O(n log n) plain triangulation of a polygon with holes into exactly n + 2w - 2
+//! nondegenerate triangles (n vertices over all rings, w holes; n - 2 without holes), by
+//! decomposition into monotone pieces (Lee & Preparata, "Location of a point in a planar
+//! subdivision and its applications", *SIAM J. Comput.* 6 (1977); Garey, Johnson, Preparata &
+//! Tarjan, "Triangulating a simple polygon", *Inform. Process. Lett.* 7 (1978); de Berg, Cheong,
+//! van Kreveld & Overmars, *Computational Geometry*, ch. 3, whose Theorem 3.6 covers holes; the
+//! lecture notes `papers/goldwasser-1991-lecture-triangulating-simple-polygons.txt` and
 //! `papers/toussaint-1993-lecture-triangulations.txt`).
 //!
-//! Input contract: one counter-clockwise simple polygon given as its cycle of points, at least 3,
-//! no two equal, no spike (an edge folding back onto its neighbour), flat vertices (three
-//! consecutive collinear vertices) and any other collinearity allowed; coordinates on the kernel's
-//! grid, so every cross product is exact in `i128`. This is what [`crate::Polygon`] guarantees for
-//! its outer ring.
-//! Output guarantee: exactly n - 2 counter-clockwise triangles of positive area, as indices into
-//! the cycle, with disjoint interiors, covering the polygon; every triangle side is a polygon edge
-//! or a proper diagonal (it touches the boundary only at its two end vertices). All decisions are
-//! exact orientation tests ([`cross`]) and coordinate comparisons; nothing is constructed.
+//! Input contract: the rings given one after another in one slice of points, ring 0 the outer
+//! ring, counter-clockwise, rings 1.. the holes, clockwise (so the interior is on the left of every
+//! edge); each ring at least 3 points, simple, no spike (an edge folding back onto its
+//! neighbour); the rings pairwise disjoint (no common point at all), every hole inside the outer
+//! ring and outside every other hole; no two points equal; flat vertices (three consecutive
+//! collinear vertices) and any other collinearity, within a ring or across rings, allowed;
+//! coordinates on the kernel's grid, so every cross product is exact in `i128`. This is what
+//! [`crate::Polygon`] guarantees. A single counter-clockwise cycle is the case w = 0.
+//! Output guarantee: exactly n + 2w - 2 counter-clockwise triangles of positive area, as indices
+//! into the points, with disjoint interiors, covering the polygon (and no hole); every triangle
+//! side is a polygon edge or a proper diagonal (it touches the boundary only at its two end
+//! vertices). All decisions are exact orientation tests ([`cross`]) and coordinate comparisons;
+//! nothing is constructed.
 //!
 //! # Height order
 //!
@@ -46,14 +51,18 @@
 //! | below | above | any              | upward: regular, interior west (on an east chain)   |
 //!
 //! `cross == 0` with both neighbours on one side is a spike, excluded by the contract; a flat
-//! vertex is always regular. Since the polygon is counter-clockwise, an edge running downward has
-//! the interior on its east, one running upward on its west.
+//! vertex is always regular. Since the interior is on the left of every edge (outer ring
+//! counter-clockwise, holes clockwise), an edge running downward has the interior on its east, one
+//! running upward on its west. On a hole the table reads the same: its lowest vertex is a split
+//! vertex and its highest a merge vertex (both neighbours above, resp. below, and the clockwise
+//! ring turns right there).
 //!
 //! # The sweep (monotone decomposition)
 //!
 //! Vertices are processed upward (the textbook sweeps downward; this is its mirror image). The
 //! status holds the edges with the interior on their east that the sweep line cuts, i.e. the
-//! downward edges `e = i -> i+1` with `lo = pts[i+1]` already passed and `hi = pts[i]` not yet,
+//! downward edges `e = i -> next(i)` of any ring, with `lo = pts[next(i)]` already passed and
+//! `hi = pts[i]` not yet,
 //! ordered west to east; each has a helper, the highest vertex passed so far that sees `e`
 //! horizontally to its west. Edge `e` is named by its first vertex `i`; `e_v` is the downward edge
 //! `v -> next(v)` ending at `v`, `e_p` the downward edge `prev(v) -> v` starting at `v`;
@@ -94,6 +103,34 @@
 //! to a helper below; a split helper gets none; a merge vertex helps one edge at a time and both
 //! its neighbours are below it, so they are processed before it and cannot be the upper end.
 //!
+//! # Holes
+//!
+//! Nothing above uses that the boundary is one cycle: every edge has the interior on its left,
+//! whatever its ring; status edges of different rings are disjoint closed segments like those of
+//! one ring (the rings are pairwise disjoint); and the quadrilateral argument of Lemma 3.5 is
+//! local. So with holes the diagonals are again proper, pairwise non-crossing, none repeated, and
+//! no piece has a split or merge vertex. Holes add one question: the shape of the pieces, since a
+//! face of the plane graph (ring edges plus diagonals) could a priori surround a hole or touch
+//! itself at a vertex. Neither happens, because that graph is 2-connected:
+//!
+//! Suppose it falls apart, after removing one vertex `v` or none, into two parts `A` and `B` that
+//! share at most `v`, each with an edge. A ring minus `v` is still connected, so each ring lies
+//! wholly in `A` or in `B`; let `A` be the part without the outer ring, and `H` the vertices of
+//! the holes in `A` (`H` is not empty: an edge of `A` that is a diagonal at `v` has its other end
+//! on a ring of `A`). The lowest vertex `l` of `H` is the lowest of its hole, a split vertex, so it
+//! has a diagonal down to a vertex below all of `H`; the highest `h` is a merge vertex with a
+//! diagonal up to a vertex above all of `H`. Every edge at a vertex of `A` other than `v` lies in
+//! `A`, so if `l != v` the vertex below `l` is in `A` but not in `H`: it is `v`, and `v` is not in
+//! `H`; likewise, if `h != v`, the vertex above `h` is `v`, not in `H`. Since `l != h`, at least
+//! one case applies; if both apply, `v` is below `l` and above `h`, impossible; if one does, `v` is
+//! the other of `l`, `h`, hence in `H`, a contradiction. So in the 2-connected plane graph every
+//! face is bounded by a simple cycle (Diestel, *Graph Theory*, Proposition 4.2.6), and every
+//! bounded face other than a hole is a simple polygon with no hole inside: a monotone piece.
+//!
+//! Count (Euler's formula on the connected graph: n vertices, n + D edges for D diagonals, D + 2
+//! faces): the pieces are the D + 2 faces minus the unbounded one and the w holes, i.e. D + 1 - w,
+//! and their vertex counts sum to n + 2D (a ring edge bounds one piece, a diagonal two).
+//!
 //! # Splitting into pieces
 //!
 //! The polygon edges and diagonals form a plane graph. Around each vertex the neighbours are
@@ -101,7 +138,8 @@
 //! angle, which is then swept up to the previous boundary vertex; the sort is exact: half-plane,
 //! then [`cross`]). Each piece is then the cycle of half-edges with the piece on their left: after
 //! `u -> w` comes `w -> x`, `x` the neighbour of `w` just before `u` counter-clockwise. Each
-//! piece comes out counter-clockwise.
+//! piece comes out counter-clockwise. The half-edges `v -> prev(v)` have the outside of the polygon
+//! (the unbounded face or a hole) on their left and start no walk.
 //!
 //! # Monotone pieces, with flat vertices
 //!
@@ -139,15 +177,17 @@
 //!
 //! Count: each emitted triangle removes exactly one vertex from `Q` (a same-chain triangle `s_k`;
 //! a fan of k triangles `s_0..s_(k-1)`; the final fan of k triangles all k + 2 vertices left), so
-//! there are exactly m - 2, all positive. Over all pieces (D diagonals, D + 1 pieces, vertex
-//! counts summing to n + 2D) that is n - 2. In particular a positive triangulation of a monotone
-//! polygon with flat vertices always exists.
+//! there are exactly m - 2, all positive. Over all pieces (D diagonals, D + 1 - w pieces, vertex
+//! counts summing to n + 2D, see "Holes") that is n + 2D - 2(D + 1 - w) = n + 2w - 2. In
+//! particular a positive triangulation of a monotone polygon with flat vertices always exists.
 //!
 //! # Complexity and departures
 //!
 //! O(n log n) time (the sort by height, O(log n) per status operation, the angular sort of the
 //! neighbours of each vertex), O(n) memory (status, helpers, at most one diagonal per split or
-//! merge vertex, the adjacency of the plane graph, one stack). Departures from the textbook: the
+//! merge vertex, the adjacency of the plane graph, one stack), whatever the number of holes: holes
+//! are swept like any other boundary, never bridged one by one to the outer ring (which costs
+//! O(n) per hole in ear clippers such as earcut). Departures from the textbook: the
 //! sweep runs upward in the `(y, x)` order instead of downward with ties broken by x, which removes
 //! every special case for horizontal edges and equal heights; the status comparator is the
 //! orientation test above instead of computed intersections; pieces are found by face walking over
@@ -160,32 +200,81 @@ use std::collections::BTreeSet;
 
 /// Triangulates one counter-clockwise simple polygon given as its cycle of points (flat vertices
 /// allowed, no two points equal): exactly `len - 2` counter-clockwise triangles of positive area,
-/// as indices into `pts`. See the module documentation for the contract and the method.
-// Not yet called outside the tests: the callers (ear for large inputs, MINITRI's pieces) are
-// wired in separately.
+/// as indices into `pts` (none for fewer than 3 points). The case without holes of
+/// [`triangulate_rings`].
 pub(crate) fn triangulate_cycle(pts: &[Point]) -> Vec<[usize; 3]> {
-    let n = pts.len();
-    if n < 3 {
+    if pts.len() < 3 {
         return Vec::new();
     }
-    let mut triangles = Vec::with_capacity(n - 2);
+    triangulate_rings(pts, &[0])
+}
+
+/// Triangulates a polygon with holes given as its rings of points one after another:
+/// `ring_starts[k]` is the index in `pts` of the first point of ring `k` (so `ring_starts[0] ==
+/// 0`), ring `k` runs up to `ring_starts[k + 1]` (the last ring up to `pts.len()`); ring 0 is the
+/// outer ring, counter-clockwise, the others are holes, clockwise. Returns exactly
+/// `n + 2w - 2` counter-clockwise triangles of positive area (`n = pts.len()`, `w` holes), as
+/// indices into `pts`. See the module documentation for the full contract and the method.
+///
+/// # Panics
+/// If `ring_starts` does not describe rings of at least 3 points each (it must start at 0 and
+/// increase by at least 3 from one ring start to the next and to `pts.len()`), and, as a broken
+/// invariant, on input outside the module's contract (crossing or touching rings, equal points,
+/// spikes, wrong orientations) when it is detected.
+pub(crate) fn triangulate_rings(pts: &[Point], ring_starts: &[usize]) -> Vec<[usize; 3]> {
+    let n = pts.len();
+    let links = Links::new(n, ring_starts);
+    let holes = ring_starts.len() - 1;
+    let expected = n + 2 * holes - 2;
+    let mut triangles = Vec::with_capacity(expected);
     let mut work = Work::default();
-    let diagonals = Sweep::run(pts);
+    let diagonals = Sweep::run(pts, &links);
     if diagonals.is_empty() {
+        // One monotone ring (a hole always gets diagonals at its lowest and highest vertices).
         let cycle: Vec<usize> = (0..n).collect();
         triangulate_monotone(pts, &cycle, &mut work, &mut triangles);
     } else {
-        let (vertices, starts) = pieces(pts, &diagonals);
+        let (vertices, starts) = pieces(pts, &links, &diagonals);
         for w in starts.windows(2) {
             triangulate_monotone(pts, &vertices[w[0]..w[1]], &mut work, &mut triangles);
         }
     }
     assert_eq!(
         triangles.len(),
-        n - 2,
+        expected,
         "monotone triangulation: wrong triangle count, invariant broken"
     );
     triangles
+}
+
+/// The boundary neighbours of every point of a set of rings stored one after another.
+struct Links {
+    next: Vec<usize>,
+    prev: Vec<usize>,
+}
+
+impl Links {
+    /// The links of rings starting at `ring_starts` (see [`triangulate_rings`]) in `0..n`.
+    fn new(n: usize, ring_starts: &[usize]) -> Links {
+        assert!(
+            ring_starts.first() == Some(&0),
+            "ring starts must begin with 0, got {ring_starts:?}"
+        );
+        let mut next = vec![0; n];
+        let mut prev = vec![0; n];
+        for (k, &first) in ring_starts.iter().enumerate() {
+            let end = ring_starts.get(k + 1).copied().unwrap_or(n);
+            assert!(
+                end >= first + 3 && end <= n,
+                "ring {k} of {ring_starts:?} has fewer than 3 of the {n} points"
+            );
+            for i in first..end {
+                next[i] = if i + 1 == end { first } else { i + 1 };
+                prev[i] = if i == first { end - 1 } else { i - 1 };
+            }
+        }
+        Links { next, prev }
+    }
 }
 
 /// The sweep key of a point: lexicographic `(y, x)`, the height order of the module
@@ -293,6 +382,7 @@ impl Ord for Cut {
 /// The state of the monotone-decomposition sweep.
 struct Sweep<'a> {
     pts: &'a [Point],
+    links: &'a Links,
     kind: Vec<Kind>,
     status: BTreeSet<Cut>,
     /// `helper[e]` for every edge `e` in the status.
@@ -303,13 +393,14 @@ struct Sweep<'a> {
 impl<'a> Sweep<'a> {
     /// The diagonals splitting the polygon into monotone pieces (proper, pairwise
     /// non-crossing, none repeated).
-    fn run(pts: &'a [Point]) -> Vec<[usize; 2]> {
+    fn run(pts: &'a [Point], links: &'a Links) -> Vec<[usize; 2]> {
         let n = pts.len();
         let kind = (0..n)
-            .map(|v| Kind::of(pts[(v + n - 1) % n], pts[v], pts[(v + 1) % n]))
+            .map(|v| Kind::of(pts[links.prev[v]], pts[v], pts[links.next[v]]))
             .collect();
         let mut sweep = Sweep {
             pts,
+            links,
             kind,
             status: BTreeSet::new(),
             helper: vec![usize::MAX; n],
@@ -324,29 +415,13 @@ impl<'a> Sweep<'a> {
         sweep.diagonals
     }
 
-    fn next(&self, i: usize) -> usize {
-        if i + 1 == self.pts.len() {
-            0
-        } else {
-            i + 1
-        }
-    }
-
-    fn prev(&self, i: usize) -> usize {
-        if i == 0 {
-            self.pts.len() - 1
-        } else {
-            i - 1
-        }
-    }
-
     fn cut(&self, e: usize) -> Cut {
-        Cut::new(self.pts[e], self.pts[self.next(e)], e)
+        Cut::new(self.pts[e], self.pts[self.links.next[e]], e)
     }
 
     /// Processes vertex `v` (see the action table of the module documentation).
     fn event(&mut self, v: usize) {
-        let p = self.prev(v);
+        let p = self.links.prev[v];
         match self.kind[v] {
             Kind::Start => self.insert(p, v),
             Kind::End => self.finish(v, v),
@@ -410,12 +485,13 @@ impl<'a> Sweep<'a> {
     }
 }
 
-/// The pieces cut out of the polygon by `diagonals` (proper, pairwise non-crossing): all their
-/// vertex cycles, counter-clockwise, concatenated, and the start of each (plus the end).
-fn pieces(pts: &[Point], diagonals: &[[usize; 2]]) -> (Vec<usize>, Vec<usize>) {
+/// The pieces cut out of the polygon by `diagonals` (proper, pairwise non-crossing, connecting
+/// the rings without cut vertex, see "Holes" in the module documentation): all their vertex
+/// cycles, counter-clockwise, concatenated, and the start of each (plus the end).
+fn pieces(pts: &[Point], links: &Links, diagonals: &[[usize; 2]]) -> (Vec<usize>, Vec<usize>) {
     let n = pts.len();
-    let next = |i: usize| if i + 1 == n { 0 } else { i + 1 };
-    let prev = |i: usize| if i == 0 { n - 1 } else { i - 1 };
+    let next = |i: usize| links.next[i];
+    let prev = |i: usize| links.prev[i];
     // Adjacency lists: `start[v]..start[v + 1]` holds next(v), the diagonal ends sorted
     // counter-clockwise, prev(v). A slot is also the half-edge from `v` to the neighbour there.
     let mut start = vec![0usize; n + 1];

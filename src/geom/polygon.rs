@@ -267,6 +267,12 @@ impl Polygon {
         Ring::from_index(self.ring_index(i))
     }
 
+    /// The stored index of the first vertex of each ring, outer ring first (so the first is 0);
+    /// ring `r` runs up to the start of ring `r + 1`, the last one up to [`Polygon::len`].
+    pub fn ring_starts(&self) -> &[usize] {
+        &self.ring_starts[..self.ring_starts.len() - 1]
+    }
+
     /// The stored vertex indices of ring `r` (0 = outer).
     pub fn ring_range(&self, r: usize) -> Range<usize> {
         self.ring_starts[r]..self.ring_starts[r + 1]

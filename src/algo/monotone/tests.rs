@@ -582,3 +582,268 @@ fn large_random_star() {
     assert_eq!(Some(sum), p.twice_area().value());
     check_cycle(p.points());
 }
+
+// ---------- polygons with holes ----------
+
+/// Builds the polygon through the real constructor (so it is valid: holes may be given either
+/// way round) and checks [`triangulate_rings`] on its rings completely: n + 2w - 2 positive
+/// triangles; every directed side a ring edge `i -> next(i)` or matched by its reverse; every ring
+/// edge used once, never backwards; twice-areas summing to the polygon's; pairwise disjoint
+/// interiors for small inputs; and the independent checker of `verify.rs`.
+fn check_holed(rings: &[&[(i64, i64)]]) -> Vec<[usize; 3]> {
+    let p = polygon(rings);
+    p.check_invariants();
+    let (n, w) = (p.len(), p.holes());
+    let pts = p.points();
+    let t = triangulate_rings(pts, p.ring_starts());
+    assert_eq!(t.len(), n + 2 * w - 2, "wrong count for {rings:?}");
+    let mut area = 0i128;
+    for &[a, b, c] in &t {
+        let s = cross(pts[a], pts[b], pts[c]);
+        assert!(s > 0, "triangle {a} {b} {c} not positive in {rings:?}");
+        area += s;
+    }
+    assert_eq!(
+        Some(area),
+        p.twice_area().value(),
+        "areas differ for {rings:?}"
+    );
+    let mut sides = HashSet::with_capacity(3 * t.len());
+    for &[a, b, c] in &t {
+        for side in [(a, b), (b, c), (c, a)] {
+            assert!(sides.insert(side), "side {side:?} used twice in {rings:?}");
+        }
+    }
+    for &(a, b) in &sides {
+        assert!(
+            b == p.next(a) || sides.contains(&(b, a)),
+            "side {a} {b} unmatched in {rings:?}"
+        );
+    }
+    for i in 0..n {
+        let j = p.next(i);
+        assert!(sides.contains(&(i, j)), "edge {i} {j} missing in {rings:?}");
+        assert!(
+            !sides.contains(&(j, i)),
+            "edge {i} {j} reversed in {rings:?}"
+        );
+    }
+    if n <= 200 {
+        for (k, s) in t.iter().enumerate() {
+            for r in &t[k + 1..] {
+                assert!(separated(pts, s, r), "{s:?} and {r:?} overlap in {rings:?}");
+            }
+        }
+    }
+    let made = crate::algo::Triangulation {
+        algorithm: crate::algo::Algorithm::Ear,
+        triangles: t.clone(),
+        degenerate: Vec::new(),
+        optimal: false,
+        lower_bound: None,
+    };
+    let report = crate::verify::check(&p, &made);
+    assert!(report.valid, "{rings:?}: {:?}", report.problems);
+    t
+}
+
+/// `check_holed` on the rings turned by 0, 1, 2 and 3 quarter turns, and mirrored (which turns
+/// every ring's orientation: the constructor normalises it).
+fn check_holed_all_ways(rings: &[Vec<(i64, i64)>]) {
+    for q in 0..4 {
+        let turned_rings: Vec<Vec<(i64, i64)>> = rings.iter().map(|r| turned(r, q)).collect();
+        let refs: Vec<&[(i64, i64)]> = turned_rings.iter().map(Vec::as_slice).collect();
+        check_holed(&refs);
+        let mirrored: Vec<Vec<(i64, i64)>> = turned_rings
+            .iter()
+            .map(|r| r.iter().map(|&(x, y)| (-x, y)).collect())
+            .collect();
+        let refs: Vec<&[(i64, i64)]> = mirrored.iter().map(Vec::as_slice).collect();
+        check_holed(&refs);
+    }
+}
+
+/// An axis-parallel rectangle ring, counter-clockwise from its lower-left corner.
+fn rect(x0: i64, y0: i64, x1: i64, y1: i64) -> Vec<(i64, i64)> {
+    vec![(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
+}
+
+#[test]
+fn the_cycle_entry_is_the_case_without_holes() {
+    let pts: Vec<Point> = U_SHAPE.iter().map(|&(x, y)| pt(x, y)).collect();
+    assert_eq!(triangulate_cycle(&pts), triangulate_rings(&pts, &[0]));
+    assert!(triangulate_cycle(&pts[..2]).is_empty());
+}
+
+#[test]
+#[should_panic(expected = "fewer than 3")]
+fn ring_starts_must_describe_rings_of_three_points() {
+    let pts: Vec<Point> = U_SHAPE.iter().map(|&(x, y)| pt(x, y)).collect();
+    triangulate_rings(&pts, &[0, 10]);
+}
+
+#[test]
+fn square_with_a_square_hole() {
+    let t = check_holed(&[&rect(0, 0, 4, 4), &rect(1, 1, 3, 3)]);
+    assert_eq!(t.len(), 8);
+    // Off centre, thin, and touching nothing but close to every side.
+    check_holed_all_ways(&[rect(0, 0, 10, 10), rect(1, 6, 9, 9)]);
+    check_holed_all_ways(&[rect(0, 0, 3, 3), rect(1, 1, 2, 2)]);
+    check_holed_all_ways(&[rect(0, 0, 100, 3), rect(1, 1, 99, 2)]);
+    // A triangle in a triangle, and a hole that is a triangle in a square.
+    check_holed_all_ways(&[vec![(0, 0), (12, 0), (6, 12)], vec![(4, 2), (8, 2), (6, 6)]]);
+    check_holed_all_ways(&[rect(0, 0, 6, 6), vec![(1, 1), (5, 2), (2, 5)]]);
+}
+
+#[test]
+fn holes_with_flat_vertices() {
+    // Every lattice point of the hole's boundary is a vertex (8 vertices, 4 of them flat).
+    let hole = vec![
+        (1, 1),
+        (2, 1),
+        (3, 1),
+        (3, 2),
+        (3, 3),
+        (2, 3),
+        (1, 3),
+        (1, 2),
+    ];
+    check_holed_all_ways(&[rect(0, 0, 4, 4), hole.clone()]);
+    // The same with flat vertices on the outer ring too, on the same lines as the hole's.
+    let outer: Vec<(i64, i64)> = (0..4)
+        .map(|x| (x, 0))
+        .chain((0..4).map(|y| (4, y)))
+        .chain((0..4).map(|x| (4 - x, 4)))
+        .chain((0..4).map(|y| (0, 4 - y)))
+        .collect();
+    check_holed_all_ways(&[outer.clone(), hole]);
+    // A diamond hole with a flat vertex in the middle of every side, and a long flat run.
+    let diamond = vec![
+        (4, 1),
+        (5, 2),
+        (6, 3),
+        (5, 4),
+        (4, 5),
+        (3, 4),
+        (2, 3),
+        (3, 2),
+    ];
+    check_holed_all_ways(&[rect(0, 0, 8, 6), diamond]);
+    let run: Vec<(i64, i64)> = (1..10).map(|x| (x, 1)).chain([(9, 2), (5, 3)]).collect();
+    check_holed_all_ways(&[rect(0, 0, 10, 4), run]);
+}
+
+#[test]
+fn holes_level_with_outer_vertices() {
+    // A notch from the top down to y = 2, level with the holes' bottoms (their tops at y = 4);
+    // in the second case one more hole whose top edge, at y = 2, lies on the line of the notch's
+    // bottom, which it does not touch, and whose bottom is level with nothing.
+    let outer = vec![
+        (0, 0),
+        (12, 0),
+        (12, 6),
+        (8, 6),
+        (8, 2),
+        (7, 2),
+        (7, 6),
+        (0, 6),
+    ];
+    check_holed_all_ways(&[outer.clone(), rect(2, 2, 4, 4), rect(9, 2, 11, 4)]);
+    check_holed_all_ways(&[
+        outer.clone(),
+        rect(2, 2, 4, 4),
+        rect(9, 2, 11, 4),
+        rect(5, 1, 6, 2),
+    ]);
+    // Hole corners collinear with outer corners along verticals, horizontals and diagonals: a
+    // diamond whose tip points at an outer corner, and a hole whose vertices share both lines of
+    // an outer reflex corner.
+    check_holed_all_ways(&[rect(0, 0, 8, 8), vec![(2, 2), (4, 1), (6, 2), (4, 4)]]);
+    let l = vec![(0, 0), (8, 0), (8, 4), (4, 4), (4, 8), (0, 8)];
+    check_holed_all_ways(&[l.clone(), vec![(1, 4), (3, 4), (2, 6)]]);
+    check_holed_all_ways(&[l.clone(), vec![(4, 1), (4, 3), (6, 2)]]);
+    check_holed_all_ways(&[
+        l.clone(),
+        vec![(1, 1), (3, 3), (1, 3)],
+        vec![(5, 1), (7, 1), (7, 3)],
+    ]);
+    // Split and merge vertices of different holes at the same height, and a hole's lowest vertex
+    // level with the outer ring's lowest-but-one.
+    check_holed_all_ways(&[
+        vec![(0, 0), (10, 0), (10, 10), (5, 9), (0, 10)],
+        vec![(2, 2), (3, 4), (1, 4)],
+        vec![(5, 4), (6, 2), (7, 4)],
+        vec![(8, 2), (9, 4), (8, 6), (7, 5)],
+        vec![(2, 6), (4, 6), (3, 8)],
+    ]);
+}
+
+#[test]
+fn many_holes_in_a_row_at_equal_heights() {
+    for k in [1i64, 2, 5, 20] {
+        // Square holes in a row: all bottoms at one height, all tops at another.
+        let mut rings = vec![rect(0, 0, 4 * k + 1, 5)];
+        rings.extend((0..k).map(|i| rect(4 * i + 1, 1, 4 * i + 3, 3)));
+        check_holed_all_ways(&rings);
+        // Triangles pointing up and down alternately, and diamonds: split and merge vertices
+        // level with each other and with the outer ring's flat vertices.
+        let mut outer = vec![(0, 0)];
+        outer.extend((1..=k).map(|i| (4 * i, 0)));
+        outer.extend([(4 * k + 2, 0), (4 * k + 2, 8)]);
+        outer.extend((0..=k).rev().map(|i| (4 * i, 8)));
+        let mut rings = vec![outer];
+        for i in 0..k {
+            let x = 4 * i + 1;
+            rings.push(if i % 2 == 0 {
+                vec![(x, 1), (x + 2, 1), (x + 1, 3)]
+            } else {
+                vec![(x, 3), (x + 1, 1), (x + 2, 3)]
+            });
+            rings.push(vec![(x + 1, 4), (x + 2, 5), (x + 1, 6), (x, 5)]);
+        }
+        check_holed_all_ways(&rings);
+    }
+    // A 10 x 10 grid of unit-square holes with flat vertices on every hole side.
+    let mut rings = vec![rect(0, 0, 31, 31)];
+    for i in 0..10 {
+        for j in 0..10 {
+            let (x, y) = (3 * i + 1, 3 * j + 1);
+            rings.push(vec![
+                (x, y),
+                (x + 1, y),
+                (x + 2, y),
+                (x + 2, y + 2),
+                (x + 1, y + 2),
+                (x, y + 2),
+            ]);
+        }
+    }
+    let refs: Vec<&[(i64, i64)]> = rings.iter().map(Vec::as_slice).collect();
+    check_holed(&refs);
+}
+
+#[test]
+fn jittered_grid_of_triangular_holes() {
+    // The benchmark family: many small triangles, each in its own cell, randomly placed.
+    let mut rng = Rng(0x5EED_0004);
+    for (cells, span) in [(5i64, 4i64), (30, 8), (60, 1000)] {
+        let side = cells * span;
+        let mut rings = vec![rect(0, 0, side + 2, side + 2)];
+        for i in 0..cells {
+            for j in 0..cells {
+                let (x, y) = (i * span + 1, j * span + 1);
+                let hole = loop {
+                    let t: Vec<(i64, i64)> = (0..3)
+                        .map(|_| (x + rng.int(0, span - 1), y + rng.int(0, span - 1)))
+                        .collect();
+                    if !collinear(t[0], t[1], t[2]) {
+                        break t;
+                    }
+                };
+                rings.push(hole);
+            }
+        }
+        let refs: Vec<&[(i64, i64)]> = rings.iter().map(Vec::as_slice).collect();
+        check_holed(&refs);
+    }
+}
