@@ -438,6 +438,25 @@ fn check(poly: &Polygon, exhaustive_up_to: usize, stats: &mut Stats) -> Result<(
     prop_assert_eq!(count, n + 2 * w - 2 - dp.degenerate.len());
     let (lower, upper) = poly.minimum_bounds();
     prop_assert!(lower <= count && count <= upper);
+    // MINITRI with holes (dependency graph, exact search, cuts) must reach the same minimum,
+    // prove it (the search finishes on these sizes), and pass the checker.
+    let fast = minitri::algo::minitri::triangulate_general(poly, None)
+        .map_err(|e| TestCaseError::fail(e.to_string()))?;
+    let report = verify::check(poly, &fast);
+    prop_assert!(
+        report.valid,
+        "MINITRI output invalid on {:?}: {:?}",
+        poly.points(),
+        report.problems
+    );
+    prop_assert!(fast.optimal);
+    prop_assert_eq!(
+        fast.triangles.len(),
+        count,
+        "MINITRI vs DP on {:?} (rings {:?})",
+        poly.points(),
+        (0..=w).map(|r| poly.ring_range(r)).collect::<Vec<_>>()
+    );
     stats.cases += 1;
     stats.with_flat += usize::from(poly.flat_vertices() > 0);
     stats.collinear_across_rings += usize::from(collinear_across_rings(poly));

@@ -119,13 +119,10 @@ fn reflex_or_flat(polygon: &Polygon, b: usize, out: &mut Vec<Degenerate>) -> boo
     turn < 0
 }
 
-/// All minimally degenerate triangles of a polygon without holes, by triangular expansion from
+/// All minimally degenerate triangles of a polygon (holes allowed), by triangular expansion from
 /// each reflex vertex inside its double cone ([`super::expansion`]) over a plain triangulation.
 pub fn minimally_degenerate(polygon: &Polygon) -> Vec<Degenerate> {
-    let mesh = Mesh::new(
-        polygon,
-        crate::algo::monotone::triangulate_cycle(polygon.points()),
-    );
+    let mesh = Mesh::new(polygon, crate::algo::plain_polygon(polygon));
     let mut out = Vec::new();
     for b in 0..polygon.len() {
         if !reflex_or_flat(polygon, b, &mut out) {

@@ -48,7 +48,8 @@ pub struct Mesh {
 const NONE: u32 = u32::MAX;
 
 impl Mesh {
-    /// Builds the neighbour structure of counter-clockwise `triangles` of a polygon without holes.
+    /// Builds the neighbour structure of counter-clockwise `triangles` of a polygon (holes allowed:
+    /// the walks stop at every ring edge alike).
     pub fn new(polygon: &Polygon, triangles: Vec<[usize; 3]>) -> Mesh {
         let mut by_edge: HashMap<(usize, usize), u32> = HashMap::with_capacity(3 * triangles.len());
         for (t, tri) in triangles.iter().enumerate() {

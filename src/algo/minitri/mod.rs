@@ -83,11 +83,7 @@ pub fn triangulate_general(
     polygon: &Polygon,
     deadline: Option<Instant>,
 ) -> Result<Triangulation, TriangulateError> {
-    let mdts = if polygon.holes() > 0 {
-        degenerate::minimally_degenerate_by_sweep(polygon)
-    } else {
-        degenerate::minimally_degenerate(polygon)
-    };
+    let mdts = degenerate::minimally_degenerate(polygon);
     let graph = dependency::graph(polygon, &mdts);
     let found = branch_and_bound::maximum_independent_set(&graph, deadline);
     let chosen: Vec<degenerate::Degenerate> = found.set.iter().map(|&t| mdts[t]).collect();
