@@ -1,6 +1,7 @@
 //! Integration tests: one binary (`autotests = false`), modules per topic.
 
 mod cli;
+mod earcut;
 mod holes_dp;
 mod property;
 mod util;
