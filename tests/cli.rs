@@ -116,7 +116,10 @@ fn ear_triangulates_polygons_with_holes_into_n_plus_2w_minus_2_and_verifies() {
         assert_eq!(v["ok"], true, "{name}: {v}");
         let checks = v["checks"].as_array().unwrap();
         assert_eq!(checks[0]["algorithm"], "ear");
-        assert_eq!(checks[1]["algorithm"], "minitri", "{name}: minitri handles holes");
+        assert_eq!(
+            checks[1]["algorithm"], "minitri",
+            "{name}: minitri handles holes"
+        );
         assert!(checks.iter().all(|c| c["valid"] == true), "{name}: {v}");
     }
 }

@@ -22,12 +22,18 @@ fn every_earcut_fixture_is_triangulated_and_verified_or_rejected_clearly() {
         if outcome == "triangulated" {
             assert_eq!(code, 0, "{name}: {err}");
             let p = &doc["polygons"][0];
-            assert_eq!(p["verification"]["ok"], true, "{name}: {}", p["verification"]);
+            assert_eq!(
+                p["verification"]["ok"], true,
+                "{name}: {}",
+                p["verification"]
+            );
             triangulated += 1;
             let count = p["triangle_count"].as_u64().expect("a count");
             let exact = earcut["errors"].get(name.as_str()).is_none();
             if p["optimal"] == true && exact {
-                let theirs = earcut["triangles"][name.as_str()].as_u64().expect("earcut count");
+                let theirs = earcut["triangles"][name.as_str()]
+                    .as_u64()
+                    .expect("earcut count");
                 assert!(count <= theirs, "{name}: {count} > earcut's {theirs}");
                 compared += 1;
             }
@@ -35,8 +41,14 @@ fn every_earcut_fixture_is_triangulated_and_verified_or_rejected_clearly() {
             assert_eq!(code, 1, "{name}: rejected");
             let message = doc["errors"][0]["message"].as_str().expect("a message");
             assert!(message.starts_with(outcome.as_str()), "{name}: {message}");
-            assert!(err.contains(name.as_str()), "{name}: the error names the file: {err}");
+            assert!(
+                err.contains(name.as_str()),
+                "{name}: the error names the file: {err}"
+            );
         }
     }
-    assert!(triangulated >= 12 && compared >= 5, "{triangulated} {compared}");
+    assert!(
+        triangulated >= 12 && compared >= 5,
+        "{triangulated} {compared}"
+    );
 }

@@ -27,7 +27,7 @@ use std::ops::Bound::{Excluded, Unbounded};
 #[non_exhaustive]
 pub enum InvalidPolygon {
     /// A ring with fewer than 3 distinct vertices.
-    #[error("{ring} has {distinct} distinct vertices; a ring needs at least 3")]
+    #[error("{ring} has {distinct} distinct {}; a ring needs at least 3{}", if *distinct == 1 { "vertex" } else { "vertices" }, if *distinct == 1 && !matches!(ring, Ring::Outer) { " (a single point is not a hole; minitri takes no interior points)" } else { "" })]
     TooFewVertices {
         /// The ring.
         ring: Ring,
