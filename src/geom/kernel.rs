@@ -4,7 +4,8 @@
 //! `0..=MAX_COORD` (`2^62`), which [`crate::geom::polygon`] guarantees. Every difference then fits
 //! an `i64` with room to spare, every product of two differences is below `2^124`, and every 2x2
 //! determinant below `2^125`, so all predicates below are exact in `i128` and cannot overflow.
-//! Output guarantee: exact answers as named enums or booleans; no epsilon anywhere.
+//! Output guarantee: exact answers as named enums or booleans; no epsilon anywhere. The one
+//! exception, [`incircle_approx`], is named as such and serves speed heuristics only.
 //! Complexity: O(1) each.
 
 use std::cmp::Ordering;
@@ -244,6 +245,21 @@ pub fn cmp_dir_from(reference: Dir, a: Dir, b: Dir) -> Ordering {
         }
     };
     half(a).cmp(&half(b)).then_with(|| 0.cmp(&a.cross(b)))
+}
+
+/// APPROXIMATELY whether `d` lies inside the circle through the counter-clockwise triangle
+/// `a b c`: positive inside, negative outside, computed in floating point and so possibly wrong
+/// (even in sign) when `d` is near the circle.
+///
+/// The one inexact predicate of the kernel, for heuristics only: it may steer how fast an
+/// algorithm runs (which diagonals to flip to fatten triangles), never a geometric fact of an
+/// answer. The exact determinant would need about 250 bits.
+pub fn incircle_approx(a: Point, b: Point, c: Point, d: Point) -> f64 {
+    let rel = |p: Point| ((p.x - d.x) as f64, (p.y - d.y) as f64);
+    let ((ax, ay), (bx, by), (cx, cy)) = (rel(a), rel(b), rel(c));
+    (ax * ax + ay * ay) * (bx * cy - cx * by)
+        + (bx * bx + by * by) * (cx * ay - ax * cy)
+        + (cx * cx + cy * cy) * (ax * by - bx * ay)
 }
 
 /// An exact sum of many `i128` values (areas of large polygons), immune to overflow.

@@ -25,12 +25,15 @@
 //! the test population (thousands of random grid polygons, most with flat vertices) K < 2n - 1
 //! still held, which `tests/property.rs` keeps watching.
 //!
-//! Complexity: a plain triangulation, then work proportional to the triangles seen inside each
-//! reflex vertex's double cone: O(n^2) in the worst case (every reflex vertex seeing most of the
-//! polygon), near-linear on typical polygons (see the README's benchmarks). The paper's
-//! O(n log^2 n) worst case (polygon cutting and ray shooting) is not implemented.
+//! Complexity: a plain triangulation (O(n log n)), at most `4 n` edge flips to fatten it, then
+//! work proportional to the triangles met inside each reflex vertex's double cone where both
+//! cones may still see a vertex: O(n^2) in the worst case (every reflex vertex seeing most of the
+//! polygon in two opposite directions), near-linear on typical polygons (on random star polygons
+//! about 40-50 triangle visits per vertex from 10^4 to 10^6 vertices; see [`super::expansion`]
+//! and the README's benchmarks). The paper's O(n log^2 n) worst case (polygon cutting and ray
+//! shooting) is not implemented.
 
-use super::expansion::{double_cone, Mesh};
+use super::expansion::{double_cone, Mesh, Workspace};
 use crate::algo::chords::visible_from;
 use crate::geom::kernel::{cmp_angle, cross, Dir};
 use crate::geom::polygon::Polygon;
@@ -119,16 +122,23 @@ fn reflex_or_flat(polygon: &Polygon, b: usize, out: &mut Vec<Degenerate>) -> boo
     turn < 0
 }
 
+/// The most edge flips made per vertex to fatten the triangulation walked: a bound, since the
+/// flips are steered by inexact incircle tests ([`Mesh::flip_towards_delaunay`]). Random star and
+/// rectilinear polygons need at most about 3.5 flips per vertex.
+const FLIPS_PER_VERTEX: usize = 4;
+
 /// All minimally degenerate triangles of a polygon (holes allowed), by triangular expansion from
 /// each reflex vertex inside its double cone ([`super::expansion`]) over a plain triangulation.
 pub fn minimally_degenerate(polygon: &Polygon) -> Vec<Degenerate> {
-    let mesh = Mesh::new(polygon, crate::algo::plain_polygon(polygon));
+    let mut mesh = Mesh::new(polygon, crate::algo::plain_polygon(polygon));
+    mesh.flip_towards_delaunay(polygon, FLIPS_PER_VERTEX * polygon.len());
     let mut out = Vec::new();
+    let mut work = Workspace::default();
     for b in 0..polygon.len() {
         if !reflex_or_flat(polygon, b, &mut out) {
             continue;
         }
-        let (first, second) = double_cone(polygon, &mesh, b);
+        let (first, second) = double_cone(polygon, &mesh, b, &mut work);
         // Opposite directions are at the same place of the two cones (both sorted by angle).
         let c = polygon.point(b);
         let dir = |v: usize| Dir::between(c, polygon.point(v));

@@ -240,6 +240,130 @@ fn crossing_components_match_brute_force() {
     }
 }
 
+/// A random simple polygon on the grid 0..=8 (many collinear points and flat vertices): a
+/// triangle into which up to `inserts` random points are inserted along the boundary, each kept
+/// if the polygon stays valid.
+fn random_ring(rnd: &mut impl FnMut(i64) -> i64, inserts: i64) -> Vec<(i64, i64)> {
+    let mut ring: Vec<(i64, i64)> = vec![(0, 0), (8, 0), (4, 8)];
+    for _ in 0..rnd(inserts) {
+        let at = rnd(ring.len() as i64) as usize + 1;
+        let mut next = ring.clone();
+        next.insert(at, (rnd(9), rnd(9)));
+        if Polygon::from_raw(&crate::test_support::raw(&[&next])).is_ok() {
+            ring = next;
+        }
+    }
+    ring
+}
+
+/// A random star-shaped polygon: `n` points at random angles and radii around the origin,
+/// sorted by angle (exactly), on a grid of about +-`scale`.
+fn random_star(rnd: &mut impl FnMut(i64) -> i64, n: usize, scale: i64) -> Vec<(i64, i64)> {
+    use crate::geom::kernel::{cmp_angle, Point};
+    let mut points: Vec<Point> = (0..n)
+        .map(|_| {
+            let (angle, radius) = (
+                rnd(1 << 20) as f64,
+                (3 + rnd(8)) as f64 * scale as f64 / 10.0,
+            );
+            let a = angle / f64::from(1 << 20) * std::f64::consts::TAU;
+            Point::new(
+                (radius * a.cos()).round() as i64,
+                (radius * a.sin()).round() as i64,
+            )
+        })
+        .filter(|&q| q != Point::new(0, 0))
+        .collect();
+    let o = Point::new(0, 0);
+    points.sort_by(|&a, &b| {
+        cmp_angle(o, a, b).then_with(|| (a.x * a.x + a.y * a.y).cmp(&(b.x * b.x + b.y * b.y)))
+    });
+    points.dedup();
+    points.iter().map(|q| (q.x, q.y)).collect()
+}
+
+#[test]
+fn expansion_matches_the_sweep_on_stars() {
+    // Star polygons on small grids: reflex vertices seeing far in both cones, with many exactly
+    // opposite directions, exercise the pruning of each cone by the other.
+    let mut seed = 0x0dd5_7a75_0000_0001u64;
+    let mut rnd = |n: i64| {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed % n as u64) as i64
+    };
+    let (mut tested, mut found) = (0, 0);
+    for k in 0..600 {
+        let ring = random_star(&mut rnd, 8 + k % 60, [6, 12, 25][k % 3]);
+        let Ok((p, _)) = Polygon::from_raw(&crate::test_support::raw(&[&ring])) else {
+            continue;
+        };
+        let key = |m: &Degenerate| (m.a, m.b, m.c);
+        let mut fast: Vec<_> = minimally_degenerate(&p).iter().map(key).collect();
+        let mut slow: Vec<_> = super::degenerate::minimally_degenerate_by_sweep(&p)
+            .iter()
+            .map(key)
+            .collect();
+        fast.sort_unstable();
+        slow.sort_unstable();
+        assert_eq!(fast, slow, "{ring:?}");
+        tested += 1;
+        found += fast.len();
+    }
+    assert!(
+        tested > 300 && found > 3000,
+        "{tested} stars, {found} triangles"
+    );
+}
+
+#[test]
+fn flipped_mesh_is_a_triangulation() {
+    use super::expansion::Mesh;
+    use crate::algo::{monotone, Algorithm, Triangulation};
+    let mut seed = 0x5eed_f11b_0000_0001u64;
+    let mut rnd = |n: i64| {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed % n as u64) as i64
+    };
+    let mut polygons: Vec<Polygon> = Vec::new();
+    for _ in 0..1500 {
+        polygons.push(polygon(&[&random_ring(&mut rnd, 40)]));
+    }
+    for seed in 1..=100u64 {
+        polygons.push(bars(4 + (seed as usize % 60), seed));
+    }
+    for k in 0..100 {
+        let ring = random_star(&mut rnd, 10 + k * 3, [10, 1000, 1 << 40][k % 3]);
+        // Points sorted by angle from the origin may still be invalid (collinear with it).
+        if let Ok((p, _)) = Polygon::from_raw(&crate::test_support::raw(&[&ring])) {
+            polygons.push(p);
+        }
+    }
+    assert!(polygons.len() > 1650);
+    let mut flipped = 0;
+    for p in &polygons {
+        for cap in [0, 1, 5, 4 * p.len(), 100 * p.len()] {
+            let mut mesh = Mesh::new(p, monotone::triangulate_cycle(p.points()));
+            flipped += mesh.flip_towards_delaunay(p, cap);
+            mesh.check_invariants(p);
+            let t = Triangulation {
+                algorithm: Algorithm::Ear,
+                triangles: mesh.triangles().to_vec(),
+                degenerate: Vec::new(),
+                optimal: false,
+                lower_bound: None,
+            };
+            assert_eq!(t.triangles.len(), p.len() - 2);
+            let check = crate::verify::check(p, &t);
+            assert!(check.valid, "cap {cap}: {:?}", check.problems);
+        }
+    }
+    assert!(flipped > 10_000, "flips happen: {flipped}");
+}
+
 #[test]
 fn expansion_finds_the_same_triangles_as_the_sweep() {
     let mut seed = 0x7777_1234_abcd_0001u64;
@@ -251,15 +375,7 @@ fn expansion_finds_the_same_triangles_as_the_sweep() {
     };
     let mut with_type_i = 0;
     for _ in 0..3000 {
-        let mut ring: Vec<(i64, i64)> = vec![(0, 0), (8, 0), (4, 8)];
-        for _ in 0..rnd(30) {
-            let at = rnd(ring.len() as i64) as usize + 1;
-            let mut next = ring.clone();
-            next.insert(at, (rnd(9), rnd(9)));
-            if Polygon::from_raw(&crate::test_support::raw(&[&next])).is_ok() {
-                ring = next;
-            }
-        }
+        let ring = random_ring(&mut rnd, 30);
         let p = polygon(&[&ring]);
         let key = |m: &Degenerate| (m.a, m.b, m.c);
         let mut fast: Vec<_> = minimally_degenerate(&p).iter().map(key).collect();
