@@ -72,3 +72,14 @@ pub(crate) fn as_f64(polygons: &[RawPolygon]) -> Vec<Vec<Vec<[f64; 2]>>> {
 fn int(v: i64) -> Decimal {
     d(&v.to_string())
 }
+
+/// A deterministic xorshift generator: `rnd(n)` is a number in `0..n`.
+pub(crate) fn xorshift(seed: u64) -> impl FnMut(i64) -> i64 {
+    let mut state = seed;
+    move |n: i64| {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state % n as u64) as i64
+    }
+}

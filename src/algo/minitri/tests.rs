@@ -286,13 +286,7 @@ fn random_star(rnd: &mut impl FnMut(i64) -> i64, n: usize, scale: i64) -> Vec<(i
 fn expansion_matches_the_sweep_on_stars() {
     // Star polygons on small grids: reflex vertices seeing far in both cones, with many exactly
     // opposite directions, exercise the pruning of each cone by the other.
-    let mut seed = 0x0dd5_7a75_0000_0001u64;
-    let mut rnd = |n: i64| {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed % n as u64) as i64
-    };
+    let mut rnd = crate::test_support::xorshift(0x0dd5_7a75_0000_0001u64);
     let (mut tested, mut found) = (0, 0);
     for k in 0..600 {
         let ring = random_star(&mut rnd, 8 + k % 60, [6, 12, 25][k % 3]);
@@ -321,13 +315,7 @@ fn expansion_matches_the_sweep_on_stars() {
 fn flipped_mesh_is_a_triangulation() {
     use super::expansion::Mesh;
     use crate::algo::{monotone, Algorithm, Triangulation};
-    let mut seed = 0x5eed_f11b_0000_0001u64;
-    let mut rnd = |n: i64| {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed % n as u64) as i64
-    };
+    let mut rnd = crate::test_support::xorshift(0x5eed_f11b_0000_0001u64);
     let mut polygons: Vec<Polygon> = Vec::new();
     for _ in 0..1500 {
         polygons.push(polygon(&[&random_ring(&mut rnd, 40)]));
@@ -366,13 +354,7 @@ fn flipped_mesh_is_a_triangulation() {
 
 #[test]
 fn expansion_finds_the_same_triangles_as_the_sweep() {
-    let mut seed = 0x7777_1234_abcd_0001u64;
-    let mut rnd = |n: i64| {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed % n as u64) as i64
-    };
+    let mut rnd = crate::test_support::xorshift(0x7777_1234_abcd_0001u64);
     let mut with_type_i = 0;
     for _ in 0..3000 {
         let ring = random_ring(&mut rnd, 30);
@@ -399,13 +381,7 @@ fn expansion_finds_the_same_triangles_as_the_sweep() {
 /// 3..=5), so that the plateaus at heights 2 and 3 form long 3b-chains in boundary order, crossed
 /// by vertical degenerate triangles.
 fn bars(columns: usize, seed: u64) -> Polygon {
-    let mut state = seed | 1;
-    let mut rnd = |n: i64| {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        (state % n as u64) as i64
-    };
+    let mut rnd = crate::test_support::xorshift(seed | 1);
     let bottom: Vec<i64> = (0..columns).map(|_| rnd(3)).collect();
     let top: Vec<i64> = (0..columns).map(|_| 3 + rnd(3)).collect();
     let mut ring: Vec<(i64, i64)> = Vec::new();
