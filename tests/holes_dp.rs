@@ -11,8 +11,9 @@
 //! random edges), then up to 2 holes (random grid triangles or rectangles, sometimes with a flat
 //! vertex), each kept when the polygon stays valid.
 
+use crate::util::chord;
 use minitri::algo::{asano, asano_holes};
-use minitri::geom::kernel::{cross, dot, in_closed_wedge, Point};
+use minitri::geom::kernel::{cross, dot, Point};
 use minitri::{verify, Decimal, Polygon, RawPolygon};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed, TestRunner};
@@ -173,34 +174,6 @@ fn build(r: &Recipe) -> Option<Polygon> {
 }
 
 // ---------- an exhaustive minimum, independent of the crate's algorithms ----------
-
-/// Is the closed segment `a b` inside the closed polygon? Straight from the definition.
-fn chord(poly: &Polygon, a: usize, b: usize) -> bool {
-    let (pa, pb) = (poly.point(a), poly.point(b));
-    let wedge = |w: usize, t: Point| {
-        in_closed_wedge(
-            poly.point(poly.prev(w)),
-            poly.point(w),
-            poly.point(poly.next(w)),
-            t,
-        )
-    };
-    if !wedge(a, pb) || !wedge(b, pa) {
-        return false;
-    }
-    (0..poly.len()).all(|w| {
-        let (p, q) = (poly.point(w), poly.point(poly.next(w)));
-        let (o1, o2, o3, o4) = (
-            cross(pa, pb, p),
-            cross(pa, pb, q),
-            cross(p, q, pa),
-            cross(p, q, pb),
-        );
-        let crosses = o1.signum() * o2.signum() < 0 && o3.signum() * o4.signum() < 0;
-        let inside = o1 == 0 && dot(p, pa, pb) < 0;
-        !crosses && (!inside || (wedge(w, pa) && wedge(w, pb)))
-    })
-}
 
 /// Whether the closed segment `p q` meets the open counter-clockwise triangle `t` (separating
 /// axes: a side line of `t` with `p` and `q` outside or on it, or the line `p q` with all of `t`

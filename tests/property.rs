@@ -17,8 +17,9 @@
 //! random polyominoes (every lattice point on the boundary is a vertex, so most are flat).
 //! Either kind is used with its flat vertices, and with them removed.
 
+use crate::util::{chord, xorshift};
 use minitri::algo::{asano, ear, minitri as chen_chang};
-use minitri::geom::kernel::{cross, dot, in_closed_wedge, Point};
+use minitri::geom::kernel::{cross, dot, Point};
 use minitri::{verify, Decimal, Polygon, RawPolygon};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed};
@@ -106,34 +107,6 @@ fn without_flat(ring: &[(i64, i64)]) -> Vec<(i64, i64)> {
 }
 
 // ---------- an exhaustive minimum, independent of the crate's algorithms ----------
-
-/// Is the closed segment `a b` inside the closed polygon? Straight from the definition.
-fn chord(poly: &Polygon, a: usize, b: usize) -> bool {
-    let (pa, pb) = (poly.point(a), poly.point(b));
-    let wedge = |w: usize, t: Point| {
-        in_closed_wedge(
-            poly.point(poly.prev(w)),
-            poly.point(w),
-            poly.point(poly.next(w)),
-            t,
-        )
-    };
-    if !wedge(a, pb) || !wedge(b, pa) {
-        return false;
-    }
-    (0..poly.len()).all(|w| {
-        let (p, q) = (poly.point(w), poly.point(poly.next(w)));
-        let (o1, o2, o3, o4) = (
-            cross(pa, pb, p),
-            cross(pa, pb, q),
-            cross(p, q, pa),
-            cross(p, q, pb),
-        );
-        let crosses = o1.signum() * o2.signum() < 0 && o3.signum() * o4.signum() < 0;
-        let inside = o1 == 0 && dot(p, pa, pb) < 0;
-        !crosses && (!inside || (wedge(w, pa) && wedge(w, pb)))
-    })
-}
 
 /// Whether two counter-clockwise triangles have disjoint interiors (a separating side line).
 fn disjoint(t: &[Point; 3], u: &[Point; 3]) -> bool {
@@ -414,13 +387,7 @@ fn the_generators_make_varied_polygons() {
 
 /// Polygons from both generators, deterministically, for statistics over the test population.
 fn population(count: usize) -> Vec<Polygon> {
-    let mut seed = 0x0dd_b1a5_e5e5_u64;
-    let mut rnd = move |n: i64| {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed % n as u64) as i64
-    };
+    let mut rnd = xorshift(0x0dd_b1a5_e5e5_u64);
     let mut out = Vec::new();
     while out.len() < count {
         let ring = if rnd(2) == 0 {
@@ -740,13 +707,7 @@ proptest! {
 
 /// Recipes drawn deterministically (as the proptest strategy draws them), for statistics.
 fn holed_population(count: usize) -> Vec<Vec<Vec<(i64, i64)>>> {
-    let mut seed = 0x401e_5eed_u64;
-    let mut rnd = move |n: i64| {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed % n as u64) as i64
-    };
+    let mut rnd = xorshift(0x401e_5eed_u64);
     let mut out = Vec::new();
     let mut tries = 0;
     while out.len() < count {

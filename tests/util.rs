@@ -1,6 +1,8 @@
 //! Shared helpers: running the real binary, loading fixtures.
 
 use assert_cmd::Command;
+use minitri::geom::kernel::{cross, dot, in_closed_wedge, Point};
+use minitri::Polygon;
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 
@@ -50,4 +52,43 @@ pub fn run(args: &[&str], stdin: Option<&str>) -> (i32, String, String) {
 /// Parses the JSON document on stdout.
 pub fn json(stdout: &str) -> Value {
     serde_json::from_str(stdout).unwrap_or_else(|e| panic!("stdout is not JSON ({e}): {stdout}"))
+}
+
+/// Is the closed segment `a b` inside the closed polygon? Straight from the definition.
+pub fn chord(poly: &Polygon, a: usize, b: usize) -> bool {
+    let (pa, pb) = (poly.point(a), poly.point(b));
+    let wedge = |w: usize, t: Point| {
+        in_closed_wedge(
+            poly.point(poly.prev(w)),
+            poly.point(w),
+            poly.point(poly.next(w)),
+            t,
+        )
+    };
+    if !wedge(a, pb) || !wedge(b, pa) {
+        return false;
+    }
+    (0..poly.len()).all(|w| {
+        let (p, q) = (poly.point(w), poly.point(poly.next(w)));
+        let (o1, o2, o3, o4) = (
+            cross(pa, pb, p),
+            cross(pa, pb, q),
+            cross(p, q, pa),
+            cross(p, q, pb),
+        );
+        let crosses = o1.signum() * o2.signum() < 0 && o3.signum() * o4.signum() < 0;
+        let inside = o1 == 0 && dot(p, pa, pb) < 0;
+        !crosses && (!inside || (wedge(w, pa) && wedge(w, pb)))
+    })
+}
+
+/// A deterministic xorshift generator: `rnd(n)` is a number in `0..n`.
+pub fn xorshift(seed: u64) -> impl FnMut(i64) -> i64 {
+    let mut state = seed;
+    move |n: i64| {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state % n as u64) as i64
+    }
 }
