@@ -317,12 +317,11 @@ enum Pick {
     None,
     /// A unit of the list.
     Unit(usize),
-    /// The piece `tris[first..=last]` of the staircase `stair`, starting at local position `lo`.
+    /// The piece `tris[first..=last]` of the staircase `stair`.
     Piece {
         stair: usize,
         first: usize,
         last: usize,
-        lo: usize,
     },
 }
 
@@ -585,7 +584,6 @@ impl Sub<'_> {
                                 stair: s,
                                 first: m.1,
                                 last: i,
-                                lo: stair.ends[m.1].0,
                             };
                             here = (total, piece);
                         }
@@ -605,7 +603,7 @@ impl Sub<'_> {
                     continue;
                 }
                 Pick::Unit(k) => table.units[k].lo,
-                Pick::Piece { lo, .. } => lo,
+                Pick::Piece { stair, first, .. } => table.stairs[stair].ends[first].0,
             };
             picked.push(pick);
             x = lo as isize - 1;

@@ -44,13 +44,13 @@ pub fn triangulate(polygon: &Polygon) -> Result<Triangulation, TriangulateError>
 /// search); with holes by [`triangulate_general`], searching until `deadline`.
 ///
 /// # Errors
-/// None for valid polygons today (the plain triangulation's, for holes).
+/// None for valid polygons today; the `Result` keeps the signature of the other algorithms.
 pub fn triangulate_within(
     polygon: &Polygon,
     deadline: Option<Instant>,
 ) -> Result<Triangulation, TriangulateError> {
     if polygon.holes() > 0 {
-        return triangulate_general(polygon, deadline);
+        return Ok(triangulate_general(polygon, deadline));
     }
     let mdts = degenerate::minimally_degenerate(polygon);
     let circle = circle::circle(polygon, &mdts);
@@ -76,27 +76,21 @@ pub fn triangulate_within(
 /// triangles cut into a plain triangulation ([`cut`]). `optimal` is true only when the search
 /// finished; otherwise `lower_bound` holds the proved bound `n + 2w - 2 - (upper bound on d)`.
 /// Without holes it gives the same count as [`triangulate`] (the tests compare them).
-///
-/// # Errors
-/// Those of the plain triangulation it starts from.
-pub fn triangulate_general(
-    polygon: &Polygon,
-    deadline: Option<Instant>,
-) -> Result<Triangulation, TriangulateError> {
+pub fn triangulate_general(polygon: &Polygon, deadline: Option<Instant>) -> Triangulation {
     let mdts = degenerate::minimally_degenerate(polygon);
     let graph = dependency::graph(polygon, &mdts);
     let found = branch_and_bound::maximum_independent_set(&graph, deadline);
     let chosen: Vec<degenerate::Degenerate> = found.set.iter().map(|&t| mdts[t]).collect();
-    let base = super::ear::triangulate(polygon)?.triangles;
+    let base = super::plain_polygon(polygon);
     let plain_count = base.len();
     let triangles = cut::triangulate_with_cuts(polygon, base, &chosen);
-    Ok(Triangulation {
+    Triangulation {
         algorithm: Algorithm::Minitri,
         triangles,
         degenerate: chosen.iter().map(|m| [m.a, m.b, m.c]).collect(),
         optimal: found.optimal,
         lower_bound: (!found.optimal).then(|| plain_count - found.upper_bound),
-    })
+    }
 }
 
 #[cfg(test)]
