@@ -53,8 +53,10 @@ pub fn write_json(outcomes: &[Outcome], out: &mut impl Write) -> io::Result<()> 
         ];
         let mut fields = fields;
         if let Some(lower) = t.lower_bound {
-            // A search cut short: what is proved about the minimum.
-            fields.insert(10, ("lower_bound", json(&lower)));
+            // A search cut short: what is proved about the minimum, right after `optimal`.
+            let after = fields.iter().position(|(name, _)| *name == "optimal");
+            let at = after.map_or(fields.len(), |i| i + 1);
+            fields.insert(at, ("lower_bound", json(&lower)));
         }
         writeln!(out, "    {{")?;
         for (name, value) in &fields {
