@@ -130,6 +130,13 @@ const FLIPS_PER_VERTEX: usize = 4;
 /// All minimally degenerate triangles of a polygon (holes allowed), by triangular expansion from
 /// each reflex vertex inside its double cone ([`super::expansion`]) over a plain triangulation.
 pub fn minimally_degenerate(polygon: &Polygon) -> Vec<Degenerate> {
+    minimally_degenerate_and_mesh(polygon).0
+}
+
+/// [`minimally_degenerate`], also handing back the plain triangulation it walked (`n + 2w - 2`
+/// positive triangles, every side an edge or a proper diagonal), so that later steps need not
+/// build another one.
+pub fn minimally_degenerate_and_mesh(polygon: &Polygon) -> (Vec<Degenerate>, Vec<[usize; 3]>) {
     let mut mesh = Mesh::new(polygon, crate::algo::plain_polygon(polygon));
     mesh.flip_towards_delaunay(polygon, FLIPS_PER_VERTEX * polygon.len());
     let mut out = Vec::new();
@@ -156,7 +163,7 @@ pub fn minimally_degenerate(polygon: &Polygon) -> Vec<Degenerate> {
             }
         }
     }
-    out
+    (out, mesh.into_triangles())
 }
 
 /// The same triangles by an angular visibility sweep around every reflex vertex: O(r n log n).

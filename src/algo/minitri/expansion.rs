@@ -140,6 +140,11 @@ impl Mesh {
         &self.triangles
     }
 
+    /// The triangles, giving up the neighbour structure.
+    pub fn into_triangles(self) -> Vec<[usize; 3]> {
+        self.triangles
+    }
+
     /// The vertex a half-edge starts from.
     #[inline]
     fn tail(&self, h: usize) -> usize {

@@ -337,18 +337,22 @@ enum Job {
 /// What the scans read: the valued units, by end position, and the staircases.
 struct Table {
     units: Vec<Unit>,
-    ending: Vec<Vec<usize>>,
+    /// Per local position, the valued units ending there as `(lo, value, unit)`, kept together
+    /// so that the scans read one small record per unit.
+    ending: Vec<Vec<(u32, u32, u32)>>,
     stairs: Vec<Staircase>,
-    /// Per triangle, by the local position of its left end: (its staircase, its index there),
-    /// or `NOT_IN_STAIRCASE`.
+    /// Per local position, for the triangle ending there: (its staircase, its index there), or
+    /// `NOT_IN_STAIRCASE`.
     stair_of: Vec<(u32, u32)>,
 }
 
 /// Scratch for the scans.
 #[derive(Default)]
 struct Scan {
-    /// Per position of the range: the best value within `a..=x` and the last pick of it.
-    best: Vec<(u32, Pick)>,
+    /// Per position of the range: the best value within `a..=x`.
+    best: Vec<u32>,
+    /// Per position of the range: the last pick of the best value within `a..=x`.
+    pick: Vec<Pick>,
     /// Per staircase triangle, by the local position of its left end: (stamp, the best before
     /// it starts, minus its index, plus `left`).
     start: Vec<(u32, i64)>,
@@ -450,7 +454,9 @@ impl Sub<'_> {
                     jobs.push((span(g0).max(span(g1)), 1, Job::Right(s, r)));
                 }
                 for (i, &t) in stair.tris.iter().enumerate() {
-                    table.stair_of[self.chord(t).0] = (s as u32, i as u32);
+                    let (lo, hi) = self.chord(t);
+                    table.stair_of[lo] = (s as u32, i as u32);
+                    table.stair_of[hi] = (s as u32, i as u32);
                 }
                 table.stairs.push(stair);
             }
@@ -473,8 +479,8 @@ impl Sub<'_> {
                         .map(|(a, b)| self.best_value(&table, &mut scan, a, b))
                         .sum();
                     table.units[k].value = count + inside;
-                    let hi = table.units[k].hi;
-                    table.ending[hi].push(k);
+                    let u = &table.units[k];
+                    table.ending[u.hi].push((u.lo as u32, u.value, k as u32));
                 }
                 Job::Left(s, f) => {
                     let gaps = table.stairs[s].left_gaps(f);
@@ -535,7 +541,7 @@ impl Sub<'_> {
         if let Some(&v) = scan.memo.get(&(a, b)) {
             return v;
         }
-        let (v, _) = self.best_in(table, scan, a, b);
+        let v = self.scan(table, scan, a, b);
         scan.memo.insert((a, b), v);
         v
     }
@@ -543,21 +549,41 @@ impl Sub<'_> {
     /// Weighted interval scheduling over the units and staircase pieces lying within `a..=b`:
     /// the best total value and the picks achieving it.
     fn best_in(&self, table: &Table, scan: &mut Scan, a: usize, b: usize) -> (u32, Vec<Pick>) {
+        let total = self.scan(table, scan, a, b);
+        let mut picked = Vec::new();
+        let mut x = b as isize;
+        while x >= a as isize {
+            let pick = scan.pick[x as usize - a];
+            let lo = match pick {
+                Pick::None => {
+                    x -= 1;
+                    continue;
+                }
+                Pick::Unit(k) => table.units[k].lo,
+                Pick::Piece { stair, first, .. } => table.stairs[stair].ends[first].0,
+            };
+            picked.push(pick);
+            x = lo as isize - 1;
+        }
+        (total, picked)
+    }
+
+    /// The scan of [`Self::best_in`]: fills `scan.best` for `a..=b` and returns the best total.
+    fn scan(&self, table: &Table, scan: &mut Scan, a: usize, b: usize) -> u32 {
         scan.stamp += 1;
         let stamp = scan.stamp;
         scan.best.clear();
+        scan.pick.clear();
         for x in a..=b {
-            let before =
-                |best: &[(u32, Pick)], lo: usize| if lo > a { best[lo - a - 1].0 } else { 0 };
+            let before = |best: &[u32], lo: usize| if lo > a { best[lo - a - 1] } else { 0 };
             let mut here = (before(&scan.best, x), Pick::None);
-            for &k in &table.ending[x] {
-                let u = &table.units[k];
-                if u.lo >= a && before(&scan.best, u.lo) + u.value > here.0 {
-                    here = (before(&scan.best, u.lo) + u.value, Pick::Unit(k));
+            for &(lo, value, k) in &table.ending[x] {
+                let lo = lo as usize;
+                if lo >= a && before(&scan.best, lo) + value > here.0 {
+                    here = (before(&scan.best, lo) + value, Pick::Unit(k as usize));
                 }
             }
-            let t = self.circle.owner[self.positions[x]];
-            let (s, i) = table.stair_of[self.chord(t).0];
+            let (s, i) = table.stair_of[x];
             if s != NOT_IN_STAIRCASE.0 {
                 let (s, i) = (s as usize, i as usize);
                 let stair = &table.stairs[s];
@@ -590,24 +616,9 @@ impl Sub<'_> {
                     }
                 }
             }
-            scan.best.push(here);
+            scan.best.push(here.0);
+            scan.pick.push(here.1);
         }
-        let total = scan.best.last().map_or(0, |b| b.0);
-        let mut picked = Vec::new();
-        let mut x = b as isize;
-        while x >= a as isize {
-            let (_, pick) = scan.best[x as usize - a];
-            let lo = match pick {
-                Pick::None => {
-                    x -= 1;
-                    continue;
-                }
-                Pick::Unit(k) => table.units[k].lo,
-                Pick::Piece { stair, first, .. } => table.stairs[stair].ends[first].0,
-            };
-            picked.push(pick);
-            x = lo as isize - 1;
-        }
-        (total, picked)
+        scan.best.last().map_or(0, |&b| b)
     }
 }

@@ -52,14 +52,19 @@ pub fn triangulate_within(
     if polygon.holes() > 0 {
         return Ok(triangulate_general(polygon, deadline));
     }
-    let mdts = degenerate::minimally_degenerate(polygon);
+    let (mdts, base) = degenerate::minimally_degenerate_and_mesh(polygon);
     let circle = circle::circle(polygon, &mdts);
     let chains = mis::chains(polygon, &mdts);
     let chosen: Vec<degenerate::Degenerate> = mis::maximum_independent_set(&circle, &chains)
         .into_iter()
         .map(|t| mdts[t])
         .collect();
-    let triangles = partition::triangulate_pieces(polygon, &chosen);
+    // With nothing chosen the only piece is P itself, and step 1's plain triangulation is one.
+    let triangles = if chosen.is_empty() {
+        base
+    } else {
+        partition::triangulate_pieces(polygon, &chosen)
+    };
     let degenerate = chosen.iter().map(|m| [m.a, m.b, m.c]).collect();
     Ok(Triangulation {
         algorithm: Algorithm::Minitri,
@@ -77,11 +82,10 @@ pub fn triangulate_within(
 /// finished; otherwise `lower_bound` holds the proved bound `n + 2w - 2 - (upper bound on d)`.
 /// Without holes it gives the same count as [`triangulate`] (the tests compare them).
 pub fn triangulate_general(polygon: &Polygon, deadline: Option<Instant>) -> Triangulation {
-    let mdts = degenerate::minimally_degenerate(polygon);
+    let (mdts, base) = degenerate::minimally_degenerate_and_mesh(polygon);
     let graph = dependency::graph(polygon, &mdts);
     let found = branch_and_bound::maximum_independent_set(&graph, deadline);
     let chosen: Vec<degenerate::Degenerate> = found.set.iter().map(|&t| mdts[t]).collect();
-    let base = super::plain_polygon(polygon);
     let plain_count = base.len();
     let triangles = cut::triangulate_with_cuts(polygon, base, &chosen);
     Triangulation {

@@ -29,16 +29,7 @@ pub fn triangulate_pieces(polygon: &Polygon, chosen: &[Degenerate]) -> Vec<[usiz
     }
     edges.sort_unstable();
     edges.dedup();
-    // Neighbours of each vertex in counter-clockwise order.
-    let mut around: Vec<Vec<usize>> = vec![Vec::new(); n];
-    for &(u, v) in &edges {
-        around[u].push(v);
-        around[v].push(u);
-    }
-    for (v, list) in around.iter_mut().enumerate() {
-        let c = polygon.point(v);
-        list.sort_by(|&x, &y| cmp_angle(c, polygon.point(x), polygon.point(y)));
-    }
+    let graph = Graph::new(polygon, &edges);
     let straight_middle = {
         let mut middle = vec![false; n];
         for m in chosen {
@@ -47,48 +38,92 @@ pub fn triangulate_pieces(polygon: &Polygon, chosen: &[Degenerate]) -> Vec<[usiz
         middle
     };
     // Walk every face with its interior on the left: arriving at v from u, leave along the edge
-    // just clockwise of v -> u.
-    let mut used: std::collections::HashSet<(usize, usize)> = std::collections::HashSet::new();
+    // just clockwise of v -> u. Each directed edge (a slot of `graph`) is walked once.
+    let mut used = vec![false; graph.to.len()];
     let mut triangles = Vec::with_capacity(n);
-    for &(x, y) in &edges {
-        for (start_u, start_v) in [(x, y), (y, x)] {
-            if used.contains(&(start_u, start_v)) {
-                continue;
-            }
-            let mut face = Vec::new();
-            let (mut u, mut v) = (start_u, start_v);
-            loop {
-                used.insert((u, v));
-                face.push(u);
-                let list = &around[v];
-                let back = list
-                    .iter()
-                    .position(|&w| w == u)
-                    .expect("edge listed at both ends");
-                let w = list[(back + list.len() - 1) % list.len()];
-                (u, v) = (v, w);
-                if (u, v) == (start_u, start_v) {
-                    break;
-                }
-            }
-            let points: Vec<Point> = face.iter().map(|&i| polygon.point(i)).collect();
-            if twice_area(&points) <= 0 {
-                continue; // the outer face
-            }
-            // Drop chosen middles where they are straight (their 180-degree side).
-            let k = face.len();
-            let keep: Vec<usize> = (0..k)
-                .filter(|&i| {
-                    let (p, q) = (points[(i + k - 1) % k], points[(i + 1) % k]);
-                    !(straight_middle[face[i]] && cross(p, points[i], q) == 0)
-                })
-                .map(|i| face[i])
-                .collect();
-            let piece: Vec<Point> = keep.iter().map(|&i| polygon.point(i)).collect();
-            triangles.extend(plain(&piece).into_iter().map(|t| t.map(|i| keep[i])));
+    let mut face = Vec::new();
+    for start in 0..graph.to.len() {
+        if used[start] {
+            continue;
         }
+        face.clear();
+        let mut slot = start;
+        while !used[slot] {
+            used[slot] = true;
+            face.push(graph.from[slot]);
+            slot = graph.turn(slot);
+        }
+        let points: Vec<Point> = face.iter().map(|&i| polygon.point(i)).collect();
+        if twice_area(&points) <= 0 {
+            continue; // the outer face
+        }
+        // Drop chosen middles where they are straight (their 180-degree side).
+        let k = face.len();
+        let keep: Vec<usize> = (0..k)
+            .filter(|&i| {
+                let (p, q) = (points[(i + k - 1) % k], points[(i + 1) % k]);
+                !(straight_middle[face[i]] && cross(p, points[i], q) == 0)
+            })
+            .map(|i| face[i])
+            .collect();
+        let piece: Vec<Point> = keep.iter().map(|&i| polygon.point(i)).collect();
+        triangles.extend(plain(&piece).into_iter().map(|t| t.map(|i| keep[i])));
     }
     triangles
+}
+
+/// The plane graph of the polygon's edges and the chosen sides, as adjacency arrays: the
+/// directed edges leaving vertex `v` are the slots `start[v]..start[v + 1]`, sorted
+/// counter-clockwise around `v`; slot `s` runs `from[s] -> to[s]`.
+struct Graph {
+    start: Vec<usize>,
+    from: Vec<usize>,
+    to: Vec<usize>,
+}
+
+impl Graph {
+    fn new(polygon: &Polygon, edges: &[(usize, usize)]) -> Graph {
+        let n = polygon.len();
+        let mut start = vec![0; n + 1];
+        for &(u, v) in edges {
+            start[u + 1] += 1;
+            start[v + 1] += 1;
+        }
+        for v in 0..n {
+            start[v + 1] += start[v];
+        }
+        let mut fill = start.clone();
+        let mut to = vec![0; 2 * edges.len()];
+        let mut from = vec![0; 2 * edges.len()];
+        for &(u, v) in edges {
+            for (x, y) in [(u, v), (v, u)] {
+                to[fill[x]] = y;
+                from[fill[x]] = x;
+                fill[x] += 1;
+            }
+        }
+        for v in 0..n {
+            let c = polygon.point(v);
+            to[start[v]..start[v + 1]]
+                .sort_by(|&x, &y| cmp_angle(c, polygon.point(x), polygon.point(y)));
+        }
+        Graph { start, from, to }
+    }
+
+    /// The slot after `slot` (`u -> v`) along its face: `v -> w` with `w` just clockwise of `u`
+    /// around `v`.
+    fn turn(&self, slot: usize) -> usize {
+        let (u, v) = (self.from[slot], self.to[slot]);
+        let (lo, hi) = (self.start[v], self.start[v + 1]);
+        let back = (lo..hi)
+            .find(|&s| self.to[s] == u)
+            .expect("every edge is listed at both ends");
+        if back == lo {
+            hi - 1
+        } else {
+            back - 1
+        }
+    }
 }
 
 fn ordered(u: usize, v: usize) -> (usize, usize) {
