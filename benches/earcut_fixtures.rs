@@ -128,13 +128,14 @@ fn summary(cases: &[Case], options: &Options) {
     );
     println!("|---|---:|---:|---:|---:|---:|---:|---|---:|");
     let mut accepted = Vec::new();
-    let [mut ear, mut min, mut theirs, mut theirs_all, mut unread] = [0; 5];
+    let [mut ear, mut min, mut theirs, mut theirs_all, mut unread, mut nonempty] = [0; 6];
     for case in cases {
         let f = &case.fixture;
         let out = common::earcut(&f.coords, &f.hole_starts);
         let deviation = earcut::deviation(f.coords.iter().copied(), &f.hole_starts, &out);
         let earcut = out.len() / 3;
         theirs_all += earcut;
+        nonempty += usize::from(earcut > 0);
         unread += usize::from(f.raw.is_err());
         let Ok(p) = case.validate() else { continue };
         let plain = triangulate(&p, Algorithm::Ear, options).expect("valid");
@@ -162,10 +163,11 @@ fn summary(cases: &[Case], options: &Options) {
     println!(
         "accepted by minitri: {} of {} ({unread} rejected by the reader, the rest by \
          validation); triangles on them: ear {ear}, minitri {min}, earcut {theirs}; earcut on \
-         all {}: {theirs_all}",
+         all {}: {theirs_all} triangles, none at all on {}",
         accepted.len(),
         cases.len(),
         cases.len(),
+        cases.len() - nonempty,
     );
     assert_eq!(
         accepted,
