@@ -35,7 +35,7 @@
 mod common;
 
 use common::Shape;
-use minitri::{triangulate, Algorithm, Format, Polygon, RawPolygon};
+use minitri::{triangulate, Algorithm, Polygon, RawPolygon};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::collections::HashMap;
 use std::fmt::Write as _;
@@ -155,43 +155,12 @@ fn load(case: &str) -> Result<Input, String> {
         }
         "fixture" | "outer" => {
             let text = std::fs::read_to_string(rest).map_err(|e| format!("{rest}: {e}"))?;
-            let mut rings: Vec<serde_json::Value> =
-                serde_json::from_str(&text).map_err(|e| format!("{rest}: {e}"))?;
-            if kind == "outer" {
-                rings.truncate(1);
-            }
-            // minitri reads the rings through its own GeoJSON reader (exact decimals).
-            let geojson = serde_json::json!({ "type": "Polygon", "coordinates": rings });
-            let raw = minitri::io::read::read(Format::GeoJson, &geojson.to_string())
-                .map_err(|e| format!("{rest}: {e}"))?
-                .swap_remove(0);
-            // earcut gets the same rings as f64, cleaned as minitri's reader and `Polygon` clean
-            // them (closing vertex and consecutive duplicates dropped), so both see the same n.
-            let mut coords = Vec::new();
-            let mut hole_starts = Vec::new();
-            for (r, ring) in rings.iter().enumerate() {
-                let mut pts: Vec<[f64; 2]> = ring
-                    .as_array()
-                    .ok_or("ring is not an array")?
-                    .iter()
-                    .map(|p| {
-                        let x = |k: usize| p.get(k).and_then(serde_json::Value::as_f64);
-                        Ok([x(0).ok_or("bad point")?, x(1).ok_or("bad point")?])
-                    })
-                    .collect::<Result<_, String>>()?;
-                pts.dedup();
-                while pts.len() > 1 && pts.first() == pts.last() {
-                    pts.pop();
-                }
-                if r > 0 {
-                    hole_starts.push(coords.len() as u32);
-                }
-                coords.extend(pts);
-            }
+            let fixture = common::earcut_fixture(&text, kind == "outer")
+                .map_err(|e| format!("{rest}: {e}"))?;
             Ok(Input {
-                raw,
-                coords,
-                hole_starts,
+                raw: fixture.raw.map_err(|e| format!("{rest}: {e}"))?,
+                coords: fixture.coords,
+                hole_starts: fixture.hole_starts,
                 fingerprint: fnv(kind.bytes().chain(text.bytes())),
             })
         }

@@ -1,5 +1,8 @@
-//! Benchmark inputs shared by `benches/minitri.rs` (criterion) and `benches/compare.rs` (the
-//! table beside the `earcut` crate): the two families of `bench/polygon.py`, deterministic by seed.
+//! Benchmark inputs shared by the benches (each uses part of them): the two families of
+//! `bench/polygon.py`, deterministic by seed, for `benches/minitri.rs` (criterion) and
+//! `benches/compare.rs` (the table beside the `earcut` crate); polygons with holes given as
+//! integer rings, for `benches/holes.rs`; and the mapbox/earcut fixtures in both forms, for
+//! `benches/compare.rs` and `benches/earcut_fixtures.rs`.
 //!
 //! - [`star`]: a random star-shaped polygon in general position: random angles and radii around
 //!   the origin on an integer grid, sorted exactly by angle (then by distance), so the polygon is
@@ -12,6 +15,9 @@
 //! Both give the outer ring counter-clockwise as integer points, which [`polygon`] turns into a
 //! validated [`minitri::Polygon`] through the public API (exact decimals, `Polygon::from_raw`)
 //! and [`earcut_input`] into the `f64` pairs the `earcut` crate takes (exact: |coordinates| < 2^53).
+//! [`raw_rings`] and [`earcut_rings`] do the same for an outer ring and holes; [`earcut_fixture`]
+//! reads one mapbox/earcut fixture into both forms.
+#![allow(dead_code)] // each bench uses part of this module
 
 use minitri::{Decimal, Polygon, RawPolygon};
 use std::cmp::Ordering;
@@ -146,9 +152,17 @@ pub fn rectilinear(n: usize, seed: u64) -> Vec<[i64; 2]> {
 
 /// The reader's form of a ring of integer points.
 pub fn raw(points: &[[i64; 2]]) -> RawPolygon {
+    raw_rings(&[points])
+}
+
+/// The reader's form of integer rings: the outer ring, then the holes.
+pub fn raw_rings<R: AsRef<[[i64; 2]]>>(rings: &[R]) -> RawPolygon {
     let d = |v: i64| Decimal::parse(&v.to_string()).expect("an integer is a decimal");
     RawPolygon {
-        rings: vec![points.iter().map(|p| [d(p[0]), d(p[1])]).collect()],
+        rings: rings
+            .iter()
+            .map(|ring| ring.as_ref().iter().map(|p| [d(p[0]), d(p[1])]).collect())
+            .collect(),
     }
 }
 
@@ -156,9 +170,16 @@ pub fn raw(points: &[[i64; 2]]) -> RawPolygon {
 ///
 /// # Panics
 /// If the generator made an invalid polygon (a bug in this file).
-#[allow(dead_code)] // used by benches/minitri.rs; benches/compare.rs validates in its workers
 pub fn polygon(points: &[[i64; 2]]) -> Polygon {
-    match Polygon::from_raw(&raw(points)) {
+    polygon_with_holes(&[points])
+}
+
+/// The validated polygon of integer rings: the outer ring, then the holes.
+///
+/// # Panics
+/// If the generator made an invalid polygon (a bug in the bench).
+pub fn polygon_with_holes<R: AsRef<[[i64; 2]]>>(rings: &[R]) -> Polygon {
+    match Polygon::from_raw(&raw_rings(rings)) {
         Ok((polygon, _warnings)) => polygon,
         Err(e) => panic!("generated polygon is invalid: {e}"),
     }
@@ -169,10 +190,86 @@ pub fn earcut_input(points: &[[i64; 2]]) -> Vec<[f64; 2]> {
     points.iter().map(|p| [p[0] as f64, p[1] as f64]).collect()
 }
 
+/// Integer rings (the outer ring, then the holes) as the `earcut` crate takes them: all points
+/// as `f64` pairs in one list, and the index where each hole starts.
+pub fn earcut_rings<R: AsRef<[[i64; 2]]>>(rings: &[R]) -> (Vec<[f64; 2]>, Vec<u32>) {
+    let mut coords = Vec::new();
+    let mut hole_starts = Vec::new();
+    for (r, ring) in rings.iter().enumerate() {
+        if r > 0 {
+            hole_starts.push(coords.len() as u32);
+        }
+        coords.extend(earcut_input(ring.as_ref()));
+    }
+    (coords, hole_starts)
+}
+
 /// A plain triangulation by the `earcut` crate (a fresh instance, so that its buffers count in
 /// a memory measurement): triangle corner indices, three per triangle.
 pub fn earcut(coords: &[[f64; 2]], hole_starts: &[u32]) -> Vec<u32> {
     let mut out = Vec::new();
     earcut::Earcut::new().earcut_slice(coords, hole_starts, &mut out);
     out
+}
+
+/// One mapbox/earcut fixture in both forms.
+pub struct Fixture {
+    /// The rings as minitri's GeoJSON reader reads them (exact decimals), or why it cannot.
+    pub raw: Result<RawPolygon, String>,
+    /// The same rings as `f64` pairs for the `earcut` crate, cleaned as minitri's reader and
+    /// `Polygon` clean them (closing vertex and consecutive duplicates dropped), so that both
+    /// see the same n.
+    pub coords: Vec<[f64; 2]>,
+    /// Where each hole starts in `coords`.
+    pub hole_starts: Vec<u32>,
+}
+
+/// The fixtures of mapbox/earcut kept in this repository (`fixtures/earcut/`, ISC).
+pub fn earcut_fixtures_dir() -> std::path::PathBuf {
+    std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/earcut")
+}
+
+/// Reads a fixture's text (a JSON array of rings, earcut's format); with `outer_only`, its outer
+/// ring alone. A reader error of minitri's goes into [`Fixture::raw`]; an error here means the
+/// text is not a fixture at all.
+///
+/// # Errors
+/// When the text is not a JSON array of rings of `[x, y]` number pairs.
+pub fn earcut_fixture(text: &str, outer_only: bool) -> Result<Fixture, String> {
+    let mut rings: Vec<serde_json::Value> =
+        serde_json::from_str(text).map_err(|e| e.to_string())?;
+    if outer_only {
+        rings.truncate(1);
+    }
+    // minitri reads the rings through its own GeoJSON reader (exact decimals).
+    let geojson = serde_json::json!({ "type": "Polygon", "coordinates": rings });
+    let raw = minitri::io::read::read(minitri::Format::GeoJson, &geojson.to_string())
+        .map(|mut polygons| polygons.swap_remove(0))
+        .map_err(|e| e.to_string());
+    let mut coords = Vec::new();
+    let mut hole_starts = Vec::new();
+    for (r, ring) in rings.iter().enumerate() {
+        let mut pts: Vec<[f64; 2]> = ring
+            .as_array()
+            .ok_or("ring is not an array")?
+            .iter()
+            .map(|p| {
+                let x = |k: usize| p.get(k).and_then(serde_json::Value::as_f64);
+                Ok([x(0).ok_or("bad point")?, x(1).ok_or("bad point")?])
+            })
+            .collect::<Result<_, String>>()?;
+        pts.dedup();
+        while pts.len() > 1 && pts.first() == pts.last() {
+            pts.pop();
+        }
+        if r > 0 {
+            hole_starts.push(coords.len() as u32);
+        }
+        coords.extend(pts);
+    }
+    Ok(Fixture {
+        raw,
+        coords,
+        hole_starts,
+    })
 }
