@@ -13,7 +13,7 @@
 //! or `bench/compare.sh [options]`. What is measured:
 //!
 //! - Inputs: the families of `benches/common` (`star`, `rectilinear`) at each nominal size, and
-//!   the largest fixtures of mapbox/earcut (`../shared/fixtures/earcut/`). minitri does not do
+//!   the largest fixtures of mapbox/earcut (`fixtures/earcut/`). minitri does not do
 //!   holes yet, so a fixture with holes gets earcut alone ("holes: n/a" for the others), then a
 //!   second row with its outer ring alone, for all of them.
 //! - Each measurement runs in a fresh worker process (this binary, `--worker`), which builds the
@@ -310,7 +310,7 @@ const USAGE: &str =
   --verify        check minitri's, ear's and the DP's outputs with minitri's independent checker
                   (outside the timing)
   --fixtures      earcut fixtures (default water-huge3,water-huge,water-huge2,water,hilbert)
-  --fixtures-dir  where they are (default ../shared/fixtures/earcut beside the crate)
+  --fixtures-dir  where they are (default fixtures/earcut in the crate)
   --no-fixtures   generated families only";
 
 fn parse_size(s: &str) -> Result<usize, String> {
@@ -343,7 +343,7 @@ fn parse_args(args: &[String]) -> Result<Config, String> {
         ]
         .map(String::from)
         .to_vec(),
-        fixtures_dir: Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/fixtures/earcut"),
+        fixtures_dir: common::earcut_fixtures_dir(),
     };
     let mut it = args.iter();
     while let Some(flag) = it.next() {
