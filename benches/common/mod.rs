@@ -176,3 +176,28 @@ pub fn earcut(coords: &[[f64; 2]], hole_starts: &[u32]) -> Vec<u32> {
     earcut::Earcut::new().earcut_slice(coords, hole_starts, &mut out);
     out
 }
+
+/// A small random rectilinear polygon for batch benchmarks: 2 to 10 unit columns, bottom heights
+/// in `0..=2` and top heights in `4..=6`, walked counter-clockwise with only exact repeats removed,
+/// so that equal neighbouring heights leave flat (collinear) vertices: 8 to 40 vertices, and
+/// degenerate triangles to save.
+#[allow(dead_code)] // used by benches/batch.rs only
+pub fn small_rectilinear(seed: u64) -> Vec<[i64; 2]> {
+    let mut rng = Rng(seed);
+    let columns = rng.range(2, 10);
+    let bottom: Vec<i64> = (0..columns).map(|_| rng.range(0, 2)).collect();
+    let top: Vec<i64> = (0..columns).map(|_| rng.range(4, 6)).collect();
+    let mut ring: Vec<[i64; 2]> = Vec::with_capacity(4 * columns as usize);
+    for (x, &h) in (0..).zip(&bottom) {
+        ring.extend([[x, h], [x + 1, h]]);
+    }
+    for x in (0..columns).rev() {
+        let h = top[x as usize];
+        ring.extend([[x + 1, h], [x, h]]);
+    }
+    ring.dedup();
+    while ring.len() > 1 && ring.first() == ring.last() {
+        ring.pop();
+    }
+    ring
+}
