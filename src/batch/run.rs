@@ -149,7 +149,9 @@ pub struct TreeJob {
 ///     .map(|(input, output)| TreeJob { input: Ok(input), output }).collect();
 /// let tally = run_tree(&jobs, &Settings::default(), OutputFormat::Json, &Silent);
 /// assert_eq!((tally.files, tally.errors), (inputs.len(), 0));
-/// assert!(out.path().join("u_shape.json").is_file());
+/// assert!(out.path().join("l_shape.json").is_file());
+/// // u_shape.wkt, u_shape.geojson and u_shape.txt: each keeps its name.
+/// assert!(out.path().join("u_shape.geojson.json").is_file());
 /// # Ok::<(), std::io::Error>(())
 /// ```
 pub fn run_tree(

@@ -170,7 +170,7 @@ impl std::fmt::Display for Failure {
 }
 
 /// A JSON value as named in an error message.
-pub(super) fn describe(value: &Value) -> String {
+fn describe(value: &Value) -> String {
     match value {
         Value::Null => "null".into(),
         Value::Bool(b) => b.to_string(),
