@@ -385,34 +385,53 @@ fn newline_delimited_geojson_is_streamed_with_the_result_of_a_feature_collection
 }
 
 #[test]
-fn a_syntax_error_in_a_streamed_input_keeps_no_output_file() {
+fn a_syntax_error_stops_a_streamed_collection_but_only_its_line_in_geojson_lines() {
     let tmp = tempfile::tempdir().unwrap();
     let root = tmp.path();
-    let features = features(10);
-    let broken = format!("{}\n{{\"type\": \"Feature\",, }}\n", features.join("\n"));
+    let mut features = features(10);
+    features.push(r#"{"type": "Feature",, }"#.into());
+    features.push(features[0].clone());
     write_tree(
         root,
-        &[("in/broken.ndjson", &broken), ("in/ok.wkt", U_SHAPE)],
+        &[
+            ("in/broken.geojson", &feature_collection(&features)),
+            ("in/lines.ndjson", &features.join("\n")),
+            ("in/ok.wkt", U_SHAPE),
+        ],
     );
     let (code, _, err) = run_in(root, &["in", "-o", "out"], None);
     assert_eq!(code, 1);
     assert!(
-        err.contains("in/broken.ndjson: line 11, column 20: invalid JSON"),
+        err.contains("in/broken.geojson: line 12, column 20: invalid JSON"),
         "{err}"
     );
-    assert_eq!(files_below(&root.join("out")), [PathBuf::from("ok.json")]);
-    let (code, _, _) = run_in(root, &["in/broken.ndjson", "-o", "one.json"], None);
+    assert!(
+        err.contains("in/lines.ndjson: line 11, column 20: invalid JSON"),
+        "{err}"
+    );
+    assert_eq!(
+        files_below(&root.join("out")),
+        ["lines.json", "ok.json"].map(PathBuf::from),
+        "a collection cut short by a syntax error gets no output file"
+    );
+    let lines = read_json(&root.join("out/lines.json"));
+    assert_eq!(
+        lines["polygons"].as_array().unwrap().len(),
+        12,
+        "the lines after it too"
+    );
+    let (code, _, _) = run_in(root, &["in/broken.geojson", "-o", "one.json"], None);
     assert_eq!(code, 1);
     assert!(!root.join("one.json").exists());
     // On standard output, what came before the error stays, and the error is listed.
-    let (code, out, _) = run_in(root, &["in/broken.ndjson"], None);
+    let (code, out, _) = run_in(root, &["in/broken.geojson"], None);
     assert_eq!(code, 1);
     let doc = json(&out);
     assert_eq!(doc["polygons"].as_array().unwrap().len(), 11);
     assert!(doc["errors"][0]["message"]
         .as_str()
         .unwrap()
-        .starts_with("line 11, column 20: invalid JSON"));
+        .starts_with("line 12, column 20: invalid JSON"));
 }
 
 #[test]

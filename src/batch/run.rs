@@ -16,7 +16,7 @@ use super::atomic::AtomicFile;
 use super::discover::{Input, Unreadable};
 use super::tally::Tally;
 use crate::io::read::geojson_stream::{self, Event, Stop};
-use crate::io::read::{self, detect_start, Format, RawPolygon};
+use crate::io::read::{self, detect_start, Format, ParseError, RawPolygon};
 use crate::io::write::{OutputFormat, Sink};
 use crate::pipeline::{process_raw, unreadable, Error, Options, Outcome};
 use rayon::prelude::*;
@@ -288,6 +288,19 @@ enum Item {
     },
     /// Something that failed already (an unreadable input or part of one).
     Failed(Box<Outcome>),
+    /// Line `number` of a GeoJSON Lines input, read (in parallel) with the chunk; its polygons
+    /// are numbered on from the source's previous ones.
+    Line {
+        source: Arc<str>,
+        number: usize,
+        text: String,
+    },
+}
+
+/// An item after the parallel reading of lines, before its polygons are numbered.
+enum Parsed {
+    Ready(Item),
+    Line(Arc<str>, Result<Vec<RawPolygon>, ParseError>),
 }
 
 /// Gathers items into chunks, triangulates each chunk in parallel, delivers outcomes in order.
@@ -295,6 +308,8 @@ struct Chunker<'a> {
     options: &'a Options,
     items: Vec<Item>,
     vertices: usize,
+    /// The source of the last line numbered, and the index its next polygon gets.
+    lines: Option<(Arc<str>, usize)>,
     deliver: &'a mut dyn FnMut(Outcome) -> io::Result<()>,
     observer: &'a dyn Observer,
 }
@@ -309,14 +324,20 @@ impl<'a> Chunker<'a> {
             options,
             items: Vec::new(),
             vertices: 0,
+            lines: None,
             deliver,
             observer,
         }
     }
 
     fn push(&mut self, item: Item) -> io::Result<()> {
-        if let Item::Polygon { raw, .. } = &item {
-            self.vertices += raw.rings.iter().map(Vec::len).sum::<usize>();
+        match &item {
+            Item::Polygon { raw, .. } => {
+                self.vertices += raw.rings.iter().map(Vec::len).sum::<usize>();
+            }
+            // About one vertex per 8 bytes of GeoJSON ("[12, 34], ").
+            Item::Line { text, .. } => self.vertices += text.len() / 8,
+            Item::Failed(_) => {}
         }
         self.items.push(item);
         if self.items.len() >= CHUNK_POLYGONS || self.vertices >= CHUNK_VERTICES {
@@ -325,15 +346,58 @@ impl<'a> Chunker<'a> {
         Ok(())
     }
 
+    /// Reads the lines among `items` in parallel and numbers their polygons, in order.
+    fn read_lines(&mut self, items: Vec<Item>) -> Vec<Item> {
+        let parsed: Vec<Parsed> = items
+            .into_par_iter()
+            .map(|item| match item {
+                Item::Line {
+                    source,
+                    number,
+                    text,
+                } => Parsed::Line(source, geojson_stream::read_line(&text, number)),
+                other => Parsed::Ready(other),
+            })
+            .collect();
+        let mut items = Vec::with_capacity(parsed.len());
+        for parsed in parsed {
+            match parsed {
+                Parsed::Ready(item) => items.push(item),
+                Parsed::Line(source, Err(e)) => {
+                    items.push(Item::Failed(Box::new(unreadable(&source, Error::Parse(e)))));
+                }
+                Parsed::Line(source, Ok(raws)) => {
+                    let next = match &mut self.lines {
+                        Some((last, next)) if Arc::ptr_eq(last, &source) => next,
+                        lines => &mut lines.insert((Arc::clone(&source), 0)).1,
+                    };
+                    for raw in raws {
+                        let index = *next;
+                        *next += 1;
+                        let source = Arc::clone(&source);
+                        items.push(Item::Polygon { source, index, raw });
+                    }
+                }
+            }
+        }
+        items
+    }
+
     fn flush(&mut self) -> io::Result<()> {
-        let items = std::mem::take(&mut self.items);
+        let mut items = std::mem::take(&mut self.items);
         self.vertices = 0;
+        if items.iter().any(|item| matches!(item, Item::Line { .. })) {
+            items = self.read_lines(items);
+        }
         let options = self.options;
         let outcomes: Vec<Outcome> = items
             .into_par_iter()
             .map(|item| match item {
                 Item::Polygon { source, index, raw } => process_raw(&source, index, &raw, options),
                 Item::Failed(outcome) => *outcome,
+                Item::Line { source, .. } => {
+                    unreadable(&source, Error::Read("line not read".into()))
+                }
             })
             .collect();
         self.observer.polygons(outcomes.len());
@@ -372,6 +436,12 @@ fn read_input(input: &Input, from: Option<Format>, chunker: &mut Chunker) -> io:
     };
     let format = from.or_else(|| detect_start(extension, &String::from_utf8_lossy(start)));
     if format == Some(Format::GeoJson) {
+        let lines_by_name = extension.is_some_and(|e| {
+            ["ndjson", "geojsonl", "geojsons"].contains(&e.to_ascii_lowercase().as_str())
+        });
+        if lines_by_name || geojson_stream::looks_line_delimited(start) {
+            return read_lines(&source, reader, chunker);
+        }
         return stream_geojson(&source, reader, chunker);
     }
     let mut bytes = Vec::new();
@@ -401,6 +471,61 @@ fn read_input(input: &Input, from: Option<Format>, chunker: &mut Chunker) -> io:
         }
         Err(e) => failed(chunker, Error::Parse(e)),
     }
+}
+
+/// Reads a GeoJSON Lines input into the chunker, line by line (the lines are parsed in parallel
+/// with their chunk); returns whether it was read to its end. Each line stands alone: a line that
+/// is not JSON, or not a polygon, is reported and the others go on.
+fn read_lines(
+    source: &Arc<str>,
+    mut reader: impl BufRead,
+    chunker: &mut Chunker,
+) -> io::Result<bool> {
+    let mut number = 0;
+    let mut any = false;
+    loop {
+        let mut bytes = Vec::new();
+        match reader.read_until(b'\n', &mut bytes) {
+            Ok(0) => break,
+            Ok(_) => {}
+            Err(e) => {
+                let error = Error::Read(e.to_string());
+                chunker.push(Item::Failed(Box::new(unreadable(source, error))))?;
+                return Ok(false);
+            }
+        }
+        number += 1;
+        let text = match String::from_utf8(bytes) {
+            Ok(text) => text,
+            Err(_) => {
+                let message = format!("line {number}: not UTF-8 text");
+                chunker.push(Item::Failed(Box::new(unreadable(
+                    source,
+                    Error::Read(message),
+                ))))?;
+                continue;
+            }
+        };
+        if text.trim().is_empty() {
+            continue;
+        }
+        any = true;
+        let source = Arc::clone(source);
+        chunker.push(Item::Line {
+            source,
+            number,
+            text,
+        })?;
+    }
+    if !any {
+        let error = ParseError::new("empty input: no polygon found");
+        chunker.push(Item::Failed(Box::new(unreadable(
+            source,
+            Error::Parse(error),
+        ))))?;
+        return Ok(false);
+    }
+    Ok(true)
 }
 
 /// Streams a GeoJSON input into the chunker; returns whether it was read to its end.

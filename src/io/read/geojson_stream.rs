@@ -145,6 +145,59 @@ pub fn stream<R: BufRead>(
     Ok(())
 }
 
+/// Reads one line of a GeoJSON Lines input (line `number` of it, from 1): its polygons, none
+/// for a blank line or a Feature without geometry.
+///
+/// # Errors
+/// [`ParseError`] located at the line (and column) when the line is not JSON or not a polygon.
+///
+/// # Examples
+/// ```
+/// use minitri::io::read::geojson_stream::read_line;
+/// let line = r#"{"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 1]]]}"#;
+/// assert_eq!(read_line(line, 7)?.len(), 1);
+/// let error = read_line(r#"  {"type": "Point", "coordinates": [0, 0]}"#, 7).unwrap_err();
+/// assert!(error.to_string().starts_with("line 7, column 3: expected a Polygon"));
+/// # Ok::<(), minitri::io::read::ParseError>(())
+/// ```
+pub fn read_line(line: &str, number: usize) -> Result<Vec<RawPolygon>, ParseError> {
+    let line = line.strip_prefix('\u{feff}').unwrap_or(line);
+    let body = line.trim_start();
+    if body.trim_end().is_empty() {
+        return Ok(Vec::new());
+    }
+    let at = |column: usize| Location {
+        line: number,
+        column: column.max(1),
+    };
+    let value: Value = serde_json::from_str(body).map_err(|e| {
+        let before = line.len() - body.len();
+        let column = line[..before].chars().count() + e.column();
+        ParseError::at(at(column), json_message(&e))
+    })?;
+    let mut polygons = Vec::new();
+    top_level(&value, &mut polygons).map_err(|failure| {
+        let column = line.chars().count() - body.chars().count() + 1;
+        ParseError::at(at(column), failure.to_string())
+    })?;
+    Ok(polygons)
+}
+
+/// Does `start` (the first bytes of an input) look like GeoJSON Lines: a first line that is a
+/// whole JSON value by itself, then another line?
+pub fn looks_line_delimited(start: &[u8]) -> bool {
+    let start = start.strip_prefix("\u{feff}".as_bytes()).unwrap_or(start);
+    let blank = |b: &u8| b.is_ascii_whitespace();
+    let Some(first) = start.iter().position(|b| !blank(b)) else {
+        return false;
+    };
+    let Some(end) = start[first..].iter().position(|&b| b == b'\n') else {
+        return false;
+    };
+    let (line, rest) = start[first..].split_at(end);
+    !rest.iter().all(blank) && serde_json::from_slice::<de::IgnoredAny>(line).is_ok()
+}
+
 /// A `serde_json` syntax error at its line and column (columns in characters of the line read).
 fn syntax_error(error: &serde_json::Error) -> ParseError {
     let message = json_message(error);
@@ -463,6 +516,31 @@ mod tests {
         assert!(events(r#"{"type": "FeatureCollection", "features": []}"#)
             .1
             .is_some_and(|s| s.starts_with("no polygon found")));
+    }
+
+    #[test]
+    fn lines_are_read_alone_and_recognised_by_their_start() {
+        assert_eq!(read_line(A, 1).unwrap(), geojson::read(A).unwrap());
+        assert_eq!(read_line(" \r\n", 4).unwrap(), []);
+        let null = r#"{"type": "Feature", "geometry": null}"#;
+        assert_eq!(read_line(null, 4).unwrap(), []);
+        assert_eq!(
+            read_line(r#" {"type": "Polygon",, }"#, 9)
+                .unwrap_err()
+                .to_string(),
+            "line 9, column 21: invalid JSON: key must be a string"
+        );
+        assert!(looks_line_delimited(format!("{A}\n{B}\n").as_bytes()));
+        assert!(looks_line_delimited(format!("\n{A}\r\n{A}").as_bytes()));
+        assert!(
+            !looks_line_delimited(format!("{A}\n\n").as_bytes()),
+            "one value"
+        );
+        assert!(
+            !looks_line_delimited(b"{\n  \"type\": \"Polygon\"\n}\n"),
+            "pretty"
+        );
+        assert!(!looks_line_delimited(A.as_bytes()), "no end of line seen");
     }
 
     #[test]
