@@ -1,8 +1,8 @@
 //! Running inputs: read, triangulate in parallel, write in input order.
 //!
-//! Every input is read as a stream of polygons ([`read_input`]): GeoJSON through
-//! [`geojson_stream`] (one feature or line at a time), WKT and vertex lists whole (their text and
-//! polygons in memory). Polygons are gathered into chunks of at most [`CHUNK_POLYGONS`] polygons
+//! Every input is read as a stream of polygons (`read_input`): GeoJSON Lines line by line (each
+//! line parsed in parallel with its chunk), other GeoJSON through [`geojson_stream`] (one
+//! feature or value at a time), WKT and vertex lists whole (their text and polygons in memory). Polygons are gathered into chunks of at most [`CHUNK_POLYGONS`] polygons
 //! or [`CHUNK_VERTICES`] vertices; each chunk is triangulated in parallel on the current rayon
 //! pool and its outcomes handed on in input order, so that the output is the same for any number
 //! of threads and memory holds one chunk (plus, for JSON, the error list) however large the input.

@@ -20,6 +20,10 @@
 //! [`super::geojson::read`]: `feature 3, ring 1: ...` inside a FeatureCollection, and
 //! `line 5, column 1: ...` for a top-level value when the input holds several.
 //!
+//! [`read_line`] reads one line of GeoJSON Lines on its own (so that lines can be read in
+//! parallel, and a syntax error costs only its line), and [`looks_line_delimited`] recognises
+//! such an input by its start.
+//!
 //! Complexity: linear in the input size; memory proportional to the largest feature.
 
 use super::geojson::{collection_feature, json_message, top_level};
