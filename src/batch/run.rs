@@ -43,7 +43,7 @@ pub struct Settings {
 
 /// Told what a run does as it goes; called from worker threads.
 pub trait Observer: Sync {
-    /// `count` more polygons (or failed parts) were processed.
+    /// `count` more polygons were processed (triangulated or not).
     fn polygons(&self, count: usize);
     /// One more input is finished (in any order).
     fn input_finished(&self);
@@ -400,7 +400,8 @@ impl<'a> Chunker<'a> {
                 }
             })
             .collect();
-        self.observer.polygons(outcomes.len());
+        let polygons = outcomes.iter().filter(|o| o.index.is_some()).count();
+        self.observer.polygons(polygons);
         for outcome in outcomes {
             (self.deliver)(outcome)?;
         }
