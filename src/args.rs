@@ -1,6 +1,7 @@
 //! Command-line flags (clap), turned into a validated [`Config`]; the library never sees clap.
 
 use clap::{Parser, ValueEnum};
+use minitri::io::write::OutputFormat;
 use minitri::{Algorithm, Format, Options};
 use std::path::PathBuf;
 
@@ -22,7 +23,8 @@ pub struct Flags {
     /// Output format
     #[arg(short, long, value_enum, default_value = "json")]
     pub to: ToFlag,
-    /// Write the output to this file instead of standard output
+    /// Write the output to this file instead of standard output; with a directory input or
+    /// several inputs, a directory mirroring the input tree, one output file per input file
     #[arg(short, long, value_name = "PATH")]
     pub output: Option<PathBuf>,
     /// Also run every other exact algorithm that applies and check every output independently;
@@ -39,7 +41,7 @@ pub struct Flags {
     /// best triangulation found is reported with "optimal": false and a lower bound
     #[arg(long, value_name = "SECONDS", default_value_t = 10.0, value_parser = seconds)]
     pub time_limit: f64,
-    /// No warnings on standard error
+    /// No warnings, summary or progress bar on standard error (errors are still reported)
     #[arg(short, long)]
     pub quiet: bool,
 }
@@ -49,6 +51,7 @@ const EXAMPLES: &str = "Examples:
   cat shape.wkt | minitri                          read standard input
   minitri --to svg -o u.svg u_shape.wkt            draw it
   minitri --verify shapes/                         a directory, every output checked by the DP too
+  minitri shapes/ -o out/ --jobs 2                 one output per input file, mirrored, 2 threads
   minitri -a ear shape.geojson                     a plain triangulation (n + 2w - 2 triangles)
   echo 'POLYGON ((0 0, 0.1 0.3, 0.2 0.6, 0 1))' | minitri      exact decimals: 1 triangle
 
@@ -95,12 +98,14 @@ pub struct Config {
     /// Forced input format, or `None` for auto-detection.
     pub from: Option<Format>,
     /// Output format.
-    pub to: ToFlag,
+    pub to: OutputFormat,
     /// Output file, or `None` for standard output.
     pub output: Option<PathBuf>,
     /// What to compute.
     pub options: Options,
-    /// Suppress warnings.
+    /// Worker threads, or `None` for all cores.
+    pub jobs: Option<usize>,
+    /// Suppress warnings, the summary and the progress bar.
     pub quiet: bool,
 }
 
@@ -126,7 +131,10 @@ impl Flags {
         Config {
             inputs,
             from,
-            to: self.to,
+            to: match self.to {
+                ToFlag::Json => OutputFormat::Json,
+                ToFlag::Svg => OutputFormat::Svg,
+            },
             output: self.output,
             options: Options {
                 algorithm,
@@ -135,6 +143,7 @@ impl Flags {
                     .then(|| std::time::Duration::from_secs_f64(self.time_limit)),
                 verify: self.verify,
             },
+            jobs: self.jobs.map(|n| n as usize),
             quiet: self.quiet,
         }
     }

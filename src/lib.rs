@@ -25,6 +25,7 @@ macro_rules! order_from_cmp {
 }
 
 pub mod algo;
+pub mod batch;
 pub mod geom;
 pub mod io;
 pub mod pipeline;

@@ -1,16 +1,21 @@
-//! The `minitri` command: flags, library call, writer, exit code. All the work is in the library.
+//! The `minitri` command: flags, library call, writer, exit code. All the work is in the library
+//! (`minitri::batch`); this file wires the flags, the thread pool, the progress bar and the
+//! output file or directory.
 
 mod args;
 
 use anyhow::Context;
-use args::{Config, Flags, ToFlag};
+use args::Flags;
 use clap::Parser;
-use minitri::io::read::{detect, Format};
-use minitri::io::write::{json::write_json, svg};
-use minitri::pipeline::{process, unreadable, Error, Outcome};
-use std::io::{self, Read, Write};
-use std::path::{Path, PathBuf};
+use indicatif::{ProgressBar, ProgressStyle};
+use minitri::batch::{
+    discover, plan, run_document, run_tree, AtomicFile, Observer, Settings, Tally, TreeJob,
+};
+use std::io::{self, IsTerminal};
+use std::path::Path;
 use std::process::ExitCode;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::time::{Duration, Instant};
 
 fn main() -> ExitCode {
     match run() {
@@ -29,166 +34,155 @@ fn main() -> ExitCode {
 }
 
 fn run() -> anyhow::Result<ExitCode> {
+    let started = Instant::now();
     let config = Flags::parse().into_config();
-    let mut outcomes: Vec<Outcome> = Vec::new();
-    for source in sources(&config.inputs) {
-        match source {
-            Ok(path) => outcomes.extend(run_source(&path, &config)),
-            Err((name, message)) => outcomes.push(unreadable(&name, Error::Read(message))),
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(config.jobs.unwrap_or(0))
+        .build()
+        .context("cannot start the worker threads")?;
+    let out_dir = config
+        .output
+        .as_deref()
+        .filter(|out| is_tree(&config.inputs, out));
+    if let Some(out) = out_dir {
+        if config.inputs.iter().any(|p| p == Path::new("-")) {
+            eprintln!("minitri: standard input cannot be part of a batch written to a directory ({}); give its output file with -o, alone", out.display());
+            return Ok(ExitCode::from(2));
+        }
+        if out.exists() && !out.is_dir() {
+            eprintln!(
+                "minitri: {} is not a directory: with a directory input or several inputs, -o names a directory",
+                out.display()
+            );
+            return Ok(ExitCode::from(2));
         }
     }
-    for outcome in &outcomes {
-        if !config.quiet {
-            for warning in &outcome.warnings {
-                eprintln!("minitri: warning: {outcome}: {warning}");
+    let inputs = discover(&config.inputs, out_dir);
+    let settings = Settings {
+        options: config.options.clone(),
+        from: config.from,
+        quiet: config.quiet,
+    };
+    let progress = Progress::new(!config.quiet && io::stderr().is_terminal(), inputs.len());
+    let tally = match (out_dir, &config.output) {
+        (Some(out), _) => {
+            let found: Vec<_> = inputs
+                .iter()
+                .filter_map(|i| i.as_ref().ok())
+                .cloned()
+                .collect();
+            let mut outputs = plan(&found, out, config.to.extension()).into_iter();
+            let jobs: Vec<TreeJob> = inputs
+                .into_iter()
+                .map(|input| {
+                    let output = match &input {
+                        Ok(_) => outputs
+                            .next()
+                            .unwrap_or_else(|| Err("no output planned".into())),
+                        Err(_) => Err(String::new()), // reported as unreadable
+                    };
+                    TreeJob { input, output }
+                })
+                .collect();
+            pool.install(|| run_tree(&jobs, &settings, config.to, &progress))
+        }
+        (None, Some(path)) => {
+            let mut file = AtomicFile::create(path)
+                .with_context(|| format!("cannot write {}", path.display()))?;
+            let report = pool
+                .install(|| {
+                    let sink = config.to.sink(&mut file)?;
+                    run_document(&inputs, &settings, sink, &progress)
+                })
+                .with_context(|| format!("cannot write {}", path.display()))?;
+            progress.bar.finish_and_clear();
+            if report.tally.solved == 0 {
+                eprintln!(
+                    "minitri: nothing triangulated; {} not written",
+                    path.display()
+                );
+            } else if !report.complete {
+                eprintln!(
+                    "minitri: an input could not be read to its end; {} not written",
+                    path.display()
+                );
+            } else {
+                file.commit()
+                    .with_context(|| format!("cannot write {}", path.display()))?;
             }
+            report.tally
         }
-        if let Err(e) = &outcome.result {
-            for message in e.messages() {
-                eprintln!("minitri: {outcome}: {message}");
-            }
+        (None, None) => {
+            let report = pool.install(|| {
+                let stdout = io::BufWriter::new(io::stdout().lock());
+                run_document(&inputs, &settings, config.to.sink(stdout)?, &progress)
+            })?;
+            report.tally
         }
+    };
+    progress.bar.finish_and_clear();
+    let batch =
+        out_dir.is_some() || config.inputs.len() > 1 || config.inputs.iter().any(|p| p.is_dir());
+    if batch && !config.quiet {
+        eprintln!("minitri: {}", tally.summary(started.elapsed()));
     }
-    let any_solved = outcomes.iter().any(|o| o.result.is_ok());
-    match &config.output {
-        Some(path) if any_solved => write_atomically(path, |out| write(&config, &outcomes, out))
-            .with_context(|| format!("cannot write {}", path.display()))?,
-        Some(path) => eprintln!(
-            "minitri: nothing triangulated; {} not written",
-            path.display()
-        ),
-        None => {
-            let mut out = io::BufWriter::new(io::stdout().lock());
-            write(&config, &outcomes, &mut out)?;
-            out.flush()?;
-        }
-    }
-    let verify_failed = outcomes
-        .iter()
-        .any(|o| matches!(&o.result, Ok(s) if s.verification.as_ref().is_some_and(|v| !v.ok)));
-    let failed = outcomes.iter().any(|o| o.result.is_err());
-    Ok(if verify_failed {
+    Ok(exit_code(&tally))
+}
+
+/// Does `-o out` name a directory mirroring the inputs (rather than one output file)?
+fn is_tree(inputs: &[std::path::PathBuf], out: &Path) -> bool {
+    inputs.len() > 1 || inputs.iter().any(|p| p.is_dir()) || out.is_dir()
+}
+
+/// The exit status of the spec: 3 a `--verify` problem, 1 a failure, 0 all processed.
+fn exit_code(tally: &Tally) -> ExitCode {
+    if tally.verify_failures > 0 {
         ExitCode::from(3)
-    } else if failed {
+    } else if tally.errors > 0 {
         ExitCode::from(1)
     } else {
         ExitCode::SUCCESS
-    })
-}
-
-/// Reads one file (or standard input) and processes every polygon in it.
-fn run_source(path: &Path, config: &Config) -> Vec<Outcome> {
-    let stdin = path == Path::new("-");
-    let name = path.display().to_string();
-    let mut bytes = Vec::new();
-    let read = if stdin {
-        io::stdin().lock().read_to_end(&mut bytes)
-    } else {
-        std::fs::File::open(path).and_then(|mut f| f.read_to_end(&mut bytes))
-    };
-    if let Err(e) = read {
-        return vec![unreadable(&name, Error::Read(e.to_string()))];
     }
-    let text = match String::from_utf8(bytes) {
-        Ok(text) => text,
-        Err(e) => {
-            let at = e.utf8_error().valid_up_to();
-            return vec![unreadable(
-                &name,
-                Error::Read(format!("not UTF-8 text (invalid byte at offset {at})")),
-            )];
-        }
-    };
-    let extension = if stdin {
-        None
-    } else {
-        path.extension().and_then(|e| e.to_str())
-    };
-    let format: Format = config.from.unwrap_or_else(|| detect(extension, &text));
-    process(&name, &text, format, &config.options)
 }
 
-/// Expands directories (recursively, sorted, files with a known extension) into files.
-fn sources(inputs: &[PathBuf]) -> Vec<Result<PathBuf, (String, String)>> {
-    let mut out = Vec::new();
-    for input in inputs {
-        if input.is_dir() {
-            let mut files = Vec::new();
-            if let Err(e) = walk(input, &mut files) {
-                out.push(Err((input.display().to_string(), e.to_string())));
-            }
-            files.sort();
-            out.extend(files.into_iter().map(Ok));
+/// Messages on standard error, above a progress bar when standard error is a terminal.
+struct Progress {
+    bar: ProgressBar,
+    polygons: AtomicUsize,
+}
+
+impl Progress {
+    fn new(show: bool, files: usize) -> Progress {
+        let bar = if show {
+            let style = ProgressStyle::with_template(
+                "{spinner} {elapsed_precise} [{bar:30}] {pos}/{len} files, {msg}",
+            )
+            .unwrap_or_else(|_| ProgressStyle::default_bar())
+            .progress_chars("=> ");
+            let bar = ProgressBar::new(files as u64).with_style(style);
+            bar.enable_steady_tick(Duration::from_millis(120));
+            bar
         } else {
-            out.push(Ok(input.clone()));
-        }
-    }
-    out
-}
-
-const EXTENSIONS: &[&str] = &[
-    "wkt", "geojson", "json", "geojsonl", "ndjson", "txt", "xy", "vertices",
-];
-
-fn walk(dir: &Path, files: &mut Vec<PathBuf>) -> io::Result<()> {
-    for entry in std::fs::read_dir(dir)? {
-        let path = entry?.path();
-        if path.is_dir() {
-            walk(&path, files)?;
-        } else if path
-            .extension()
-            .and_then(|e| e.to_str())
-            .is_some_and(|e| EXTENSIONS.contains(&e.to_ascii_lowercase().as_str()))
-        {
-            files.push(path);
-        }
-    }
-    Ok(())
-}
-
-fn write(config: &Config, outcomes: &[Outcome], out: &mut impl Write) -> io::Result<()> {
-    match config.to {
-        ToFlag::Json => write_json(outcomes, out),
-        ToFlag::Svg => {
-            let figures: Vec<svg::Figure> = outcomes
-                .iter()
-                .filter_map(|o| {
-                    let polygon = o.polygon.as_ref()?;
-                    Some(svg::Figure {
-                        title: o.to_string(),
-                        polygon,
-                        triangulation: o.result.as_ref().ok().map(|s| &s.triangulation),
-                        error: o.result.as_ref().err().map(ToString::to_string),
-                    })
-                })
-                .collect();
-            svg::write_svg(&figures, out)
+            ProgressBar::hidden()
+        };
+        Progress {
+            bar,
+            polygons: AtomicUsize::new(0),
         }
     }
 }
 
-/// Writes to a temporary file beside `path`, then renames it: never a truncated output.
-fn write_atomically(
-    path: &Path,
-    body: impl FnOnce(&mut io::BufWriter<std::fs::File>) -> io::Result<()>,
-) -> io::Result<()> {
-    let dir = path
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    let name = path
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    let temp = dir.join(format!(".{name}.minitri-{}.tmp", std::process::id()));
-    let result = (|| {
-        let mut out = io::BufWriter::new(std::fs::File::create(&temp)?);
-        body(&mut out)?;
-        out.into_inner().map_err(|e| e.into_error())?.sync_all()?;
-        std::fs::rename(&temp, path)
-    })();
-    if result.is_err() {
-        let _ = std::fs::remove_file(&temp);
+impl Observer for Progress {
+    fn polygons(&self, count: usize) {
+        let total = self.polygons.fetch_add(count, Ordering::Relaxed) + count;
+        self.bar.set_message(format!("{total} polygons"));
     }
-    result
+
+    fn input_finished(&self) {
+        self.bar.inc(1);
+    }
+
+    fn message(&self, line: &str) {
+        self.bar.suspend(|| eprintln!("minitri: {line}"));
+    }
 }

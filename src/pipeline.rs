@@ -8,7 +8,7 @@
 use crate::algo::{asano, ear, minitri, Algorithm, TriangulateError, Triangulation};
 use crate::geom::polygon::{Polygon, Warning};
 use crate::geom::validate::InvalidPolygon;
-use crate::io::read::{self, Format, ParseError};
+use crate::io::read::{self, Format, ParseError, RawPolygon};
 use crate::verify::{self, Check};
 use serde::Serialize;
 use std::fmt;
@@ -116,6 +116,25 @@ pub struct Outcome {
     pub result: Result<Solved, Error>,
     /// What the tool changed in the input (dropped duplicate vertices).
     pub warnings: Vec<Warning>,
+}
+
+impl Outcome {
+    /// The lines to show a user about this outcome, in order: each warning (unless `quiet`) as
+    /// `warning: source: polygon 2: ...`, then each error as `source: polygon 2: ...`.
+    pub fn messages(&self, quiet: bool) -> Vec<String> {
+        let mut lines = Vec::new();
+        if !quiet {
+            for warning in &self.warnings {
+                lines.push(format!("warning: {self}: {warning}"));
+            }
+        }
+        if let Err(e) = &self.result {
+            for message in e.messages() {
+                lines.push(format!("{self}: {message}"));
+            }
+        }
+        lines
+    }
 }
 
 impl fmt::Display for Outcome {
@@ -228,23 +247,26 @@ pub fn process(source: &str, text: &str, format: Format, options: &Options) -> V
     };
     raws.iter()
         .enumerate()
-        .map(|(index, raw)| {
-            let mut outcome = Outcome {
-                source: source.to_string(),
-                index: Some(index),
-                polygon: None,
-                result: Err(Error::Invalid(Vec::new())),
-                warnings: Vec::new(),
-            };
-            match Polygon::from_raw_all_errors(raw) {
-                Err(errors) => outcome.result = Err(Error::Invalid(errors)),
-                Ok((polygon, warnings)) => {
-                    outcome.warnings = warnings;
-                    outcome.result = solve(&polygon, options);
-                    outcome.polygon = Some(polygon);
-                }
-            }
-            outcome
-        })
+        .map(|(index, raw)| process_raw(source, index, raw, options))
         .collect()
+}
+
+/// Validates and triangulates polygon `index` of `source`, as read.
+pub fn process_raw(source: &str, index: usize, raw: &RawPolygon, options: &Options) -> Outcome {
+    let mut outcome = Outcome {
+        source: source.to_string(),
+        index: Some(index),
+        polygon: None,
+        result: Err(Error::Invalid(Vec::new())),
+        warnings: Vec::new(),
+    };
+    match Polygon::from_raw_all_errors(raw) {
+        Err(errors) => outcome.result = Err(Error::Invalid(errors)),
+        Ok((polygon, warnings)) => {
+            outcome.warnings = warnings;
+            outcome.result = solve(&polygon, options);
+            outcome.polygon = Some(polygon);
+        }
+    }
+    outcome
 }

@@ -1,5 +1,6 @@
 //! Integration tests: one binary (`autotests = false`), modules per topic.
 
+mod batch;
 mod cli;
 mod earcut;
 mod holes_dp;

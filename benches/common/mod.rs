@@ -2,7 +2,8 @@
 //! `bench/polygon.py`, deterministic by seed, for `benches/minitri.rs` (criterion) and
 //! `benches/compare.rs` (the table beside the `earcut` crate); polygons with holes given as
 //! integer rings, for `benches/holes.rs`; and the mapbox/earcut fixtures in both forms, for
-//! `benches/compare.rs` and `benches/earcut_fixtures.rs`.
+//! `benches/compare.rs` and `benches/earcut_fixtures.rs`; small rectilinear polygons for
+//! `benches/batch.rs`.
 //!
 //! - [`star`]: a random star-shaped polygon in general position: random angles and radii around
 //!   the origin on an integer grid, sorted exactly by angle (then by distance), so the polygon is
@@ -272,4 +273,28 @@ pub fn earcut_fixture(text: &str, outer_only: bool) -> Result<Fixture, String> {
         coords,
         hole_starts,
     })
+}
+
+/// A small random rectilinear polygon for batch benchmarks: 2 to 10 unit columns, bottom heights
+/// in `0..=2` and top heights in `4..=6`, walked counter-clockwise with only exact repeats removed,
+/// so that equal neighbouring heights leave flat (collinear) vertices: 8 to 40 vertices, and
+/// degenerate triangles to save.
+pub fn small_rectilinear(seed: u64) -> Vec<[i64; 2]> {
+    let mut rng = Rng(seed);
+    let columns = rng.range(2, 10);
+    let bottom: Vec<i64> = (0..columns).map(|_| rng.range(0, 2)).collect();
+    let top: Vec<i64> = (0..columns).map(|_| rng.range(4, 6)).collect();
+    let mut ring: Vec<[i64; 2]> = Vec::with_capacity(4 * columns as usize);
+    for (x, &h) in (0..).zip(&bottom) {
+        ring.extend([[x, h], [x + 1, h]]);
+    }
+    for x in (0..columns).rev() {
+        let h = top[x as usize];
+        ring.extend([[x + 1, h], [x, h]]);
+    }
+    ring.dedup();
+    while ring.len() > 1 && ring.first() == ring.last() {
+        ring.pop();
+    }
+    ring
 }

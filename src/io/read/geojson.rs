@@ -93,14 +93,7 @@ pub fn read(text: &str) -> Result<Vec<RawPolygon>, ParseError> {
 
 /// A `serde_json` syntax error as a [`ParseError`] at its line and (character) column.
 fn json_error(text: &str, bom: usize, error: &serde_json::Error) -> ParseError {
-    let full = error.to_string();
-    let suffix = format!(" at line {} column {}", error.line(), error.column());
-    let message = full.strip_suffix(&suffix).unwrap_or(&full);
-    let message = match message.strip_prefix("EOF while parsing ") {
-        Some(what) => format!("the input ends in the middle of {what}"),
-        None => message.to_string(),
-    };
-    let message = format!("invalid JSON: {message}");
+    let message = json_message(error);
     if error.is_eof() {
         return ParseError::at(locate(text, text.len()), message);
     }
@@ -127,9 +120,21 @@ fn json_error(text: &str, bom: usize, error: &serde_json::Error) -> ParseError {
     )
 }
 
+/// A `serde_json` syntax error in words, without its position: `invalid JSON: ...`.
+pub(super) fn json_message(error: &serde_json::Error) -> String {
+    let full = error.to_string();
+    let suffix = format!(" at line {} column {}", error.line(), error.column());
+    let message = full.strip_suffix(&suffix).unwrap_or(&full);
+    let message = match message.strip_prefix("EOF while parsing ") {
+        Some(what) => format!("the input ends in the middle of {what}"),
+        None => message.to_string(),
+    };
+    format!("invalid JSON: {message}")
+}
+
 /// What is wrong with a well-formed document, and the path to where (outermost first).
 #[derive(Debug)]
-struct Failure {
+pub(super) struct Failure {
     path: Vec<(&'static str, usize)>,
     message: String,
 }
@@ -143,7 +148,7 @@ impl Failure {
     }
 
     /// The same failure, inside element `index` of a list of `name`s.
-    fn within(mut self, name: &'static str, index: usize) -> Failure {
+    pub(super) fn within(mut self, name: &'static str, index: usize) -> Failure {
         self.path.insert(0, (name, index));
         self
     }
@@ -178,7 +183,7 @@ fn describe(value: &Value) -> String {
 }
 
 /// A top-level JSON value: a GeoJSON object or a bare array of rings.
-fn top_level(value: &Value, out: &mut Vec<RawPolygon>) -> Result<(), Failure> {
+pub(super) fn top_level(value: &Value, out: &mut Vec<RawPolygon>) -> Result<(), Failure> {
     match value {
         Value::Object(object) => match type_of(object)? {
             "Feature" => feature(object, out),
@@ -251,7 +256,7 @@ fn feature_collection(
 }
 
 /// An element of a FeatureCollection's `features`: a Feature.
-fn collection_feature(item: &Value, out: &mut Vec<RawPolygon>) -> Result<(), Failure> {
+pub(super) fn collection_feature(item: &Value, out: &mut Vec<RawPolygon>) -> Result<(), Failure> {
     let object = object_of(item, "a Feature object")?;
     match type_of(object)? {
         "Feature" => feature(object, out),

@@ -18,6 +18,7 @@ use crate::geom::decimal::Decimal;
 use std::fmt;
 
 pub mod geojson;
+pub mod geojson_stream;
 pub mod vertices;
 pub mod wkt;
 
@@ -104,11 +105,29 @@ pub(crate) fn drop_closing_vertex(ring: &mut Vec<[Decimal; 2]>) {
 /// Decides the format from a file extension (`None` for standard input or an unknown extension),
 /// falling back to the content.
 pub fn detect(extension: Option<&str>, text: &str) -> Format {
+    by_extension(extension).unwrap_or_else(|| detect_content(text))
+}
+
+/// Decides the format from a file extension, or else from the start of the content: `None`
+/// when `start` holds no meaningful character yet (only blanks and `#` comments), so that a
+/// reader can look further before deciding.
+pub fn detect_start(extension: Option<&str>, start: &str) -> Option<Format> {
+    let meaningful = || {
+        start
+            .lines()
+            .map(str::trim_start)
+            .any(|l| !l.is_empty() && !l.starts_with('#'))
+    };
+    by_extension(extension).or_else(|| meaningful().then(|| detect_content(start)))
+}
+
+/// The format a file extension stands for, if any.
+fn by_extension(extension: Option<&str>) -> Option<Format> {
     match extension.map(str::to_ascii_lowercase).as_deref() {
-        Some("wkt") => Format::Wkt,
-        Some("geojson" | "json" | "geojsonl" | "ndjson" | "geojsons") => Format::GeoJson,
-        Some("txt" | "xy" | "vertices") => Format::Vertices,
-        _ => detect_content(text),
+        Some("wkt") => Some(Format::Wkt),
+        Some("geojson" | "json" | "geojsonl" | "ndjson" | "geojsons") => Some(Format::GeoJson),
+        Some("txt" | "xy" | "vertices") => Some(Format::Vertices),
+        _ => None,
     }
 }
 

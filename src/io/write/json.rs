@@ -6,7 +6,8 @@
 //! `bounds` (Theorem 3's bounds on the minimum, generalised to flat vertices), `warnings`, and
 //! `verification` with `--verify`. Every polygon or input that failed is listed under `errors`
 //! with its source, index and message. Pretty at the top level, one line per triangle list, so
-//! files stay small and diffable. Complexity: linear in the output size.
+//! files stay small and diffable. [`JsonWriter`] writes the same document incrementally, one
+//! polygon at a time (memory: the error list only). Complexity: linear in the output size.
 
 use crate::geom::polygon::Polygon;
 use crate::pipeline::Outcome;
@@ -18,24 +19,69 @@ use std::io::{self, Write};
 /// # Errors
 /// Any I/O error of `out`.
 pub fn write_json(outcomes: &[Outcome], out: &mut impl Write) -> io::Result<()> {
-    writeln!(out, "{{")?;
-    let entries: Vec<_> = outcomes
-        .iter()
-        .filter_map(|o| match (&o.result, &o.polygon, o.index) {
-            (Ok(s), Some(p), Some(i)) => Some((o, s, p, i)),
-            _ => None,
+    let mut writer = JsonWriter::new(out)?;
+    for outcome in outcomes {
+        writer.push(outcome)?;
+    }
+    writer.finish()
+}
+
+/// The same document written incrementally: each solved polygon as soon as it is pushed, the
+/// errors (which the document lists after the polygons) kept until [`JsonWriter::finish`].
+/// The bytes are exactly those of [`write_json`] on the same outcomes.
+pub struct JsonWriter<W: Write> {
+    out: W,
+    polygons: usize,
+    errors: Vec<ErrorEntry>,
+}
+
+/// One entry of `errors`.
+#[derive(Serialize)]
+struct ErrorEntry {
+    source: String,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    index: Option<usize>,
+    message: String,
+}
+
+impl<W: Write> JsonWriter<W> {
+    /// Starts the document.
+    ///
+    /// # Errors
+    /// Any I/O error of `out`.
+    pub fn new(mut out: W) -> io::Result<JsonWriter<W>> {
+        write!(out, "{{\n  \"polygons\": [")?;
+        Ok(JsonWriter {
+            out,
+            polygons: 0,
+            errors: Vec::new(),
         })
-        .collect();
-    writeln!(
-        out,
-        "  \"polygons\": [{}",
-        if entries.is_empty() { "]," } else { "" }
-    )?;
-    for (k, (outcome, solved, polygon, index)) in entries.iter().enumerate() {
+    }
+
+    /// Writes one outcome (a solved polygon now, an error at the end).
+    ///
+    /// # Errors
+    /// Any I/O error of the output.
+    pub fn push(&mut self, outcome: &Outcome) -> io::Result<()> {
+        let (solved, polygon, index) = match (&outcome.result, &outcome.polygon, outcome.index) {
+            (Ok(s), Some(p), Some(i)) => (s, p, i),
+            (Err(e), _, _) => {
+                self.errors.push(ErrorEntry {
+                    source: outcome.source.clone(),
+                    index: outcome.index,
+                    message: e.to_string(),
+                });
+                return Ok(());
+            }
+            _ => return Ok(()),
+        };
+        let out = &mut self.out;
+        writeln!(out, "{}", if self.polygons == 0 { "" } else { "," })?;
+        self.polygons += 1;
         let t = &solved.triangulation;
-        let fields: Vec<(&str, String)> = vec![
+        let mut fields: Vec<(&str, String)> = vec![
             ("source", json(&outcome.source)),
-            ("index", json(index)),
+            ("index", json(&index)),
             ("algorithm", json(t.algorithm.name())),
             ("vertices", json(&polygon.len())),
             ("holes", json(&polygon.holes())),
@@ -51,7 +97,6 @@ pub fn write_json(outcomes: &[Outcome], out: &mut impl Write) -> io::Result<()> 
                 format!("{{\"lower\": {lower}, \"upper\": {upper}}}")
             }),
         ];
-        let mut fields = fields;
         if let Some(lower) = t.lower_bound {
             // A search cut short: what is proved about the minimum, right after `optimal`.
             let after = fields.iter().position(|(name, _)| *name == "optimal");
@@ -67,34 +112,24 @@ pub fn write_json(outcomes: &[Outcome], out: &mut impl Write) -> io::Result<()> 
         if let Some(v) = &solved.verification {
             write!(out, ",\n      \"verification\": {}", json(v))?;
         }
-        writeln!(
-            out,
-            "\n    }}{}",
-            if k + 1 < entries.len() { "," } else { "" }
-        )?;
+        write!(out, "\n    }}")
     }
-    if !entries.is_empty() {
-        writeln!(out, "  ],")?;
+
+    /// Ends the document: closes `polygons`, writes `errors`, and flushes.
+    ///
+    /// # Errors
+    /// Any I/O error of the output.
+    pub fn finish(mut self) -> io::Result<()> {
+        let out = &mut self.out;
+        if self.polygons == 0 {
+            writeln!(out, "],")?;
+        } else {
+            writeln!(out, "\n  ],")?;
+        }
+        writeln!(out, "  \"errors\": {}", json(&self.errors))?;
+        writeln!(out, "}}")?;
+        out.flush()
     }
-    #[derive(Serialize)]
-    struct ErrorEntry<'a> {
-        source: &'a str,
-        #[serde(skip_serializing_if = "Option::is_none")]
-        index: Option<usize>,
-        message: String,
-    }
-    let errors: Vec<ErrorEntry> = outcomes
-        .iter()
-        .filter_map(|o| {
-            o.result.as_ref().err().map(|e| ErrorEntry {
-                source: &o.source,
-                index: o.index,
-                message: e.to_string(),
-            })
-        })
-        .collect();
-    writeln!(out, "  \"errors\": {}", json(&errors))?;
-    writeln!(out, "}}")
 }
 
 /// Triangles as input vertex numbers.

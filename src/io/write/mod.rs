@@ -1,3 +1,87 @@
 //! Writers: JSON and SVG. They consume results and never call algorithms.
+//!
+//! [`OutputFormat::sink`] gives a [`Sink`] that takes outcomes one at a time, in order: the JSON
+//! sink writes each polygon at once (streamed); the SVG sink keeps them and draws the picture at
+//! the end (a layout needs every panel, and a picture of a huge batch is not useful anyway).
 pub mod json;
 pub mod svg;
+
+use crate::pipeline::Outcome;
+use std::io::{self, Write};
+
+/// An output format.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum OutputFormat {
+    /// The JSON document of `spec/CLI.md`.
+    Json,
+    /// An SVG picture.
+    Svg,
+}
+
+impl OutputFormat {
+    /// The file extension of this format, without the dot.
+    pub fn extension(self) -> &'static str {
+        match self {
+            OutputFormat::Json => "json",
+            OutputFormat::Svg => "svg",
+        }
+    }
+
+    /// A sink writing this format to `out`.
+    ///
+    /// # Errors
+    /// Any I/O error of `out` (the JSON sink writes its first line at once).
+    pub fn sink<'w, W: Write + 'w>(self, out: W) -> io::Result<Box<dyn Sink + 'w>> {
+        Ok(match self {
+            OutputFormat::Json => Box::new(json::JsonWriter::new(out)?),
+            OutputFormat::Svg => Box::new(SvgSink {
+                out,
+                outcomes: Vec::new(),
+            }),
+        })
+    }
+}
+
+/// Takes outcomes in order and writes a document of them.
+pub trait Sink {
+    /// Takes the next outcome.
+    ///
+    /// # Errors
+    /// Any I/O error of the output.
+    fn push(&mut self, outcome: Outcome) -> io::Result<()>;
+
+    /// Ends the document and flushes the output.
+    ///
+    /// # Errors
+    /// Any I/O error of the output.
+    fn finish(self: Box<Self>) -> io::Result<()>;
+}
+
+impl<W: Write> Sink for json::JsonWriter<W> {
+    fn push(&mut self, outcome: Outcome) -> io::Result<()> {
+        json::JsonWriter::push(self, &outcome)
+    }
+
+    fn finish(self: Box<Self>) -> io::Result<()> {
+        json::JsonWriter::finish(*self)
+    }
+}
+
+/// The SVG sink: keeps the outcomes, draws them all at the end.
+struct SvgSink<W: Write> {
+    out: W,
+    outcomes: Vec<Outcome>,
+}
+
+impl<W: Write> Sink for SvgSink<W> {
+    fn push(&mut self, outcome: Outcome) -> io::Result<()> {
+        self.outcomes.push(outcome);
+        Ok(())
+    }
+
+    fn finish(self: Box<Self>) -> io::Result<()> {
+        let SvgSink { mut out, outcomes } = *self;
+        svg::write_outcomes(&outcomes, &mut out)?;
+        out.flush()
+    }
+}

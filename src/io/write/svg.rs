@@ -32,6 +32,7 @@
 use crate::algo::Triangulation;
 use crate::geom::kernel::Point;
 use crate::geom::polygon::Polygon;
+use crate::pipeline::Outcome;
 use std::fmt;
 use std::io::{self, Write};
 
@@ -77,6 +78,27 @@ pub struct Figure<'a> {
     pub triangulation: Option<&'a Triangulation>,
     /// Why it could not be triangulated; drawn in red instead of triangles.
     pub error: Option<String>,
+}
+
+/// Writes one SVG document of every outcome that has a valid polygon (solved or not; inputs that
+/// could not be read and invalid polygons have nothing to draw).
+///
+/// # Errors
+/// Only those of `out`.
+pub fn write_outcomes(outcomes: &[Outcome], out: &mut impl Write) -> io::Result<()> {
+    let figures: Vec<Figure> = outcomes
+        .iter()
+        .filter_map(|o| {
+            let polygon = o.polygon.as_ref()?;
+            Some(Figure {
+                title: o.to_string(),
+                polygon,
+                triangulation: o.result.as_ref().ok().map(|s| &s.triangulation),
+                error: o.result.as_ref().err().map(ToString::to_string),
+            })
+        })
+        .collect();
+    write_svg(&figures, out)
 }
 
 /// Writes one standalone SVG document showing every figure.

@@ -1,0 +1,561 @@
+//! Running inputs: read, triangulate in parallel, write in input order.
+//!
+//! Every input is read as a stream of polygons (`read_input`): GeoJSON Lines line by line (each
+//! line parsed in parallel with its chunk), other GeoJSON through [`geojson_stream`] (one
+//! feature or value at a time), WKT and vertex lists whole (their text and polygons in memory). Polygons are gathered into chunks of at most [`CHUNK_POLYGONS`] polygons
+//! or [`CHUNK_VERTICES`] vertices; each chunk is triangulated in parallel on the current rayon
+//! pool and its outcomes handed on in input order, so that the output is the same for any number
+//! of threads and memory holds one chunk (plus, for JSON, the error list) however large the input.
+//!
+//! - [`run_document`]: every input into one document (standard output, or `-o FILE`); chunks may
+//!   span several inputs, so many small files are triangulated in parallel too.
+//! - [`run_tree`]: each input into its own output file (`-o DIR`), inputs in parallel, each
+//!   written atomically ([`AtomicFile`]); messages reported in input order.
+
+use super::atomic::AtomicFile;
+use super::discover::{Input, Unreadable};
+use super::tally::Tally;
+use crate::io::read::geojson_stream::{self, Event, Stop};
+use crate::io::read::{self, detect_start, Format, ParseError, RawPolygon};
+use crate::io::write::{OutputFormat, Sink};
+use crate::pipeline::{process_raw, unreadable, Error, Options, Outcome};
+use rayon::prelude::*;
+use std::collections::BTreeMap;
+use std::io::{self, BufRead, BufReader, Read};
+use std::path::PathBuf;
+use std::sync::{Arc, Mutex};
+
+/// Most polygons triangulated together before their outcomes are written.
+pub const CHUNK_POLYGONS: usize = 4096;
+/// Most vertices (over all polygons) triangulated together before their outcomes are written.
+pub const CHUNK_VERTICES: usize = 1 << 22;
+
+/// What a run computes and how it reads.
+#[derive(Clone, Debug, Default)]
+pub struct Settings {
+    /// What to compute for every polygon.
+    pub options: Options,
+    /// The input format, or `None` to decide by extension, then by content.
+    pub from: Option<Format>,
+    /// Leave warnings out of the messages.
+    pub quiet: bool,
+}
+
+/// Told what a run does as it goes; called from worker threads.
+pub trait Observer: Sync {
+    /// `count` more polygons were processed (triangulated or not).
+    fn polygons(&self, count: usize);
+    /// One more input is finished (in any order).
+    fn input_finished(&self);
+    /// A line for the user about an input (a warning or an error), in input order.
+    fn message(&self, line: &str);
+}
+
+/// An observer that ignores everything.
+pub struct Silent;
+
+impl Observer for Silent {
+    fn polygons(&self, _: usize) {}
+    fn input_finished(&self) {}
+    fn message(&self, _: &str) {}
+}
+
+/// The result of [`run_document`].
+#[derive(Clone, Copy, Debug)]
+pub struct DocumentReport {
+    /// What was done.
+    pub tally: Tally,
+    /// Every input was read to its end (no unreadable file, no syntax error cutting one short).
+    pub complete: bool,
+}
+
+/// Reads every input, in order, into one document written by `sink`.
+///
+/// # Errors
+/// An I/O error of the output (the run stops there); input errors are outcomes, not errors.
+///
+/// # Examples
+/// ```
+/// use minitri::batch::{discover, run_document, Settings, Silent};
+/// use minitri::io::write::OutputFormat;
+/// let inputs = discover(&["fixtures/valid/u_shape.wkt".into()], None);
+/// let mut out = Vec::new();
+/// let sink = OutputFormat::Json.sink(&mut out)?;
+/// let report = run_document(&inputs, &Settings::default(), sink, &Silent)?;
+/// assert_eq!((report.tally.polygons, report.tally.triangles, report.tally.saved), (1, 5, 5));
+/// assert!(String::from_utf8_lossy(&out).contains("\"triangle_count\": 5"));
+/// # Ok::<(), std::io::Error>(())
+/// ```
+pub fn run_document(
+    inputs: &[Result<Input, Unreadable>],
+    settings: &Settings,
+    mut sink: Box<dyn Sink + '_>,
+    observer: &dyn Observer,
+) -> io::Result<DocumentReport> {
+    let mut tally = Tally::default();
+    let mut complete = true;
+    {
+        let mut deliver = |outcome: Outcome| {
+            tally.add(&outcome);
+            for line in outcome.messages(settings.quiet) {
+                observer.message(&line);
+            }
+            sink.push(outcome)
+        };
+        let mut chunker = Chunker::new(&settings.options, &mut deliver, observer);
+        for input in inputs {
+            complete &= match input {
+                Ok(input) => read_input(input, settings.from, &mut chunker)?,
+                Err(e) => {
+                    chunker.push(Item::Failed(Box::new(unreadable(
+                        &e.name,
+                        Error::Read(e.message.clone()),
+                    ))))?;
+                    false
+                }
+            };
+            observer.input_finished();
+        }
+        chunker.flush()?;
+    }
+    tally.files = inputs.len();
+    sink.finish()?;
+    Ok(DocumentReport { tally, complete })
+}
+
+/// One input of a tree run and where its output goes (see [`super::plan`]).
+#[derive(Clone, Debug)]
+pub struct TreeJob {
+    /// The input file.
+    pub input: Result<Input, Unreadable>,
+    /// Its output file, or why it gets none.
+    pub output: Result<PathBuf, String>,
+}
+
+/// Reads each input into its own output file, inputs in parallel on the current rayon pool.
+///
+/// An output file is written (atomically) when its input was read to the end and at least one of
+/// its polygons was triangulated; otherwise it is not written, and an existing file of that name
+/// is left as it was. Missing directories are created. Messages reach `observer` in input
+/// order; the returned tally counts everything (an output that cannot be written is an error).
+///
+/// # Examples
+/// ```
+/// use minitri::batch::{discover, plan, run_tree, Settings, Silent, TreeJob};
+/// use minitri::io::write::OutputFormat;
+/// let out = tempfile::tempdir()?;
+/// let inputs: Vec<_> = discover(&["fixtures/valid".into()], None).into_iter().flatten().collect();
+/// let jobs: Vec<TreeJob> = inputs.iter().cloned().zip(plan(&inputs, out.path(), "json"))
+///     .map(|(input, output)| TreeJob { input: Ok(input), output }).collect();
+/// let tally = run_tree(&jobs, &Settings::default(), OutputFormat::Json, &Silent);
+/// assert_eq!((tally.files, tally.errors), (inputs.len(), 0));
+/// assert!(out.path().join("l_shape.json").is_file());
+/// // u_shape.wkt, u_shape.geojson and u_shape.txt: each keeps its name.
+/// assert!(out.path().join("u_shape.geojson.json").is_file());
+/// # Ok::<(), std::io::Error>(())
+/// ```
+pub fn run_tree(
+    jobs: &[TreeJob],
+    settings: &Settings,
+    format: OutputFormat,
+    observer: &dyn Observer,
+) -> Tally {
+    let order = Mutex::new(Reorder {
+        next: 0,
+        waiting: BTreeMap::new(),
+        tally: Tally::default(),
+    });
+    jobs.par_iter().enumerate().for_each(|(k, job)| {
+        let report = run_file(job, settings, format, observer);
+        observer.input_finished();
+        let mut order = order
+            .lock()
+            .unwrap_or_else(|poisoned| poisoned.into_inner());
+        order.waiting.insert(k, report);
+        loop {
+            let next = order.next;
+            let Some(report) = order.waiting.remove(&next) else {
+                break;
+            };
+            for line in &report.messages {
+                observer.message(line);
+            }
+            order.tally.merge(&report.tally);
+            order.next += 1;
+        }
+    });
+    let order = order.into_inner().unwrap_or_else(|p| p.into_inner());
+    order.tally
+}
+
+/// Finished inputs waiting for the ones before them to be reported.
+struct Reorder {
+    next: usize,
+    waiting: BTreeMap<usize, FileReport>,
+    tally: Tally,
+}
+
+/// What one input of a tree run did.
+struct FileReport {
+    messages: Vec<String>,
+    tally: Tally,
+}
+
+/// One input of a tree run, into its own output file.
+fn run_file(
+    job: &TreeJob,
+    settings: &Settings,
+    format: OutputFormat,
+    observer: &dyn Observer,
+) -> FileReport {
+    let mut report = FileReport {
+        messages: Vec::new(),
+        tally: Tally {
+            files: 1,
+            ..Tally::default()
+        },
+    };
+    let fail = |report: &mut FileReport, line: String| {
+        report.messages.push(line);
+        report.tally.errors += 1;
+    };
+    let input = match &job.input {
+        Ok(input) => input,
+        Err(e) => {
+            fail(&mut report, format!("{}: {}", e.name, e.message));
+            return report;
+        }
+    };
+    let target = match &job.output {
+        Ok(target) => target,
+        Err(why) => {
+            fail(&mut report, format!("{}: {why}", input.name()));
+            return report;
+        }
+    };
+    let cannot_write = |e: io::Error| format!("cannot write {}: {e}", target.display());
+    if let Some(dir) = target.parent().filter(|d| !d.as_os_str().is_empty()) {
+        if let Err(e) = std::fs::create_dir_all(dir) {
+            fail(
+                &mut report,
+                format!("cannot create directory {}: {e}", dir.display()),
+            );
+            return report;
+        }
+    }
+    let mut file = match AtomicFile::create(target) {
+        Ok(file) => file,
+        Err(e) => {
+            fail(&mut report, cannot_write(e));
+            return report;
+        }
+    };
+    let written = (|| {
+        let mut sink = format.sink(&mut file)?;
+        let complete = {
+            let mut deliver = |outcome: Outcome| {
+                report.tally.add(&outcome);
+                report.messages.extend(outcome.messages(settings.quiet));
+                sink.push(outcome)
+            };
+            let mut chunker = Chunker::new(&settings.options, &mut deliver, observer);
+            let complete = read_input(input, settings.from, &mut chunker)?;
+            chunker.flush()?;
+            complete
+        };
+        sink.finish()?;
+        Ok(complete)
+    })();
+    match written {
+        Ok(true) if report.tally.solved > 0 => {
+            if let Err(e) = file.commit() {
+                fail(&mut report, cannot_write(e));
+            }
+        }
+        Ok(_) => {} // nothing to write: the input's errors say why; `file` is dropped, unwritten
+        Err(e) => fail(&mut report, cannot_write(e)),
+    }
+    report
+}
+
+/// What the readers hand to the chunker.
+enum Item {
+    /// A polygon to triangulate.
+    Polygon {
+        source: Arc<str>,
+        index: usize,
+        raw: RawPolygon,
+    },
+    /// Something that failed already (an unreadable input or part of one).
+    Failed(Box<Outcome>),
+    /// Line `number` of a GeoJSON Lines input, read (in parallel) with the chunk; its polygons
+    /// are numbered on from the source's previous ones.
+    Line {
+        source: Arc<str>,
+        number: usize,
+        text: String,
+    },
+}
+
+/// An item after the parallel reading of lines, before its polygons are numbered.
+enum Parsed {
+    Ready(Item),
+    Line(Arc<str>, Result<Vec<RawPolygon>, ParseError>),
+}
+
+/// Gathers items into chunks, triangulates each chunk in parallel, delivers outcomes in order.
+struct Chunker<'a> {
+    options: &'a Options,
+    items: Vec<Item>,
+    vertices: usize,
+    /// The source of the last line numbered, and the index its next polygon gets.
+    lines: Option<(Arc<str>, usize)>,
+    deliver: &'a mut dyn FnMut(Outcome) -> io::Result<()>,
+    observer: &'a dyn Observer,
+}
+
+impl<'a> Chunker<'a> {
+    fn new(
+        options: &'a Options,
+        deliver: &'a mut dyn FnMut(Outcome) -> io::Result<()>,
+        observer: &'a dyn Observer,
+    ) -> Chunker<'a> {
+        Chunker {
+            options,
+            items: Vec::new(),
+            vertices: 0,
+            lines: None,
+            deliver,
+            observer,
+        }
+    }
+
+    fn push(&mut self, item: Item) -> io::Result<()> {
+        match &item {
+            Item::Polygon { raw, .. } => {
+                self.vertices += raw.rings.iter().map(Vec::len).sum::<usize>();
+            }
+            // About one vertex per 8 bytes of GeoJSON ("[12, 34], ").
+            Item::Line { text, .. } => self.vertices += text.len() / 8,
+            Item::Failed(_) => {}
+        }
+        self.items.push(item);
+        if self.items.len() >= CHUNK_POLYGONS || self.vertices >= CHUNK_VERTICES {
+            self.flush()?;
+        }
+        Ok(())
+    }
+
+    /// Reads the lines among `items` in parallel and numbers their polygons, in order.
+    fn read_lines(&mut self, items: Vec<Item>) -> Vec<Item> {
+        let parsed: Vec<Parsed> = items
+            .into_par_iter()
+            .map(|item| match item {
+                Item::Line {
+                    source,
+                    number,
+                    text,
+                } => Parsed::Line(source, geojson_stream::read_line(&text, number)),
+                other => Parsed::Ready(other),
+            })
+            .collect();
+        let mut items = Vec::with_capacity(parsed.len());
+        for parsed in parsed {
+            match parsed {
+                Parsed::Ready(item) => items.push(item),
+                Parsed::Line(source, Err(e)) => {
+                    items.push(Item::Failed(Box::new(unreadable(&source, Error::Parse(e)))));
+                }
+                Parsed::Line(source, Ok(raws)) => {
+                    let next = match &mut self.lines {
+                        Some((last, next)) if Arc::ptr_eq(last, &source) => next,
+                        lines => &mut lines.insert((Arc::clone(&source), 0)).1,
+                    };
+                    for raw in raws {
+                        let index = *next;
+                        *next += 1;
+                        let source = Arc::clone(&source);
+                        items.push(Item::Polygon { source, index, raw });
+                    }
+                }
+            }
+        }
+        items
+    }
+
+    fn flush(&mut self) -> io::Result<()> {
+        let mut items = std::mem::take(&mut self.items);
+        self.vertices = 0;
+        if items.iter().any(|item| matches!(item, Item::Line { .. })) {
+            items = self.read_lines(items);
+        }
+        let options = self.options;
+        let outcomes: Vec<Outcome> = items
+            .into_par_iter()
+            .map(|item| match item {
+                Item::Polygon { source, index, raw } => process_raw(&source, index, &raw, options),
+                Item::Failed(outcome) => *outcome,
+                Item::Line { source, .. } => {
+                    unreadable(&source, Error::Read("line not read".into()))
+                }
+            })
+            .collect();
+        let polygons = outcomes.iter().filter(|o| o.index.is_some()).count();
+        self.observer.polygons(polygons);
+        for outcome in outcomes {
+            (self.deliver)(outcome)?;
+        }
+        Ok(())
+    }
+}
+
+/// Reads one input into the chunker; returns whether it was read to its end.
+///
+/// Errors of the input become outcomes; the `Err` is the output's (from delivering).
+fn read_input(input: &Input, from: Option<Format>, chunker: &mut Chunker) -> io::Result<bool> {
+    let source: Arc<str> = Arc::from(input.name());
+    let failed = |chunker: &mut Chunker, error: Error| {
+        chunker
+            .push(Item::Failed(Box::new(unreadable(&source, error))))
+            .map(|()| false)
+    };
+    let reader: Box<dyn Read> = if input.is_stdin() {
+        Box::new(io::stdin())
+    } else {
+        match std::fs::File::open(&input.path) {
+            Ok(file) => Box::new(file),
+            Err(e) => return failed(chunker, Error::Read(e.to_string())),
+        }
+    };
+    let mut reader = BufReader::with_capacity(1 << 16, reader);
+    let extension = (!input.is_stdin())
+        .then(|| input.path.extension().and_then(|e| e.to_str()))
+        .flatten();
+    let start = match reader.fill_buf() {
+        Ok(start) => start,
+        Err(e) => return failed(chunker, Error::Read(e.to_string())),
+    };
+    let format = from.or_else(|| detect_start(extension, &String::from_utf8_lossy(start)));
+    if format == Some(Format::GeoJson) {
+        let lines_by_name = extension.is_some_and(|e| {
+            ["ndjson", "geojsonl", "geojsons"].contains(&e.to_ascii_lowercase().as_str())
+        });
+        if lines_by_name || geojson_stream::looks_line_delimited(start) {
+            return read_lines(&source, reader, chunker);
+        }
+        return stream_geojson(&source, reader, chunker);
+    }
+    let mut bytes = Vec::new();
+    if let Err(e) = reader.read_to_end(&mut bytes) {
+        return failed(chunker, Error::Read(e.to_string()));
+    }
+    let text = match String::from_utf8(bytes) {
+        Ok(text) => text,
+        Err(e) => {
+            let at = e.utf8_error().valid_up_to();
+            let message = format!("not UTF-8 text (invalid byte at offset {at})");
+            return failed(chunker, Error::Read(message));
+        }
+    };
+    let format = format.unwrap_or_else(|| read::detect(extension, &text));
+    if format == Format::GeoJson {
+        return stream_geojson(&source, text.as_bytes(), chunker);
+    }
+    match read::read(format, &text) {
+        Ok(raws) => {
+            drop(text);
+            for (index, raw) in raws.into_iter().enumerate() {
+                let source = Arc::clone(&source);
+                chunker.push(Item::Polygon { source, index, raw })?;
+            }
+            Ok(true)
+        }
+        Err(e) => failed(chunker, Error::Parse(e)),
+    }
+}
+
+/// Reads a GeoJSON Lines input into the chunker, line by line (the lines are parsed in parallel
+/// with their chunk); returns whether it was read to its end. Each line stands alone: a line that
+/// is not JSON, or not a polygon, is reported and the others go on.
+fn read_lines(
+    source: &Arc<str>,
+    mut reader: impl BufRead,
+    chunker: &mut Chunker,
+) -> io::Result<bool> {
+    let mut number = 0;
+    let mut any = false;
+    loop {
+        let mut bytes = Vec::new();
+        match reader.read_until(b'\n', &mut bytes) {
+            Ok(0) => break,
+            Ok(_) => {}
+            Err(e) => {
+                let error = Error::Read(e.to_string());
+                chunker.push(Item::Failed(Box::new(unreadable(source, error))))?;
+                return Ok(false);
+            }
+        }
+        number += 1;
+        let text = match String::from_utf8(bytes) {
+            Ok(text) => text,
+            Err(_) => {
+                let message = format!("line {number}: not UTF-8 text");
+                chunker.push(Item::Failed(Box::new(unreadable(
+                    source,
+                    Error::Read(message),
+                ))))?;
+                continue;
+            }
+        };
+        if text.trim().is_empty() {
+            continue;
+        }
+        any = true;
+        let source = Arc::clone(source);
+        chunker.push(Item::Line {
+            source,
+            number,
+            text,
+        })?;
+    }
+    if !any {
+        let error = ParseError::new("empty input: no polygon found");
+        chunker.push(Item::Failed(Box::new(unreadable(
+            source,
+            Error::Parse(error),
+        ))))?;
+        return Ok(false);
+    }
+    Ok(true)
+}
+
+/// Streams a GeoJSON input into the chunker; returns whether it was read to its end.
+fn stream_geojson(
+    source: &Arc<str>,
+    reader: impl BufRead,
+    chunker: &mut Chunker,
+) -> io::Result<bool> {
+    let mut index = 0;
+    let mut emit = |event: Event| match event {
+        Event::Polygon(raw) => {
+            index += 1;
+            chunker.push(Item::Polygon {
+                source: Arc::clone(source),
+                index: index - 1,
+                raw,
+            })
+        }
+        Event::Failed(e) => {
+            chunker.push(Item::Failed(Box::new(unreadable(source, Error::Parse(e)))))
+        }
+    };
+    let stop = match geojson_stream::stream(reader, &mut emit) {
+        Ok(()) => return Ok(true),
+        Err(Stop::Output(e)) => return Err(e),
+        Err(Stop::Parse(e)) => Error::Parse(e),
+        Err(Stop::Read(e)) => Error::Read(e.to_string()),
+    };
+    chunker
+        .push(Item::Failed(Box::new(unreadable(source, stop))))
+        .map(|()| false)
+}

@@ -1,0 +1,118 @@
+//! Counting a run: files, polygons, triangles, triangles saved, errors; and the summary line.
+
+use crate::pipeline::Outcome;
+use std::fmt;
+use std::time::Duration;
+
+/// What a run (or one input of it) did.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Tally {
+    /// Input files (or standard input) processed, whether or not they could be read.
+    pub files: usize,
+    /// Polygons read (valid or not).
+    pub polygons: usize,
+    /// Polygons triangulated.
+    pub solved: usize,
+    /// Triangles of the triangulated polygons.
+    pub triangles: usize,
+    /// Over the triangulated polygons, the sum of (n + 2w - 2) - triangles: what the minimum
+    /// saves against any plain triangulation.
+    pub saved: usize,
+    /// Failures: polygons that could not be triangulated, inputs (or parts) that could not be read,
+    /// outputs that could not be written.
+    pub errors: usize,
+    /// Triangulated polygons whose `--verify` report is not ok.
+    pub verify_failures: usize,
+}
+
+impl Tally {
+    /// Counts one outcome.
+    pub fn add(&mut self, outcome: &Outcome) {
+        if outcome.index.is_some() {
+            self.polygons += 1;
+        }
+        match (&outcome.result, &outcome.polygon) {
+            (Ok(solved), Some(polygon)) => {
+                let count = solved.triangulation.triangles.len();
+                self.solved += 1;
+                self.triangles += count;
+                let plain = (polygon.len() + 2 * polygon.holes()).saturating_sub(2);
+                self.saved += plain.saturating_sub(count);
+                if solved.verification.as_ref().is_some_and(|v| !v.ok) {
+                    self.verify_failures += 1;
+                }
+            }
+            (Ok(_), None) => {}
+            (Err(_), _) => self.errors += 1,
+        }
+    }
+
+    /// Adds another tally to this one.
+    pub fn merge(&mut self, other: &Tally) {
+        self.files += other.files;
+        self.polygons += other.polygons;
+        self.solved += other.solved;
+        self.triangles += other.triangles;
+        self.saved += other.saved;
+        self.errors += other.errors;
+        self.verify_failures += other.verify_failures;
+    }
+
+    /// The summary line of a run that took `elapsed`.
+    pub fn summary(&self, elapsed: Duration) -> Summary {
+        Summary {
+            tally: *self,
+            elapsed,
+        }
+    }
+}
+
+/// The summary line: `3 files, 120 polygons, 1402 triangles (318 saved against n + 2w - 2),
+/// 2 errors, 0.41 s`.
+#[derive(Clone, Copy, Debug)]
+pub struct Summary {
+    tally: Tally,
+    elapsed: Duration,
+}
+
+impl fmt::Display for Summary {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let t = &self.tally;
+        let plural = |n: usize, word: &str| format!("{n} {word}{}", if n == 1 { "" } else { "s" });
+        write!(
+            f,
+            "{}, {}, {} ({} saved against n + 2w - 2), {}",
+            plural(t.files, "file"),
+            plural(t.polygons, "polygon"),
+            plural(t.triangles, "triangle"),
+            t.saved,
+            plural(t.errors, "error"),
+        )?;
+        if t.verify_failures > 0 {
+            write!(f, ", {}", plural(t.verify_failures, "verification failure"))?;
+        }
+        write!(f, ", {:.2} s", self.elapsed.as_secs_f64())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_summary_line_names_every_count() {
+        let tally = Tally {
+            files: 3,
+            polygons: 1,
+            solved: 1,
+            triangles: 5,
+            saved: 5,
+            errors: 2,
+            verify_failures: 0,
+        };
+        assert_eq!(
+            tally.summary(Duration::from_millis(1234)).to_string(),
+            "3 files, 1 polygon, 5 triangles (5 saved against n + 2w - 2), 2 errors, 1.23 s"
+        );
+    }
+}

@@ -1,0 +1,560 @@
+//! Streaming GeoJSON reader: the features of a FeatureCollection, and the values of a
+//! newline-delimited (or concatenated) GeoJSON input, one at a time, with exact numbers.
+//!
+//! Input contract: the same documents as [`super::geojson`], from any [`BufRead`]. Output
+//! guarantee: [`Event`]s in input order, pushed to a callback as soon as each feature (or
+//! top-level value) has been read, so memory holds one feature at a time, not the document.
+//! Numbers are read by `serde_json` with `arbitrary_precision`, exactly as written, never through
+//! `f64` (the `geojson` crate's `FeatureReader` finds the features by looking for the first `[`
+//! in the text and yields `f64` positions, so it is not used).
+//!
+//! What is streamed: each top-level JSON value in turn (so a GeoJSON Lines file is read line by
+//! line), and inside a FeatureCollection object whose `"type"` comes before its `"features"` (as
+//! every writer puts it), each feature in turn. Anything else (a single geometry, a Feature, a
+//! FeatureCollection with `"features"` before `"type"`) is read as one value.
+//!
+//! Error semantics, which differ from [`super::geojson::read`] (all or nothing) on purpose, so
+//! that one bad record does not stop the others: a feature or top-level value that is not a
+//! polygon is reported as an [`Event::Failed`] and reading goes on; a JSON syntax error stops
+//! reading ([`Stop::Parse`]), after the events already pushed. Messages are those of
+//! [`super::geojson::read`]: `feature 3, ring 1: ...` inside a FeatureCollection, and
+//! `line 5, column 1: ...` for a top-level value when the input holds several.
+//!
+//! [`read_line`] reads one line of GeoJSON Lines on its own (so that lines can be read in
+//! parallel, and a syntax error costs only its line), and [`looks_line_delimited`] recognises
+//! such an input by its start.
+//!
+//! Complexity: linear in the input size; memory proportional to the largest feature.
+
+use super::geojson::{collection_feature, json_message, top_level};
+use super::{Location, ParseError, RawPolygon};
+use serde::de::{self, DeserializeSeed, MapAccess, SeqAccess, Visitor};
+use serde::Deserialize;
+use serde_json::{Map, Value};
+use std::cell::Cell;
+use std::fmt;
+use std::io::{self, BufRead, Read};
+use std::rc::Rc;
+
+/// One thing read from the stream.
+#[derive(Debug)]
+pub enum Event {
+    /// The next polygon.
+    Polygon(RawPolygon),
+    /// A feature or top-level value that is not a polygon (its polygons, if any, are skipped).
+    Failed(ParseError),
+}
+
+/// Why reading stopped before the end of the input.
+#[derive(Debug)]
+pub enum Stop {
+    /// The input is not JSON from here on (or holds no polygon at all): what is wrong.
+    Parse(ParseError),
+    /// The input could not be read.
+    Read(io::Error),
+    /// The callback failed (writing the output, say); its error.
+    Output(io::Error),
+}
+
+/// Reads a GeoJSON input, pushing each polygon (or failure) to `emit` as it is read.
+///
+/// # Errors
+/// [`Stop::Parse`] for a JSON syntax error (with line and column), an empty input, or an input
+/// that holds no polygon and no failure; [`Stop::Read`] for an I/O error of `reader`;
+/// [`Stop::Output`] when `emit` fails.
+///
+/// # Examples
+/// ```
+/// use minitri::io::read::geojson_stream::{stream, Event};
+/// let text = r#"{"type": "FeatureCollection", "features": [
+///   {"type": "Feature", "geometry": {"type": "Point", "coordinates": [0, 0]}},
+///   {"type": "Feature", "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 1]]]}}]}"#;
+/// let mut events = Vec::new();
+/// stream(text.as_bytes(), &mut |e| Ok(events.push(e))).map_err(|e| format!("{e:?}"))?;
+/// assert!(matches!(&events[0], Event::Failed(e) if e.to_string().starts_with("feature 0: ")));
+/// assert!(matches!(&events[1], Event::Polygon(p) if p.rings[0].len() == 3));
+/// # Ok::<(), String>(())
+/// ```
+pub fn stream<R: BufRead>(
+    mut reader: R,
+    emit: &mut dyn FnMut(Event) -> io::Result<()>,
+) -> Result<(), Stop> {
+    if reader
+        .fill_buf()
+        .map_err(Stop::Read)?
+        .starts_with("\u{feff}".as_bytes())
+    {
+        reader.consume("\u{feff}".len());
+    }
+    let position = Rc::new(Cell::new((1, 0)));
+    let counting = Counting {
+        inner: reader,
+        position: Rc::clone(&position),
+    };
+    let mut de = serde_json::Deserializer::from_reader(counting);
+    let mut sink = Sink {
+        emit,
+        output_error: None,
+        polygons: 0,
+        failures: 0,
+    };
+    // The first value's failure waits until we know whether the input holds several values,
+    // which decides whether its message carries a location (as in `geojson::read`).
+    let mut held: Option<(Location, String)> = None;
+    let mut values = 0usize;
+    loop {
+        match de.end() {
+            Ok(()) => break,
+            Err(e) if e.is_io() => return Err(Stop::Read(e.into())),
+            Err(_) => {} // trailing characters: another value starts here
+        }
+        let (line, column) = position.get();
+        let start = Location {
+            line,
+            column: column.max(1),
+        };
+        if let Some((location, message)) = held.take() {
+            sink.fail(ParseError::at(location, message))
+                .map_err(Stop::Output)?;
+        }
+        match (TopLevel { sink: &mut sink }).deserialize(&mut de) {
+            Ok(None) => {}
+            Ok(Some(message)) if values == 0 => held = Some((start, message)),
+            Ok(Some(message)) => sink
+                .fail(ParseError::at(start, message))
+                .map_err(Stop::Output)?,
+            Err(e) => {
+                return Err(match sink.output_error.take() {
+                    Some(output) => Stop::Output(output),
+                    None if e.is_io() => Stop::Read(e.into()),
+                    None => Stop::Parse(syntax_error(&e)),
+                })
+            }
+        }
+        values += 1;
+    }
+    if let Some((_, message)) = held {
+        sink.fail(ParseError::new(message)).map_err(Stop::Output)?;
+    }
+    if values == 0 {
+        return Err(Stop::Parse(ParseError::new(
+            "empty input: no polygon found",
+        )));
+    }
+    if sink.polygons == 0 && sink.failures == 0 {
+        return Err(Stop::Parse(ParseError::new(
+            "no polygon found: the input holds no non-empty Polygon or MultiPolygon",
+        )));
+    }
+    Ok(())
+}
+
+/// Reads one line of a GeoJSON Lines input (line `number` of it, from 1): its polygons, none
+/// for a blank line or a Feature without geometry.
+///
+/// # Errors
+/// [`ParseError`] located at the line (and column) when the line is not JSON or not a polygon.
+///
+/// # Examples
+/// ```
+/// use minitri::io::read::geojson_stream::read_line;
+/// let line = r#"{"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 1]]]}"#;
+/// assert_eq!(read_line(line, 7)?.len(), 1);
+/// let error = read_line(r#"  {"type": "Point", "coordinates": [0, 0]}"#, 7).unwrap_err();
+/// assert!(error.to_string().starts_with("line 7, column 3: expected a Polygon"));
+/// # Ok::<(), minitri::io::read::ParseError>(())
+/// ```
+pub fn read_line(line: &str, number: usize) -> Result<Vec<RawPolygon>, ParseError> {
+    let line = line.strip_prefix('\u{feff}').unwrap_or(line);
+    let body = line.trim_start();
+    if body.trim_end().is_empty() {
+        return Ok(Vec::new());
+    }
+    let at = |column: usize| Location {
+        line: number,
+        column: column.max(1),
+    };
+    let value: Value = serde_json::from_str(body).map_err(|e| {
+        let before = line.len() - body.len();
+        let column = line[..before].chars().count() + e.column();
+        ParseError::at(at(column), json_message(&e))
+    })?;
+    let mut polygons = Vec::new();
+    top_level(&value, &mut polygons).map_err(|failure| {
+        let column = line.chars().count() - body.chars().count() + 1;
+        ParseError::at(at(column), failure.to_string())
+    })?;
+    Ok(polygons)
+}
+
+/// Does `start` (the first bytes of an input) look like GeoJSON Lines: a first line that is a
+/// whole JSON value by itself, then another line?
+pub fn looks_line_delimited(start: &[u8]) -> bool {
+    let start = start.strip_prefix("\u{feff}".as_bytes()).unwrap_or(start);
+    let blank = |b: &u8| b.is_ascii_whitespace();
+    let Some(first) = start.iter().position(|b| !blank(b)) else {
+        return false;
+    };
+    let Some(end) = start[first..].iter().position(|&b| b == b'\n') else {
+        return false;
+    };
+    let (line, rest) = start[first..].split_at(end);
+    !rest.iter().all(blank) && serde_json::from_slice::<de::IgnoredAny>(line).is_ok()
+}
+
+/// A `serde_json` syntax error at its line and column (columns in characters of the line read).
+fn syntax_error(error: &serde_json::Error) -> ParseError {
+    let message = json_message(error);
+    if error.line() == 0 {
+        return ParseError::new(message);
+    }
+    ParseError::at(
+        Location {
+            line: error.line(),
+            column: error.column().max(1),
+        },
+        message,
+    )
+}
+
+/// A reader that remembers the line and column (in characters) of the last byte it delivered.
+struct Counting<R> {
+    inner: R,
+    position: Rc<Cell<(usize, usize)>>,
+}
+
+impl<R: Read> Read for Counting<R> {
+    fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
+        let n = self.inner.read(buf)?;
+        let (mut line, mut column) = self.position.get();
+        for &byte in buf.get(..n).unwrap_or_default() {
+            if byte == b'\n' {
+                line += 1;
+                column = 0;
+            } else if byte & 0xc0 != 0x80 {
+                column += 1; // not a UTF-8 continuation byte: a new character
+            }
+        }
+        self.position.set((line, column));
+        Ok(n)
+    }
+}
+
+/// Where events go, with what the deserializer cannot carry: the callback's own error.
+struct Sink<'e> {
+    emit: &'e mut dyn FnMut(Event) -> io::Result<()>,
+    output_error: Option<io::Error>,
+    polygons: usize,
+    failures: usize,
+}
+
+impl Sink<'_> {
+    fn polygon(&mut self, polygon: RawPolygon) -> io::Result<()> {
+        self.polygons += 1;
+        (self.emit)(Event::Polygon(polygon))
+    }
+
+    fn fail(&mut self, error: ParseError) -> io::Result<()> {
+        self.failures += 1;
+        (self.emit)(Event::Failed(error))
+    }
+
+    /// Pushes a callback error through the deserializer, keeping the error itself.
+    fn keep<E: de::Error>(&mut self, result: io::Result<()>) -> Result<(), E> {
+        result.map_err(|e| {
+            self.output_error = Some(e);
+            E::custom("the output failed")
+        })
+    }
+
+    /// Element `index` of a FeatureCollection's `features`: its polygons, or why not.
+    fn feature<E: de::Error>(&mut self, index: usize, value: &Value) -> Result<(), E> {
+        let mut polygons = Vec::new();
+        match collection_feature(value, &mut polygons) {
+            Ok(()) => {
+                for polygon in polygons {
+                    let result = self.polygon(polygon);
+                    self.keep(result)?;
+                }
+                Ok(())
+            }
+            Err(failure) => {
+                let error = ParseError::new(failure.within("feature", index).to_string());
+                let result = self.fail(error);
+                self.keep(result)
+            }
+        }
+    }
+
+    /// A whole top-level value: its polygons are pushed; `Some(message)` when it has none.
+    fn value<E: de::Error>(&mut self, value: &Value) -> Result<Option<String>, E> {
+        let mut polygons = Vec::new();
+        match top_level(value, &mut polygons) {
+            Ok(()) => {
+                for polygon in polygons {
+                    let result = self.polygon(polygon);
+                    self.keep(result)?;
+                }
+                Ok(None)
+            }
+            Err(failure) => Ok(Some(failure.to_string())),
+        }
+    }
+}
+
+/// One top-level value; yields the message of its failure, if it is not a polygon at all.
+struct TopLevel<'s, 'e> {
+    sink: &'s mut Sink<'e>,
+}
+
+impl<'de> DeserializeSeed<'de> for TopLevel<'_, '_> {
+    type Value = Option<String>;
+
+    fn deserialize<D: de::Deserializer<'de>>(self, d: D) -> Result<Self::Value, D::Error> {
+        d.deserialize_any(self)
+    }
+}
+
+/// The key under which `serde_json` (`arbitrary_precision`) hands a number to `visit_map`.
+const NUMBER_TOKEN: &str = "$serde_json::private::Number";
+
+impl<'de> Visitor<'de> for TopLevel<'_, '_> {
+    type Value = Option<String>;
+
+    fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str("a GeoJSON object or an array of rings")
+    }
+
+    fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Self::Value, A::Error> {
+        let mut object = Map::new();
+        let mut streamed = false;
+        while let Some(key) = map.next_key::<String>()? {
+            if key == NUMBER_TOKEN {
+                // Not an object: a bare number at the top level.
+                let digits: String = map.next_value()?;
+                let number = digits.parse().map_err(de::Error::custom)?;
+                return self.sink.value(&Value::Number(number));
+            }
+            let collection =
+                matches!(object.get("type"), Some(Value::String(t)) if t == "FeatureCollection");
+            if key == "features" && collection && !streamed {
+                map.next_value_seed(Features {
+                    sink: &mut *self.sink,
+                })?;
+                streamed = true;
+            } else {
+                let value: Value = map.next_value()?;
+                object.insert(key, value);
+            }
+        }
+        if streamed {
+            return Ok(None);
+        }
+        let collection =
+            matches!(object.get("type"), Some(Value::String(t)) if t == "FeatureCollection");
+        match object.get("features") {
+            // `"features"` came before `"type"`: read whole, but judged feature by feature too.
+            Some(Value::Array(features)) if collection => {
+                for (index, feature) in features.iter().enumerate() {
+                    self.sink.feature(index, feature)?;
+                }
+                Ok(None)
+            }
+            _ => self.sink.value(&Value::Object(object)),
+        }
+    }
+
+    fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<Self::Value, A::Error> {
+        let value = Value::deserialize(de::value::SeqAccessDeserializer::new(seq))?;
+        self.sink.value(&value)
+    }
+
+    fn visit_bool<E: de::Error>(self, v: bool) -> Result<Self::Value, E> {
+        self.sink.value(&Value::Bool(v))
+    }
+
+    fn visit_str<E: de::Error>(self, v: &str) -> Result<Self::Value, E> {
+        self.sink.value(&Value::String(v.to_string()))
+    }
+
+    fn visit_unit<E: de::Error>(self) -> Result<Self::Value, E> {
+        self.sink.value(&Value::Null)
+    }
+}
+
+/// A FeatureCollection's `features`, one at a time.
+struct Features<'s, 'e> {
+    sink: &'s mut Sink<'e>,
+}
+
+impl<'de> DeserializeSeed<'de> for Features<'_, '_> {
+    type Value = ();
+
+    fn deserialize<D: de::Deserializer<'de>>(self, d: D) -> Result<(), D::Error> {
+        d.deserialize_seq(self)
+    }
+}
+
+impl<'de> Visitor<'de> for Features<'_, '_> {
+    type Value = ();
+
+    fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str("\"features\" of a FeatureCollection to be an array")
+    }
+
+    fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<(), A::Error> {
+        let mut index = 0;
+        while let Some(feature) = seq.next_element::<Value>()? {
+            self.sink.feature(index, &feature)?;
+            index += 1;
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::io::read::geojson;
+
+    /// Polygons and failure messages, in order, and the stop if any.
+    fn events(text: &str) -> (Vec<Result<RawPolygon, String>>, Option<String>) {
+        let mut out = Vec::new();
+        let stop = stream(text.as_bytes(), &mut |e| {
+            out.push(match e {
+                Event::Polygon(p) => Ok(p),
+                Event::Failed(e) => Err(e.to_string()),
+            });
+            Ok(())
+        })
+        .err()
+        .map(|s| match s {
+            Stop::Parse(e) => e.to_string(),
+            other => format!("{other:?}"),
+        });
+        (out, stop)
+    }
+
+    const A: &str =
+        r#"{"type": "Polygon", "coordinates": [[[0, 0], [0.1, 0.3], [0.2, 0.6], [0, 1]]]}"#;
+    const B: &str = r#"{"type": "MultiPolygon", "coordinates": [[[[0, 0], [1, 0], [0, 1]]], [[[5, 5], [6, 5], [5, 6]]]]}"#;
+
+    #[test]
+    fn gives_the_polygons_of_the_whole_reader_exactly() {
+        let collection = format!(
+            r#"{{"type": "FeatureCollection", "bbox": [0, 0, 6, 6], "features": [{{"type": "Feature", "geometry": {A}, "properties": {{"id": 7}}}}, {{"type": "Feature", "geometry": null}}, {{"type": "Feature", "geometry": {B}}}], "id": 12.5}}"#
+        );
+        let lines = format!("{A}\n\n{B}\n");
+        let reversed = format!(
+            r#"{{"features": [{{"type": "Feature", "geometry": {A}}}, {{"type": "Feature", "geometry": {B}}}], "type": "FeatureCollection"}}"#
+        );
+        for text in [
+            collection.as_str(),
+            &lines,
+            &reversed,
+            A,
+            &format!("\u{feff}{B}"),
+        ] {
+            let (got, stop) = events(text);
+            assert_eq!(stop, None, "{text}");
+            let got: Vec<RawPolygon> = got.into_iter().map(Result::unwrap).collect();
+            assert_eq!(got, geojson::read(text).unwrap(), "{text}");
+        }
+    }
+
+    #[test]
+    fn a_bad_feature_or_line_is_reported_and_reading_goes_on() {
+        let text = format!(
+            r#"{{"type": "FeatureCollection", "features": [{{"type": "Feature", "geometry": {{"type": "Point", "coordinates": [1, 2]}}}}, {{"type": "Feature", "geometry": {A}}}]}}"#
+        );
+        let (got, stop) = events(&text);
+        assert_eq!(stop, None);
+        assert_eq!(
+            got[0].as_ref().unwrap_err(),
+            "feature 0: expected a Polygon or MultiPolygon geometry, found \"Point\""
+        );
+        assert!(got[1].is_ok());
+        // Several top-level values: the failure carries the line where its value starts, as in
+        // the whole reader; a single bad value does not.
+        let lines = format!("{A}\n  {{\"type\": \"LineString\", \"coordinates\": []}}\n{B}\n");
+        let (got, stop) = events(&lines);
+        assert_eq!(stop, None);
+        assert_eq!(got.len(), 4);
+        assert_eq!(
+            got[1].as_ref().unwrap_err(),
+            "line 2, column 3: expected a Polygon or MultiPolygon geometry, found \"LineString\""
+        );
+        let one = r#"{"type": "LineString", "coordinates": []}"#;
+        assert_eq!(
+            events(one).0[0].as_ref().unwrap_err(),
+            &geojson::read(one).unwrap_err().to_string()
+        );
+        for scalar in ["12.50", "\"x\"", "true", "null"] {
+            assert_eq!(
+                events(scalar).0[0].as_ref().unwrap_err(),
+                &geojson::read(scalar).unwrap_err().to_string(),
+                "{scalar}"
+            );
+        }
+    }
+
+    #[test]
+    fn a_syntax_error_stops_after_what_was_read() {
+        let text = format!("{A}\n{B}\n{{\"type\": \"Polygon\",, }}\n{A}\n");
+        let (got, stop) = events(&text);
+        assert_eq!(got.len(), 3, "A and the two parts of B");
+        assert_eq!(
+            stop.as_deref(),
+            Some(geojson::read(&text).unwrap_err().to_string().as_str())
+        );
+        let (got, stop) = events(&A[..A.len() - 3]);
+        assert!(got.is_empty());
+        assert!(
+            stop.is_some_and(|s| s.contains("the input ends in the middle of")),
+            "truncated"
+        );
+        assert_eq!(
+            events(" \n ").1.as_deref(),
+            Some("empty input: no polygon found")
+        );
+        assert!(events(r#"{"type": "FeatureCollection", "features": []}"#)
+            .1
+            .is_some_and(|s| s.starts_with("no polygon found")));
+    }
+
+    #[test]
+    fn lines_are_read_alone_and_recognised_by_their_start() {
+        assert_eq!(read_line(A, 1).unwrap(), geojson::read(A).unwrap());
+        assert_eq!(read_line(" \r\n", 4).unwrap(), []);
+        let null = r#"{"type": "Feature", "geometry": null}"#;
+        assert_eq!(read_line(null, 4).unwrap(), []);
+        assert_eq!(
+            read_line(r#" {"type": "Polygon",, }"#, 9)
+                .unwrap_err()
+                .to_string(),
+            "line 9, column 21: invalid JSON: key must be a string"
+        );
+        assert!(looks_line_delimited(format!("{A}\n{B}\n").as_bytes()));
+        assert!(looks_line_delimited(format!("\n{A}\r\n{A}").as_bytes()));
+        assert!(
+            !looks_line_delimited(format!("{A}\n\n").as_bytes()),
+            "one value"
+        );
+        assert!(
+            !looks_line_delimited(b"{\n  \"type\": \"Polygon\"\n}\n"),
+            "pretty"
+        );
+        assert!(!looks_line_delimited(A.as_bytes()), "no end of line seen");
+    }
+
+    #[test]
+    fn an_output_error_stops_reading_and_is_returned() {
+        let mut calls = 0;
+        let stop = stream(format!("{A}\n{A}\n").as_bytes(), &mut |_| {
+            calls += 1;
+            Err(io::Error::other("disk full"))
+        });
+        assert!(matches!(stop, Err(Stop::Output(e)) if e.to_string() == "disk full"));
+        assert_eq!(calls, 1);
+    }
+}
