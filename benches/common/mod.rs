@@ -123,18 +123,7 @@ pub fn rectilinear(n: usize, seed: u64) -> Vec<[i64; 2]> {
     let columns = (n / 4).max(2) as i64;
     let top: Vec<i64> = (0..columns).map(|_| rng.range(6, 12)).collect();
     let bottom: Vec<i64> = (0..columns).map(|_| rng.range(0, 4)).collect();
-    let mut ring: Vec<[i64; 2]> = Vec::with_capacity(4 * columns as usize);
-    for (x, &h) in (0..).zip(&bottom) {
-        ring.extend([[x, h], [x + 1, h]]);
-    }
-    for x in (0..columns).rev() {
-        let h = top[x as usize];
-        ring.extend([[x + 1, h], [x, h]]);
-    }
-    ring.dedup();
-    while ring.first() == ring.last() {
-        ring.pop();
-    }
+    let mut ring = bar(&bottom, &top);
     let flat = |a: [i64; 2], b: [i64; 2], c: [i64; 2]| {
         (b[0] - a[0]) * (c[1] - a[1]) == (b[1] - a[1]) * (c[0] - a[0])
     };
@@ -284,12 +273,19 @@ pub fn small_rectilinear(seed: u64) -> Vec<[i64; 2]> {
     let columns = rng.range(2, 10);
     let bottom: Vec<i64> = (0..columns).map(|_| rng.range(0, 2)).collect();
     let top: Vec<i64> = (0..columns).map(|_| rng.range(4, 6)).collect();
-    let mut ring: Vec<[i64; 2]> = Vec::with_capacity(4 * columns as usize);
-    for (x, &h) in (0..).zip(&bottom) {
+    bar(&bottom, &top)
+}
+
+/// The ring of unit-wide columns with these bottom and top heights, counter-clockwise (left to
+/// right along the bottom, back along the top), with consecutive repeated points removed; flat
+/// vertices stay.
+fn bar(bottom: &[i64], top: &[i64]) -> Vec<[i64; 2]> {
+    let mut ring: Vec<[i64; 2]> = Vec::with_capacity(4 * bottom.len());
+    for (x, &h) in (0..).zip(bottom) {
         ring.extend([[x, h], [x + 1, h]]);
     }
-    for x in (0..columns).rev() {
-        let h = top[x as usize];
+    for (x, &h) in top.iter().enumerate().rev() {
+        let x = x as i64;
         ring.extend([[x + 1, h], [x, h]]);
     }
     ring.dedup();
