@@ -37,6 +37,7 @@ use super::expansion::{double_cone, Mesh, Workspace};
 use crate::algo::chords::visible_from;
 use crate::geom::kernel::{cmp_angle, cross, Dir};
 use crate::geom::polygon::Polygon;
+use rayon::prelude::*;
 use std::cmp::Ordering;
 
 /// The kind of a minimally degenerate triangle (Chen & Chang, §3).
@@ -139,31 +140,55 @@ pub fn minimally_degenerate(polygon: &Polygon) -> Vec<Degenerate> {
 pub fn minimally_degenerate_and_mesh(polygon: &Polygon) -> (Vec<Degenerate>, Vec<[usize; 3]>) {
     let mut mesh = Mesh::new(polygon, crate::algo::plain_polygon(polygon));
     mesh.flip_towards_delaunay(polygon, FLIPS_PER_VERTEX * polygon.len());
-    let mut out = Vec::new();
-    let mut work = Workspace::default();
-    for b in 0..polygon.len() {
-        if !reflex_or_flat(polygon, b, &mut out) {
-            continue;
-        }
-        let (first, second) = double_cone(polygon, &mesh, b, &mut work);
-        // Opposite directions are at the same place of the two cones (both sorted by angle).
-        let c = polygon.point(b);
-        let dir = |v: usize| Dir::between(c, polygon.point(v));
-        let (mut i, mut j) = (0, 0);
-        while i < first.len() && j < second.len() {
-            let (d, e) = (dir(first[i]), dir(second[j]).reversed());
-            match d.cross(e).cmp(&0) {
-                Ordering::Greater => i += 1,
-                Ordering::Less => j += 1,
-                Ordering::Equal => {
-                    out.push(Degenerate::new(polygon, first[i], b, second[j]));
-                    i += 1;
-                    j += 1;
-                }
+    // The vertices are independent searches over a shared mesh: in parallel (on the current
+    // rayon pool) by blocks of vertices, concatenated in vertex order, so the result does not
+    // depend on the number of threads.
+    let blocks: Vec<Vec<Degenerate>> = (0..polygon.len())
+        .step_by(PARALLEL_BLOCK)
+        .collect::<Vec<_>>()
+        .into_par_iter()
+        .map_init(Workspace::default, |work, first| {
+            let mut out = Vec::new();
+            for b in first..(first + PARALLEL_BLOCK).min(polygon.len()) {
+                search_from(polygon, &mesh, b, work, &mut out);
+            }
+            out
+        })
+        .collect();
+    (blocks.concat(), mesh.into_triangles())
+}
+
+/// How many vertices one parallel task searches from (small polygons stay on one thread).
+const PARALLEL_BLOCK: usize = 4096;
+
+/// Adds the minimally degenerate triangles with middle vertex `b` to `out`.
+fn search_from(
+    polygon: &Polygon,
+    mesh: &Mesh,
+    b: usize,
+    work: &mut Workspace,
+    out: &mut Vec<Degenerate>,
+) {
+    if !reflex_or_flat(polygon, b, out) {
+        return;
+    }
+    let (first, second) = double_cone(polygon, mesh, b, work);
+    // Opposite directions are at the same place of the two cones (both sorted by angle).
+    let c = polygon.point(b);
+    let dir = |v: usize| Dir::between(c, polygon.point(v));
+    let (mut i, mut j) = (0, 0);
+    while i < first.len() && j < second.len() {
+        let (d, e) = (dir(first[i]), dir(second[j]).reversed());
+        match d.cross(e).cmp(&0) {
+            Ordering::Greater => i += 1,
+            Ordering::Less => j += 1,
+            Ordering::Equal => {
+                out.push(Degenerate::new(polygon, first[i], b, second[j]));
+                i += 1;
+                j += 1;
             }
         }
     }
-    (out, mesh.into_triangles())
 }
 
 /// The same triangles by an angular visibility sweep around every reflex vertex: O(r n log n).

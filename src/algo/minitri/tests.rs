@@ -1,7 +1,7 @@
 //! Unit tests of the MINITRI steps on hand-made polygons.
 
 use super::circle::{circle, Circle};
-use super::degenerate::{minimally_degenerate, Degenerate, Kind};
+use super::degenerate::{minimally_degenerate, minimally_degenerate_and_mesh, Degenerate, Kind};
 use super::dependency::dependent;
 use super::mis::{chains, crossing_components, is_3b_pair, maximum_independent_set_with};
 use super::triangulate;
@@ -451,4 +451,34 @@ fn cutting_a_3b_pair_merges_both_fans() {
     assert_eq!(t.triangles.len(), 2);
     assert!(crate::verify::check(&p, &t).valid);
     assert_eq!(minimum_agrees(&p), 2);
+}
+
+#[test]
+fn parallel_search_gives_the_sequential_result_in_the_same_order() {
+    // More vertices than one parallel block, with thousands of degenerate triangles of every
+    // type, so that several blocks run and are concatenated.
+    let p = bars(1500, 7);
+    assert!(p.len() > 4096, "{} vertices", p.len());
+    let one_thread = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .unwrap();
+    let two_threads = rayon::ThreadPoolBuilder::new()
+        .num_threads(2)
+        .build()
+        .unwrap();
+    let (sequential, mesh_1) = one_thread.install(|| minimally_degenerate_and_mesh(&p));
+    let (parallel, mesh_2) = two_threads.install(|| minimally_degenerate_and_mesh(&p));
+    assert!(sequential.len() > 2000, "{} triangles", sequential.len());
+    assert_eq!(sequential, parallel);
+    assert_eq!(mesh_1, mesh_2);
+    let key = |m: &Degenerate| (m.a, m.b, m.c);
+    let mut by_sweep: Vec<_> = super::degenerate::minimally_degenerate_by_sweep(&p)
+        .iter()
+        .map(key)
+        .collect();
+    let mut found: Vec<_> = parallel.iter().map(key).collect();
+    by_sweep.sort_unstable();
+    found.sort_unstable();
+    assert_eq!(found, by_sweep);
 }
