@@ -286,6 +286,11 @@ fn sweep(polygon: &Polygon, order: &[usize]) -> Result<Vec<Option<usize>>, Inval
             }
         }
         let edges = [polygon.prev(i), i];
+        // Pairs of edges known to be adjacent in the status (above, below; `None`: nothing
+        // there), from the last change at this vertex: an edge inserted between such a pair has
+        // exactly those neighbours, so they need no search. At a regular vertex (one edge ends,
+        // the next starts) and at a vertex where both edges start, this saves two searches.
+        let mut adjacent: [Option<(Option<Cut>, Option<Cut>)>; 2] = [None, None];
         for &e in &edges {
             let cut = Cut::of(polygon, e);
             if cut.b == p {
@@ -295,18 +300,30 @@ fn sweep(polygon: &Polygon, order: &[usize]) -> Result<Vec<Option<usize>>, Inval
                 if let (Some(a), Some(b)) = (above, below) {
                     test(polygon, a.edge, b.edge)?;
                 }
+                adjacent = [Some((above, below)), None];
             }
         }
         for &e in &edges {
             let cut = Cut::of(polygon, e);
             if cut.a == p {
                 status.insert(cut);
-                if let Some(above) = status.range((Excluded(cut), Unbounded)).next() {
+                let between = |&(above, below): &(Option<Cut>, Option<Cut>)| {
+                    above.is_none_or(|a| cut < a) && below.is_none_or(|b| b < cut)
+                };
+                let (above, below) = match adjacent.iter().flatten().find(|pair| between(pair)) {
+                    Some(&pair) => pair,
+                    None => (
+                        status.range((Excluded(cut), Unbounded)).next().copied(),
+                        status.range(..cut).next_back().copied(),
+                    ),
+                };
+                if let Some(above) = above {
                     test(polygon, e, above.edge)?;
                 }
-                if let Some(below) = status.range(..cut).next_back() {
+                if let Some(below) = below {
                     test(polygon, e, below.edge)?;
                 }
+                adjacent = [Some((above, Some(cut))), Some((Some(cut), below))];
             }
         }
     }
