@@ -99,6 +99,9 @@ fn degenerate_middles(p: &Value) -> HashSet<u64> {
         .collect()
 }
 
+/// A triangle feature as read back: its ring and its properties.
+type ReadFeature = (Vec<[f64; 2]>, serde_json::Map<String, Value>);
+
 /// The triangles' rings and properties as the `geojson` crate reads the document, or `None`
 /// when it holds a non-integer number.
 ///
@@ -107,9 +110,7 @@ fn degenerate_middles(p: &Value) -> HashSet<u64> {
 /// no `visit_map`, the form such numbers then take: in this build it cannot read `0.5`, although
 /// the same text reads fine without that feature. So decimal documents are checked through
 /// serde_json alone (`as_f64`, and the exact text), integer ones through both.
-fn read_with_geojson_crate(
-    text: &str,
-) -> Option<Vec<(Vec<[f64; 2]>, serde_json::Map<String, Value>)>> {
+fn read_with_geojson_crate(text: &str) -> Option<Vec<ReadFeature>> {
     let decimals = json(text)["features"]
         .as_array()
         .expect("features")

@@ -214,7 +214,8 @@ mod tests {
     fn no_degenerate_triangle_no_vertex_on_a_side() {
         let p = polygon(&[&[(0, 0), (1, 0), (2, 0), (2, 2), (0, 2)]]);
         let fan = triangulation(&[[1, 2, 3], [1, 3, 4], [1, 4, 0]], &[]);
-        assert_eq!(vertices_on_sides(&p, &fan), [vec![], vec![], vec![]]);
+        let none: Vec<Vec<usize>> = vec![vec![]; 3];
+        assert_eq!(vertices_on_sides(&p, &fan), none);
         let minimum = triangulation(&[[0, 2, 3], [0, 3, 4]], &[[0, 1, 2]]);
         assert_eq!(vertices_on_sides(&p, &minimum), [vec![1], vec![]]);
     }
