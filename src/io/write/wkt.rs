@@ -1,6 +1,7 @@
 //! The WKT writer: one `MULTIPOLYGON` of triangles per line, one line per triangulated polygon.
 //!
-//! Input contract: outcomes in order; a solved outcome carries its [`Polygon`] and its
+//! Input contract: outcomes in order; a solved outcome carries its
+//! [`Polygon`](crate::geom::polygon::Polygon) and its
 //! triangles, counter-clockwise.
 //!
 //! Output guarantee: for each solved polygon, in input order, one line
@@ -10,10 +11,11 @@
 //! error goes to standard error); with nothing triangulated the output is empty.
 //!
 //! Why lines and not one `GEOMETRYCOLLECTION`: each line is a complete WKT geometry standing for
-//! one input polygon, the form that line-oriented GIS readers (a WKT column per record, such as
-//! QGIS's delimited-text layer, `ogr2ogr` over CSV) and shell tools (`wc -l`, `grep`, `split`)
-//! take; it streams with nothing to close at the end, and an empty result stays an empty file.
-//! A collection would put a whole batch on one line and lose the polygon boundaries.
+//! one input polygon, the one-geometry-per-record form of WKT-lines files and of WKT columns in
+//! delimited text (which GIS tools import), and what shell tools (`wc -l`, `grep`, `split`)
+//! take; it streams with nothing to close at the end, and an empty result stays an empty file
+//! (a batch input with no polygon triangulated gets no output file at all, as for every format).
+//! A collection would put a whole run on one line and lose the polygon boundaries.
 //!
 //! Streamed: each line is written when its polygon is pushed. Complexity: linear in the output.
 
