@@ -8,7 +8,7 @@ use std::path::PathBuf;
 /// Triangulate polygons with the minimum number of triangles, exactly.
 ///
 /// Reads WKT, GeoJSON or plain vertex lists (files, directories, or standard input) and writes
-/// JSON or SVG. Coordinates are exact as written in decimal.
+/// JSON, GeoJSON, WKT or SVG. Coordinates are exact as written in decimal.
 #[derive(Parser, Debug)]
 #[command(name = "minitri", version, about, after_help = EXAMPLES)]
 pub struct Flags {
@@ -50,6 +50,7 @@ const EXAMPLES: &str = "Examples:
   minitri fixtures/valid/u_shape.wkt               minimum triangulation as JSON
   cat shape.wkt | minitri                          read standard input
   minitri --to svg -o u.svg u_shape.wkt            draw it
+  minitri --to geojson u_shape.wkt                 the triangles for a GIS (also --to wkt)
   minitri --verify shapes/                         a directory, every output checked by the DP too
   minitri shapes/ -o out/ --jobs 2                 one output per input file, mirrored, 2 threads
   minitri -a ear shape.geojson                     a plain triangulation (n + 2w - 2 triangles)
@@ -86,6 +87,10 @@ pub enum FromFlag {
 pub enum ToFlag {
     /// The JSON document of the spec
     Json,
+    /// A GeoJSON FeatureCollection, one Feature per triangle
+    Geojson,
+    /// WKT, one MULTIPOLYGON of triangles per line and polygon
+    Wkt,
     /// A picture
     Svg,
 }
@@ -133,6 +138,8 @@ impl Flags {
             from,
             to: match self.to {
                 ToFlag::Json => OutputFormat::Json,
+                ToFlag::Geojson => OutputFormat::GeoJson,
+                ToFlag::Wkt => OutputFormat::Wkt,
                 ToFlag::Svg => OutputFormat::Svg,
             },
             output: self.output,

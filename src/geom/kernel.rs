@@ -301,6 +301,51 @@ impl WideSum {
     }
 }
 
+/// The supporting line of a segment, as an exact key: the primitive direction `(dx, dy)`, with
+/// `dx > 0` or `dx == 0 < dy`, and the offset `c = dy x - dx y` of any point on it.
+///
+/// Along that direction the points of the line increase in the derived order of [`Point`]
+/// (x first, then y), which sweeps along a line use as the position on it (the checker of
+/// `verify.rs`, the T-junction lookup of the GeoJSON writer).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub struct Line {
+    dx: i64,
+    dy: i64,
+    c: i128,
+}
+
+/// The line through distinct grid points `p` and `q`, and whether `p -> q` runs in its direction.
+/// Exact: differences are at most `2^62` and products below `2^124` (kernel contract).
+pub fn line_through(p: Point, q: Point) -> (Line, bool) {
+    let (dx, dy) = (q.x - p.x, q.y - p.y);
+    // At least 1 for distinct points, at most 2^62: fits i64.
+    let g = gcd(dx.unsigned_abs(), dy.unsigned_abs()).max(1) as i64;
+    let (dx, dy) = (dx / g, dy / g);
+    let forward = dx > 0 || (dx == 0 && dy > 0);
+    let (dx, dy) = if forward { (dx, dy) } else { (-dx, -dy) };
+    let c = i128::from(dy) * i128::from(p.x) - i128::from(dx) * i128::from(p.y);
+    (Line { dx, dy, c }, forward)
+}
+
+/// Binary greatest common divisor (`gcd(0, 0) = 0`).
+fn gcd(mut a: u64, mut b: u64) -> u64 {
+    if a == 0 || b == 0 {
+        return a | b;
+    }
+    let shift = (a | b).trailing_zeros();
+    a >>= a.trailing_zeros();
+    loop {
+        b >>= b.trailing_zeros();
+        if a > b {
+            std::mem::swap(&mut a, &mut b);
+        }
+        b -= a;
+        if b == 0 {
+            return a << shift;
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -132,11 +132,12 @@ impl<W: Write> JsonWriter<W> {
     }
 }
 
-/// Triangles as input vertex numbers.
-fn ids(polygon: &Polygon, triangles: &[[usize; 3]]) -> Vec<[usize; 3]> {
+/// Triangles as input vertex numbers (shared with the GeoJSON writer).
+pub(crate) fn ids(polygon: &Polygon, triangles: &[[usize; 3]]) -> Vec<[usize; 3]> {
     triangles.iter().map(|t| t.map(|i| polygon.id(i))).collect()
 }
 
-fn json<T: Serialize + ?Sized>(value: &T) -> String {
+/// `value` as compact JSON text (shared with the GeoJSON writer).
+pub(crate) fn json<T: Serialize + ?Sized>(value: &T) -> String {
     serde_json::to_string(value).unwrap_or_else(|e| format!("\"unserialisable: {e}\""))
 }

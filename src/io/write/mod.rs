@@ -1,10 +1,12 @@
-//! Writers: JSON and SVG. They consume results and never call algorithms.
+//! Writers: JSON, GeoJSON, WKT and SVG. They consume results and never call algorithms.
 //!
-//! [`OutputFormat::sink`] gives a [`Sink`] that takes outcomes one at a time, in order: the JSON
-//! sink writes each polygon at once (streamed); the SVG sink keeps them and draws the picture at
+//! [`OutputFormat::sink`] gives a [`Sink`] that takes outcomes one at a time, in order: the JSON,
+//! GeoJSON and WKT sinks write each polygon at once (streamed); the SVG sink keeps them and draws the picture at
 //! the end (a layout needs every panel, and a picture of a huge batch is not useful anyway).
+pub mod geojson;
 pub mod json;
 pub mod svg;
+pub mod wkt;
 
 use crate::pipeline::Outcome;
 use std::io::{self, Write};
@@ -14,6 +16,10 @@ use std::io::{self, Write};
 pub enum OutputFormat {
     /// The JSON document of `spec/CLI.md`.
     Json,
+    /// A GeoJSON FeatureCollection, one Feature per triangle.
+    GeoJson,
+    /// WKT, one MULTIPOLYGON of triangles per line and polygon.
+    Wkt,
     /// An SVG picture.
     Svg,
 }
@@ -23,6 +29,8 @@ impl OutputFormat {
     pub fn extension(self) -> &'static str {
         match self {
             OutputFormat::Json => "json",
+            OutputFormat::GeoJson => "geojson",
+            OutputFormat::Wkt => "wkt",
             OutputFormat::Svg => "svg",
         }
     }
@@ -30,10 +38,12 @@ impl OutputFormat {
     /// A sink writing this format to `out`.
     ///
     /// # Errors
-    /// Any I/O error of `out` (the JSON sink writes its first line at once).
+    /// Any I/O error of `out` (the JSON and GeoJSON sinks write their first line at once).
     pub fn sink<'w, W: Write + 'w>(self, out: W) -> io::Result<Box<dyn Sink + 'w>> {
         Ok(match self {
             OutputFormat::Json => Box::new(json::JsonWriter::new(out)?),
+            OutputFormat::GeoJson => Box::new(geojson::GeoJsonWriter::new(out)?),
+            OutputFormat::Wkt => Box::new(wkt::WktWriter::new(out)),
             OutputFormat::Svg => Box::new(SvgSink {
                 out,
                 outcomes: Vec::new(),
