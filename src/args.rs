@@ -1,16 +1,53 @@
 //! Command-line flags (clap), turned into a validated [`Config`]; the library never sees clap.
 
-use clap::{Parser, ValueEnum};
+use clap::{ColorChoice, CommandFactory, FromArgMatches, Parser, ValueEnum};
+use clap_complete::Shell;
 use minitri::io::write::OutputFormat;
 use minitri::{Algorithm, Format, Options};
 use std::path::PathBuf;
+
+/// The examples after `-h` and `--help` (a macro so that `--help` can append to it).
+macro_rules! examples {
+    () => {
+        "Examples:
+  minitri fixtures/valid/u_shape.wkt               minimum triangulation as JSON
+  cat shape.wkt | minitri                          read standard input (also: minitri < shape.wkt)
+  minitri a.wkt b.geojson > both.json              several inputs, one document, in input order
+  minitri --to svg -o u.svg u_shape.wkt            draw it
+  minitri --to geojson u_shape.wkt                 the triangles for a GIS (also --to wkt)
+  minitri --from vertices points.txt               one `x y` vertex per line (also --from wkt, geojson)
+  minitri --verify shapes/                         a directory, every output checked by the DP too
+  minitri shapes/ -o out/ --jobs 2                 one output per input file, mirrored, 2 threads
+  minitri -q shapes/ -o out/                       the same without summary, warnings or progress bar
+  minitri --time-limit 60 holes.geojson            search polygons with holes up to 60 s each (0: no limit)
+  minitri -a ear shape.geojson                     a plain triangulation (n + 2w - 2 triangles)
+  echo 'POLYGON ((0 0, 0.1 0.3, 0.2 0.6, 0 1))' | minitri      exact decimals: 1 triangle
+
+Exit status: 0 all processed, 1 some input failed, 2 bad command line, 3 --verify found a problem."
+    };
+}
+
+/// Appended to the examples by `--help` (not `-h`), like the flags they use.
+macro_rules! shell_examples {
+    () => {
+        "
+
+Shell:
+  minitri --completions bash > ~/.local/share/bash-completion/completions/minitri
+  minitri --completions zsh > ~/.zfunc/_minitri   (also fish, elvish, powershell)
+  minitri --man > minitri.1 && man ./minitri.1
+
+NO_COLOR set to anything but the empty string turns colour off."
+    };
+}
 
 /// Triangulate polygons with the minimum number of triangles, exactly.
 ///
 /// Reads WKT, GeoJSON or plain vertex lists (files, directories, or standard input) and writes
 /// JSON, GeoJSON, WKT or SVG. Coordinates are exact as written in decimal.
 #[derive(Parser, Debug)]
-#[command(name = "minitri", version, about, after_help = EXAMPLES)]
+#[command(name = "minitri", version, about, after_help = examples!(),
+    after_long_help = concat!(examples!(), shell_examples!()))]
 pub struct Flags {
     /// Input files or directories (searched recursively); none or `-` reads standard input
     pub inputs: Vec<PathBuf>,
@@ -44,19 +81,27 @@ pub struct Flags {
     /// No warnings, summary or progress bar on standard error (errors are still reported)
     #[arg(short, long)]
     pub quiet: bool,
+    /// Print the completion script for SHELL to standard output and exit
+    #[arg(
+        long,
+        value_name = "SHELL",
+        value_enum,
+        exclusive = true,
+        hide_short_help = true,
+        long_help = "Print the completion script for SHELL to standard output and exit. It reads \
+                     no input, so it takes no other argument."
+    )]
+    pub completions: Option<Shell>,
+    /// Print the man page (roff) to standard output and exit
+    #[arg(
+        long,
+        exclusive = true,
+        hide_short_help = true,
+        long_help = "Print the man page (roff) to standard output and exit. It reads no input, so \
+                     it takes no other argument."
+    )]
+    pub man: bool,
 }
-
-const EXAMPLES: &str = "Examples:
-  minitri fixtures/valid/u_shape.wkt               minimum triangulation as JSON
-  cat shape.wkt | minitri                          read standard input
-  minitri --to svg -o u.svg u_shape.wkt            draw it
-  minitri --to geojson u_shape.wkt                 the triangles for a GIS (also --to wkt)
-  minitri --verify shapes/                         a directory, every output checked by the DP too
-  minitri shapes/ -o out/ --jobs 2                 one output per input file, mirrored, 2 threads
-  minitri -a ear shape.geojson                     a plain triangulation (n + 2w - 2 triangles)
-  echo 'POLYGON ((0 0, 0.1 0.3, 0.2 0.6, 0 1))' | minitri      exact decimals: 1 triangle
-
-Exit status: 0 all processed, 1 some input failed, 2 bad command line, 3 --verify found a problem.";
 
 /// `--algorithm`.
 #[derive(Clone, Copy, Debug, ValueEnum)]
@@ -115,6 +160,25 @@ pub struct Config {
 }
 
 impl Flags {
+    /// The clap command, uncoloured when `NO_COLOR` is set to a non-empty value
+    /// (<https://no-color.org>), whatever the terminal or `CLICOLOR_FORCE`.
+    pub fn command_for_env() -> clap::Command {
+        let cmd = Flags::command();
+        if std::env::var_os("NO_COLOR").is_some_and(|v| !v.is_empty()) {
+            cmd.color(ColorChoice::Never)
+        } else {
+            cmd
+        }
+    }
+
+    /// Parses the process arguments; on a bad command line, or for `--help` and `--version`,
+    /// prints and exits as clap does (status 2, or 0).
+    pub fn from_env() -> Flags {
+        let mut cmd = Flags::command_for_env();
+        let matches = cmd.get_matches_mut();
+        Flags::from_arg_matches(&matches).unwrap_or_else(|e| e.format(&mut cmd).exit())
+    }
+
     /// Validates the flags into a [`Config`].
     pub fn into_config(self) -> Config {
         let algorithm = match self.algorithm {

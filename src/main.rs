@@ -3,10 +3,10 @@
 //! output file or directory.
 
 mod args;
+mod shell;
 
 use anyhow::Context;
 use args::Flags;
-use clap::Parser;
 use indicatif::{ProgressBar, ProgressStyle};
 use minitri::batch::{
     discover, plan, run_document, run_tree, AtomicFile, Observer, Settings, Tally, TreeJob,
@@ -35,7 +35,11 @@ fn main() -> ExitCode {
 
 fn run() -> anyhow::Result<ExitCode> {
     let started = Instant::now();
-    let config = Flags::parse().into_config();
+    let flags = Flags::from_env();
+    if shell::generate(&flags, &mut io::stdout().lock())? {
+        return Ok(ExitCode::SUCCESS);
+    }
+    let config = flags.into_config();
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(config.jobs.unwrap_or(0))
         .build()

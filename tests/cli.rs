@@ -1,6 +1,6 @@
 //! The command line, run as a user runs it: fixtures, formats, errors, exit codes, files.
 
-use crate::util::{expected, fixtures, json, run};
+use crate::util::{expected, fixtures, json, minitri, run};
 use serde_json::Value;
 
 #[test]
@@ -312,6 +312,125 @@ fn exit_codes_and_help() {
     let (code, _, err) = run(&["no/such/file.wkt"], None);
     assert_eq!(code, 1);
     assert!(err.contains("no/such/file.wkt: cannot read"), "{err}");
+}
+
+#[test]
+fn help_shows_an_example_of_every_use() {
+    let (code, out, _) = run(&["--help"], None);
+    assert_eq!(code, 0);
+    for example in [
+        "cat shape.wkt | minitri",
+        "minitri --to svg -o u.svg",
+        "--to geojson",
+        "--to wkt",
+        "--from vertices",
+        "minitri --verify shapes/",
+        "minitri shapes/ -o out/ --jobs 2",
+        "minitri -q shapes/",
+        "minitri --time-limit 60",
+        "minitri -a ear",
+        "minitri --completions bash >",
+        "minitri --man > minitri.1",
+        "NO_COLOR",
+        "Exit status:",
+    ] {
+        assert!(
+            out.contains(example),
+            "{example:?} missing from --help:\n{out}"
+        );
+    }
+    // -h is the summary: the shell flags are left to --help.
+    let (code, short, _) = run(&["-h"], None);
+    assert_eq!(code, 0);
+    assert!(
+        short.contains("Examples:") && short.contains("--verify"),
+        "{short}"
+    );
+    assert!(
+        !short.contains("--completions") && !short.contains("--man"),
+        "{short}"
+    );
+    let (code, version, _) = run(&["--version"], None);
+    assert_eq!(code, 0);
+    assert!(version.starts_with("minitri "), "{version}");
+}
+
+#[test]
+fn completions_for_every_shell_and_a_man_page_without_reading_input() {
+    for shell in ["bash", "zsh", "fish", "elvish", "powershell"] {
+        // Standard input is given, and must not be read (nor waited for).
+        let (code, out, err) = run(&["--completions", shell], Some("not a polygon"));
+        assert_eq!(code, 0, "{shell}: {err}");
+        assert!(err.is_empty(), "{shell}: {err}");
+        assert!(out.contains("minitri"), "{shell}");
+        assert!(
+            out.contains("algorithm") && out.contains("time-limit"),
+            "{shell}"
+        );
+    }
+    let (_, bash, _) = run(&["--completions", "bash"], None);
+    assert!(bash.contains("complete -F _minitri"), "{bash}");
+    assert!(
+        bash.contains("--algorithm") && bash.contains("--quiet"),
+        "{bash}"
+    );
+    let (_, zsh, _) = run(&["--completions", "zsh"], None);
+    assert!(zsh.starts_with("#compdef minitri"), "{zsh}");
+
+    let (code, man, err) = run(&["--man"], Some("not a polygon"));
+    assert_eq!(code, 0, "{err}");
+    assert!(err.is_empty(), "{err}");
+    assert!(man.lines().any(|l| l.starts_with(".TH minitri 1")), "{man}");
+    for section in [".SH NAME", ".SH SYNOPSIS", ".SH OPTIONS", ".SH EXAMPLES"] {
+        assert!(man.contains(section), "{section} missing:\n{man}");
+    }
+    assert!(man.contains("\\-\\-algorithm") && man.contains("\\-\\-time\\-limit"));
+    assert!(man.contains("minitri \\-\\-verify shapes/"), "{man}");
+
+    // An unknown shell, or either flag with anything else, is a bad command line.
+    let (code, _, err) = run(&["--completions", "tcsh"], None);
+    assert_eq!(code, 2);
+    assert!(err.contains("possible values: bash"), "{err}");
+    for args in [
+        &["--completions", "bash", "fixtures/valid/u_shape.wkt"][..],
+        &["--man", "-q"],
+        &["--man", "--completions", "zsh"],
+        &["--man", "-o", "minitri.1"],
+    ] {
+        let (code, out, err) = run(args, None);
+        assert_eq!(code, 2, "{args:?}");
+        assert!(
+            out.is_empty() && err.contains("cannot be used with"),
+            "{args:?}: {err}"
+        );
+    }
+}
+
+#[test]
+fn no_color_turns_colour_off_in_help_and_errors() {
+    // Not a terminal here, so CLICOLOR_FORCE is what makes clap colour; it shows the check
+    // below would see escapes if there were any.
+    let colour = |no_color: Option<&str>, args: &[&str]| {
+        let mut cmd = minitri();
+        cmd.args(args)
+            .env("CLICOLOR_FORCE", "1")
+            .env_remove("NO_COLOR");
+        if let Some(value) = no_color {
+            cmd.env("NO_COLOR", value);
+        }
+        let out = cmd.output().unwrap();
+        let text = [out.stdout, out.stderr].concat();
+        String::from_utf8_lossy(&text).into_owned()
+    };
+    for args in [&["--help"][..], &["--bogus"]] {
+        assert!(colour(None, args).contains("\x1b["), "{args:?}");
+        // An empty NO_COLOR is no request (no-color.org).
+        assert!(colour(Some(""), args).contains("\x1b["), "{args:?}");
+        let plain = colour(Some("1"), args);
+        assert!(!plain.contains('\x1b'), "{args:?}: {plain:?}");
+    }
+    let plain = colour(Some("1"), &["--help"]);
+    assert!(plain.contains("Examples:") && plain.contains("cat shape.wkt | minitri"));
 }
 
 #[test]
