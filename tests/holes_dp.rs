@@ -11,10 +11,10 @@
 //! random edges), then up to 2 holes (random grid triangles or rectangles, sometimes with a flat
 //! vertex), each kept when the polygon stays valid.
 
-use crate::util::chord;
+use crate::util::{chord, polygon_from_rings};
 use minitri::algo::{asano, asano_holes};
 use minitri::geom::kernel::{cross, dot, Point};
-use minitri::{verify, Decimal, Polygon, RawPolygon};
+use minitri::{verify, Polygon};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed, TestRunner};
 use std::cell::RefCell;
@@ -23,17 +23,6 @@ type Ring = Vec<(i64, i64)>;
 
 /// A hole candidate: kind (0 triangle, 1 rectangle), anchor and two offsets, flat vertex or not.
 type HoleCandidate = (u8, [(i64, i64); 3], bool);
-
-fn to_polygon(rings: &[Ring]) -> Option<Polygon> {
-    let d = |v: i64| Decimal::parse(&v.to_string()).ok();
-    let rings: Option<Vec<Vec<[Decimal; 2]>>> = rings
-        .iter()
-        .map(|r| r.iter().map(|&(x, y)| Some([d(x)?, d(y)?])).collect())
-        .collect();
-    Polygon::from_raw(&RawPolygon { rings: rings? })
-        .ok()
-        .map(|(p, _)| p)
-}
 
 // ---------- the generator ----------
 
@@ -110,7 +99,7 @@ fn outer(r: &Recipe) -> Option<Ring> {
         for &(at, x, y) in &r.ops {
             let mut next = ring.clone();
             next.insert(at % ring.len() + 1, (x, y));
-            if to_polygon(&[next.clone()]).is_some() {
+            if polygon_from_rings(&[next.clone()]).is_some() {
                 ring = next;
             }
         }
@@ -152,7 +141,7 @@ fn hole(kind: u8, pts: [(i64, i64); 3], flat: bool, bbox: (i64, i64, i64, i64)) 
 /// The polygon of a recipe, with exactly `want` holes, or `None` if no valid one came out.
 fn build(r: &Recipe) -> Option<Polygon> {
     let mut rings = vec![outer(r)?];
-    to_polygon(&rings)?;
+    polygon_from_rings(&rings)?;
     let xs = || rings[0].iter().map(|p| p.0);
     let ys = || rings[0].iter().map(|p| p.1);
     let bbox = (xs().min()?, ys().min()?, xs().max()?, ys().max()?);
@@ -162,12 +151,12 @@ fn build(r: &Recipe) -> Option<Polygon> {
         }
         let mut next = rings.clone();
         next.push(hole(kind, pts, flat, bbox));
-        if to_polygon(&next).is_some() {
+        if polygon_from_rings(&next).is_some() {
             rings = next;
         }
     }
     if rings.len() == r.want + 1 {
-        to_polygon(&rings)
+        polygon_from_rings(&rings)
     } else {
         None
     }
@@ -381,6 +370,19 @@ struct Stats {
     hole_t_junction: usize,
 }
 
+impl Stats {
+    /// The random population met every situation often enough to mean something.
+    fn assert_varied(&self) {
+        assert!(
+            self.with_flat * 4 >= self.cases
+                && self.collinear_across_rings * 2 >= self.cases
+                && self.saving * 2 >= self.cases
+                && self.hole_t_junction * 10 >= self.cases,
+            "variety: {self:?}"
+        );
+    }
+}
+
 /// Whether some vertex of one ring lies on a line through two vertices of another ring... or
 /// simply: three vertices, not all on one ring, are collinear.
 fn collinear_across_rings(p: &Polygon) -> bool {
@@ -477,13 +479,7 @@ fn one_hole_dp_is_minimum_and_valid() {
     let s = run(1, 4000, 0x401e_0001, asano_holes::ONE_HOLE_LIMIT, 10);
     eprintln!("one hole: {s:?}");
     assert!(s.cases >= 2000 && s.exhaustive >= 300, "{s:?}");
-    assert!(
-        s.with_flat * 4 >= s.cases
-            && s.collinear_across_rings * 2 >= s.cases
-            && s.saving * 2 >= s.cases
-            && s.hole_t_junction * 10 >= s.cases,
-        "variety: {s:?}"
-    );
+    s.assert_varied();
 }
 
 #[test]
@@ -491,41 +487,35 @@ fn two_holes_dp_is_minimum_and_valid() {
     let s = run(2, 3500, 0x401e_0002, 18, 11);
     eprintln!("two holes: {s:?}");
     assert!(s.cases >= 600 && s.exhaustive >= 200, "{s:?}");
-    assert!(
-        s.with_flat * 4 >= s.cases
-            && s.collinear_across_rings * 2 >= s.cases
-            && s.saving * 2 >= s.cases
-            && s.hole_t_junction * 10 >= s.cases,
-        "variety: {s:?}"
-    );
+    s.assert_varied();
 }
 
 #[test]
 fn the_exhaustive_search_avoids_the_swallowed_hole() {
     // DESIGN.md's trap: the medial triangle (4,0) (6,4) (2,4) has chord sides and no vertex
     // inside, yet swallows the hole whose corners lie on its sides; with it the count would be 4.
-    let p = to_polygon(&[
+    let p = polygon_from_rings(&[
         vec![(0, 0), (4, 0), (8, 0), (6, 4), (4, 8), (2, 4)],
         vec![(5, 2), (4, 4), (3, 2)],
     ])
     .unwrap();
     assert_eq!(exhaustive_minimum(&p), 6);
     // A square with a square hole: no vertex can lie inside a triangle side, so n + 2w - 2.
-    let p = to_polygon(&[
+    let p = polygon_from_rings(&[
         vec![(0, 0), (3, 0), (3, 3), (0, 3)],
         vec![(1, 1), (2, 1), (2, 2), (1, 2)],
     ])
     .unwrap();
     assert_eq!(exhaustive_minimum(&p), 8);
     // Two square holes whose sides lie on common lines (tested on the DP in asano_holes.rs).
-    let p = to_polygon(&[
+    let p = polygon_from_rings(&[
         vec![(0, 0), (7, 0), (7, 3), (0, 3)],
         vec![(1, 1), (2, 1), (2, 2), (1, 2)],
         vec![(4, 1), (5, 1), (5, 2), (4, 2)],
     ])
     .unwrap();
     assert_eq!(exhaustive_minimum(&p), 10);
-    let p = to_polygon(&[
+    let p = polygon_from_rings(&[
         vec![(0, 0), (3, 0), (3, 3), (0, 3)],
         vec![(1, 1), (2, 1), (2, 2), (1, 2)],
     ])

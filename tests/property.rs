@@ -17,7 +17,7 @@
 //! random polyominoes (every lattice point on the boundary is a vertex, so most are flat).
 //! Either kind is used with its flat vertices, and with them removed.
 
-use crate::util::{chord, xorshift};
+use crate::util::{chord, polygon_from_rings, xorshift};
 use minitri::algo::{asano, ear, minitri as chen_chang};
 use minitri::geom::kernel::{cross, dot, Point};
 use minitri::{verify, Decimal, Polygon, RawPolygon};
@@ -485,18 +485,6 @@ fn soak() {
 
 // ---------- plain triangulation of polygons with holes (issue 4) ----------
 
-/// A polygon from rings (outer first, any orientation), if valid.
-fn to_holed_polygon(rings: &[Vec<(i64, i64)>]) -> Option<Polygon> {
-    let d = |v: i64| Decimal::parse(&v.to_string()).ok();
-    let rings: Option<Vec<Vec<[Decimal; 2]>>> = rings
-        .iter()
-        .map(|r| r.iter().map(|&(x, y)| Some([d(x)?, d(y)?])).collect())
-        .collect();
-    Polygon::from_raw(&RawPolygon { rings: rings? })
-        .ok()
-        .map(|(p, _)| p)
-}
-
 const NEIGHBOURS_8: [(i64, i64); 8] = [
     (-1, -1),
     (0, -1),
@@ -631,11 +619,11 @@ fn holed(recipe: &HoledRecipe) -> Option<Vec<Vec<(i64, i64)>>> {
                 .collect()
         })
         .collect();
-    to_holed_polygon(&rings).expect("valid by construction");
+    polygon_from_rings(&rings).expect("valid by construction");
     for (r, &bits) in recipe.cuts.iter().enumerate().take(rings.len()) {
         let before = rings[r].clone();
         rings[r] = cut_corners(&before, bits);
-        if to_holed_polygon(&rings).is_none() {
+        if polygon_from_rings(&rings).is_none() {
             rings[r] = before;
         }
     }
@@ -643,7 +631,7 @@ fn holed(recipe: &HoledRecipe) -> Option<Vec<Vec<(i64, i64)>>> {
         if recipe.plain >> r & 1 == 1 {
             let before = rings[r].clone();
             rings[r] = without_flat(&before);
-            if to_holed_polygon(&rings).is_none() {
+            if polygon_from_rings(&rings).is_none() {
                 rings[r] = before;
             }
         }
@@ -679,7 +667,7 @@ fn holed_recipe() -> impl Strategy<Value = HoledRecipe> {
 /// `--algorithm ear` on a polygon with holes: exactly n + 2w - 2 triangles, none degenerate,
 /// passing the independent checker.
 fn check_plain_with_holes(rings: &[Vec<(i64, i64)>]) -> Result<(), TestCaseError> {
-    let poly = to_holed_polygon(rings).ok_or_else(|| TestCaseError::fail("invalid polygon"))?;
+    let poly = polygon_from_rings(rings).ok_or_else(|| TestCaseError::fail("invalid polygon"))?;
     let (n, w) = (poly.len(), poly.holes());
     let t = ear::triangulate(&poly).map_err(|e| TestCaseError::fail(e.to_string()))?;
     prop_assert_eq!(t.triangles.len(), n + 2 * w - 2, "count on {:?}", rings);
@@ -773,7 +761,7 @@ fn the_holes_generator_makes_varied_valid_polygons() {
     let (mut holes, mut flat_on_hole, mut diagonal_hole, mut diagonal_outer) = ([0; 4], 0, 0, 0);
     let (mut level_with_outer, mut holes_level, mut sizes) = (0, 0, BTreeSet::new());
     for rings in &population {
-        let poly = to_holed_polygon(rings).expect("valid");
+        let poly = polygon_from_rings(rings).expect("valid");
         holes[poly.holes()] += 1;
         sizes.insert(poly.len());
         let pts = |r: usize| -> Vec<Point> { poly.ring_range(r).map(|i| poly.point(i)).collect() };

@@ -2,7 +2,7 @@
 
 use assert_cmd::Command;
 use minitri::geom::kernel::{cross, dot, in_closed_wedge, Point};
-use minitri::Polygon;
+use minitri::{Decimal, Polygon, RawPolygon};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 
@@ -91,4 +91,16 @@ pub fn xorshift(seed: u64) -> impl FnMut(i64) -> i64 {
         state ^= state << 17;
         (state % n as u64) as i64
     }
+}
+
+/// A polygon from integer rings (outer first, any orientation), if valid.
+pub fn polygon_from_rings(rings: &[Vec<(i64, i64)>]) -> Option<Polygon> {
+    let d = |v: i64| Decimal::parse(&v.to_string()).ok();
+    let rings: Option<Vec<Vec<[Decimal; 2]>>> = rings
+        .iter()
+        .map(|r| r.iter().map(|&(x, y)| Some([d(x)?, d(y)?])).collect())
+        .collect();
+    Polygon::from_raw(&RawPolygon { rings: rings? })
+        .ok()
+        .map(|(p, _)| p)
 }
