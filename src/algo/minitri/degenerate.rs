@@ -143,13 +143,12 @@ pub fn minimally_degenerate_and_mesh(polygon: &Polygon) -> (Vec<Degenerate>, Vec
     // The vertices are independent searches over a shared mesh: in parallel (on the current
     // rayon pool) by blocks of vertices, concatenated in vertex order, so the result does not
     // depend on the number of threads.
-    let blocks: Vec<Vec<Degenerate>> = (0..polygon.len())
-        .step_by(PARALLEL_BLOCK)
-        .collect::<Vec<_>>()
+    let n = polygon.len();
+    let blocks: Vec<Vec<Degenerate>> = (0..n.div_ceil(PARALLEL_BLOCK))
         .into_par_iter()
-        .map_init(Workspace::default, |work, first| {
+        .map_init(Workspace::default, |work, block| {
             let mut out = Vec::new();
-            for b in first..(first + PARALLEL_BLOCK).min(polygon.len()) {
+            for b in block * PARALLEL_BLOCK..((block + 1) * PARALLEL_BLOCK).min(n) {
                 search_from(polygon, &mesh, b, work, &mut out);
             }
             out
