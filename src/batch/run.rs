@@ -443,19 +443,22 @@ fn read_input(input: &Input, from: Option<Format>, chunker: &mut Chunker) -> io:
         if lines_by_name || geojson_stream::looks_line_delimited(start) {
             return read_lines(&source, reader, chunker);
         }
+        // Binary data is named as such, not as a JSON syntax error (judged on the start only).
+        if let Some(error) = read::not_text(start, false) {
+            return failed(chunker, Error::Parse(error));
+        }
         return stream_geojson(&source, reader, chunker);
     }
     let mut bytes = Vec::new();
     if let Err(e) = reader.read_to_end(&mut bytes) {
         return failed(chunker, Error::Read(e.to_string()));
     }
+    if let Some(error) = read::not_text(&bytes, true) {
+        return failed(chunker, Error::Parse(error));
+    }
     let text = match String::from_utf8(bytes) {
         Ok(text) => text,
-        Err(e) => {
-            let at = e.utf8_error().valid_up_to();
-            let message = format!("not UTF-8 text (invalid byte at offset {at})");
-            return failed(chunker, Error::Read(message));
-        }
+        Err(e) => return failed(chunker, Error::Read(e.to_string())), // ruled out just above
     };
     let format = format.unwrap_or_else(|| read::detect(extension, &text));
     if format == Format::GeoJson {
@@ -496,16 +499,19 @@ fn read_lines(
             }
         }
         number += 1;
-        let text = match String::from_utf8(bytes) {
-            Ok(text) => text,
-            Err(_) => {
-                let message = format!("line {number}: not UTF-8 text");
+        // A line of binary data is reported alone, like any other bad line.
+        let text = match read::not_text(&bytes, true) {
+            Some(mut error) => {
+                if let Some(location) = &mut error.location {
+                    location.line = number;
+                }
                 chunker.push(Item::Failed(Box::new(unreadable(
                     source,
-                    Error::Read(message),
+                    Error::Parse(error),
                 ))))?;
                 continue;
             }
+            None => String::from_utf8_lossy(&bytes).into_owned(),
         };
         if text.trim().is_empty() {
             continue;

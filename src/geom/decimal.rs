@@ -4,7 +4,8 @@
 //! Output guarantee: the value `±mantissa × 10^exponent` exactly, normalised (no trailing zeros
 //! in the mantissa, zero has exponent 0 and no sign), so two literals denote the same number
 //! exactly when their `Decimal`s are equal. `NaN`, `inf` and `infinity` are rejected by name.
-//! Complexity: linear in the length of the literal.
+//! Complexity: linear in the length of the literal, constant extra memory; a literal with too
+//! many significant digits is rejected at the first digit too many.
 
 use std::fmt;
 
@@ -61,10 +62,13 @@ impl Decimal {
     /// ```
     pub fn parse(text: &str) -> Result<Decimal, NumberError> {
         let invalid = || NumberError::Invalid(text.to_string());
-        let lower = text.to_ascii_lowercase();
-        let unsigned = lower.trim_start_matches(['+', '-']);
-        if matches!(unsigned, "nan" | "inf" | "infinity") {
-            return Err(NumberError::NonFinite(text.to_string()));
+        // Only a short text can name a non-finite value (no copy of a long literal is made).
+        if text.len() <= "-infinity".len() {
+            let lower = text.to_ascii_lowercase();
+            let unsigned = lower.trim_start_matches(['+', '-']);
+            if matches!(unsigned, "nan" | "inf" | "infinity") {
+                return Err(NumberError::NonFinite(text.to_string()));
+            }
         }
         let bytes = text.as_bytes();
         let mut pos = 0;
@@ -79,7 +83,11 @@ impl Decimal {
             }
             _ => false,
         };
-        let mut digits: Vec<u8> = Vec::new();
+        // The significant digits so far are `mantissa` followed by `zeros` zeros (held back:
+        // trailing zeros are not significant); `significant` counts both.
+        let mut mantissa: u128 = 0;
+        let mut significant: usize = 0;
+        let mut zeros: i64 = 0;
         let mut fraction_digits: i64 = 0;
         let mut seen_digit = false;
         let mut seen_point = false;
@@ -87,8 +95,22 @@ impl Decimal {
             match bytes[pos] {
                 c @ b'0'..=b'9' => {
                     seen_digit = true;
-                    if !(digits.is_empty() && c == b'0') {
-                        digits.push(c - b'0');
+                    if c == b'0' {
+                        if significant > 0 {
+                            zeros += 1;
+                            significant += 1;
+                        }
+                    } else {
+                        significant += 1;
+                        if significant > MAX_DIGITS {
+                            // Rejected at once: a long literal is never read to its end.
+                            return Err(NumberError::TooManyDigits(text.to_string()));
+                        }
+                        for _ in 0..zeros {
+                            mantissa *= 10;
+                        }
+                        zeros = 0;
+                        mantissa = mantissa * 10 + u128::from(c - b'0');
                     }
                     if seen_point {
                         fraction_digits += 1;
@@ -127,21 +149,13 @@ impl Decimal {
                 magnitude
             };
         }
-        exponent -= fraction_digits;
-        while digits.last() == Some(&0) {
-            digits.pop();
-            exponent += 1;
-        }
-        if digits.is_empty() {
+        if mantissa == 0 {
             return Ok(Decimal::ZERO);
         }
-        if digits.len() > MAX_DIGITS {
-            return Err(NumberError::TooManyDigits(text.to_string()));
-        }
+        exponent = exponent - fraction_digits + zeros;
         if exponent.abs() > MAX_EXPONENT {
             return Err(NumberError::ExponentOutOfRange(text.to_string()));
         }
-        let mantissa = digits.iter().fold(0u128, |m, &d| m * 10 + u128::from(d));
         Ok(Decimal {
             negative,
             mantissa,
@@ -156,11 +170,38 @@ impl Decimal {
 
     /// `self × 10^scale` as an exact integer, if it is one and fits an `i128`.
     pub(crate) fn scaled(&self, scale: i32) -> Option<i128> {
+        if self.mantissa == 0 {
+            return Some(0);
+        }
         let shift = u32::try_from(self.exponent.checked_add(scale)?).ok()?;
         let magnitude = i128::try_from(self.mantissa)
             .ok()?
             .checked_mul(10i128.checked_pow(shift)?)?;
         Some(if self.negative { -magnitude } else { magnitude })
+    }
+
+    /// For messages: the plain notation when it is short (at most 24 characters), else the same
+    /// exact value in scientific notation (`1e400`, `-1.25e-30`), so a message stays short.
+    ///
+    /// # Examples
+    /// ```
+    /// use minitri::Decimal;
+    /// assert_eq!(Decimal::parse("0.125")?.brief(), "0.125");
+    /// assert_eq!(Decimal::parse("-125e400")?.brief(), "-1.25e402");
+    /// # Ok::<(), minitri::NumberError>(())
+    /// ```
+    pub fn brief(&self) -> String {
+        let plain = self.to_string();
+        if plain.len() <= 24 {
+            return plain;
+        }
+        let digits = self.mantissa.to_string();
+        let sign = if self.negative { "-" } else { "" };
+        let power = i64::from(self.exponent) + digits.len() as i64 - 1;
+        match digits.split_at(1) {
+            (head, "") => format!("{sign}{head}e{power}"),
+            (head, tail) => format!("{sign}{head}.{tail}e{power}"),
+        }
     }
 
     /// The nearest `f64` (for drawing only, never for decisions).

@@ -379,6 +379,9 @@ fn dropped(ring: Ring, id: usize, same_as: usize, grid: &Grid, p: Point) -> Warn
 }
 
 /// Puts every coordinate of `raw` on one exact integer grid, translated to start at 0.
+///
+/// A coordinate beyond 128 bits on the grid, or a range above 2^62 units, is rejected naming
+/// the vertices, the values and the unit (the finest decimal place used).
 fn to_grid(raw: &RawPolygon) -> Result<(Vec<Point>, Grid), InvalidPolygon> {
     let all = || raw.rings.iter().flatten();
     let scale = all()
@@ -387,29 +390,65 @@ fn to_grid(raw: &RawPolygon) -> Result<(Vec<Point>, Grid), InvalidPolygon> {
         .max()
         .unwrap_or(0)
         .max(0);
+    let unit = if scale == 0 {
+        "1".to_string()
+    } else {
+        format!("10^-{scale}")
+    };
+    // Each vertex number with its ring, for messages.
+    let vertex = |id: usize| {
+        let mut first = 0;
+        for (r, ring) in raw.rings.iter().enumerate() {
+            if id < first + ring.len() {
+                return format!("{} vertex {id}", Ring::from_index(r));
+            }
+            first += ring.len();
+        }
+        format!("vertex {id}")
+    };
     let too_large = |what: String| InvalidPolygon::CoordinatesTooLarge { detail: what };
     let mut scaled: Vec<[i128; 2]> = Vec::with_capacity(all().count());
-    for [x, y] in all() {
-        let s = |d: &Decimal| {
-            d.scaled(scale)
-                .ok_or_else(|| too_large(format!("{d} times 10^{scale} does not fit 128 bits")))
+    for (id, [x, y]) in all().enumerate() {
+        let s = |name: &str, d: &Decimal| {
+            d.scaled(scale).ok_or_else(|| {
+                too_large(format!(
+                    "{} has {name} = {}, more than 2^127 units of {unit} (the finest decimal place used)",
+                    vertex(id),
+                    d.brief()
+                ))
+            })
         };
-        scaled.push([s(x)?, s(y)?]);
+        scaled.push([s("x", x)?, s("y", y)?]);
     }
     let mut origin = [i128::MAX; 2];
     let mut top = [i128::MIN; 2];
-    for p in &scaled {
+    let (mut lowest, mut highest) = ([0; 2], [0; 2]);
+    for (id, p) in scaled.iter().enumerate() {
         for axis in 0..2 {
-            origin[axis] = origin[axis].min(p[axis]);
-            top[axis] = top[axis].max(p[axis]);
+            if p[axis] < origin[axis] {
+                (origin[axis], lowest[axis]) = (p[axis], id);
+            }
+            if p[axis] > top[axis] {
+                (top[axis], highest[axis]) = (p[axis], id);
+            }
         }
     }
     for axis in 0..2 {
         let span = top[axis].checked_sub(origin[axis]);
         if span.is_none_or(|s| s > i128::from(MAX_COORD)) {
-            let name = ["x", "y"][axis];
+            let value = |id: usize| {
+                all()
+                    .nth(id)
+                    .map(|p| p[axis].brief())
+                    .unwrap_or_default()
+            };
             return Err(too_large(format!(
-                "the {name} coordinates span more than 2^62 units of 10^-{scale}"
+                "the {name} coordinates range from {} ({}) to {} ({}), more than 2^62 units of {unit} (the finest decimal place used)",
+                value(lowest[axis]),
+                vertex(lowest[axis]),
+                value(highest[axis]),
+                vertex(highest[axis]),
+                name = ["x", "y"][axis],
             )));
         }
     }

@@ -95,6 +95,38 @@ pub fn locate(text: &str, offset: usize) -> Location {
     }
 }
 
+/// Why `bytes` is not text, if it is not: a NUL byte (binary data) or a byte sequence that is
+/// not UTF-8, whichever comes first, at its line and column. With `whole` false, `bytes` is only
+/// the start of the input, and a character cut off at its end is not judged.
+///
+/// # Examples
+/// ```
+/// use minitri::io::read::not_text;
+/// let error = not_text(b"POLYGON ((0 0,\n 1\xff", true).map(|e| e.to_string());
+/// assert_eq!(error.as_deref(), Some("line 2, column 3: not UTF-8 text (byte 0xFF)"));
+/// let error = not_text(b"\x7fELF\x02\x01\x00", true).map(|e| e.to_string());
+/// assert_eq!(error.as_deref(), Some("line 1, column 7: binary data, not text (a NUL byte)"));
+/// assert!(not_text("0 0\n1 0\n0 1 # \u{e9}".as_bytes(), true).is_none());
+/// assert!(not_text(&"\u{e9}".as_bytes()[..1], false).is_none(), "cut off");
+/// ```
+pub fn not_text(bytes: &[u8], whole: bool) -> Option<ParseError> {
+    let utf8 = match std::str::from_utf8(bytes) {
+        Ok(_) => None,
+        Err(e) if e.error_len().is_none() && !whole => None,
+        Err(e) => Some(e.valid_up_to()),
+    };
+    let nul = bytes.iter().position(|&b| b == 0);
+    let (at, message) = match (nul, utf8) {
+        (Some(n), Some(u)) if u < n => (u, format!("not UTF-8 text (byte 0x{:02X})", bytes[u])),
+        (Some(n), _) => (n, "binary data, not text (a NUL byte)".to_string()),
+        (None, Some(u)) => (u, format!("not UTF-8 text (byte 0x{:02X})", bytes[u])),
+        (None, None) => return None,
+    };
+    // The bytes before `at` are UTF-8.
+    let before = std::str::from_utf8(&bytes[..at]).unwrap_or_default();
+    Some(ParseError::at(locate(before, at), message))
+}
+
 /// Drops a ring's last vertex when it repeats the first exactly (the optional closing vertex).
 pub(crate) fn drop_closing_vertex(ring: &mut Vec<[Decimal; 2]>) {
     if ring.len() > 1 && ring.first() == ring.last() {

@@ -170,20 +170,21 @@ fn parse_vertex(line: &str) -> Result<[Decimal; 2], (usize, String)> {
             let y = parse_number(y).map_err(|m| (*y_at, m))?;
             Ok([x, y])
         }
+        [(at, _)] => Err((*at, "expected 2 numbers `x y` or `x,y`, found 1 field".to_string())),
         _ => {
-            let at = fields.get(2).or(fields.first()).map_or(0, |(at, _)| *at);
-            let count = fields.len();
-            let plural = if count == 1 { "field" } else { "fields" };
-            Err((
-                at,
-                format!("expected 2 numbers `x y` or `x,y`, found {count} {plural}"),
-            ))
+            let (at, third) = fields.get(2).copied().unwrap_or_default();
+            let message = format!(
+                "expected 2 numbers `x y` or `x,y`, found a third field {}",
+                quote(third)
+            );
+            Err((at, message))
         }
     }
 }
 
 /// Splits a line into fields separated by whitespace or by one comma (with optional whitespace
-/// around it), each with its byte offset.
+/// around it), each with its byte offset; stops after a third field (the line is wrong then, and
+/// a long line is not split to its end).
 fn split_fields(line: &str) -> Result<Vec<(usize, &str)>, (usize, String)> {
     let mut fields = Vec::new();
     // Offset of a comma not yet followed by a field.
@@ -209,6 +210,9 @@ fn split_fields(line: &str) -> Result<Vec<(usize, &str)>, (usize, String)> {
             }
             fields.push((at, line.get(at..end).unwrap_or_default()));
             pending_comma = None;
+            if fields.len() == 3 {
+                return Ok(fields);
+            }
         }
     }
     match pending_comma {
@@ -325,7 +329,7 @@ mod tests {
         );
         assert_eq!(
             error("0 0\n1 0 5\n"),
-            "line 2, column 5: expected 2 numbers `x y` or `x,y`, found 3 fields"
+            "line 2, column 5: expected 2 numbers `x y` or `x,y`, found a third field \"5\""
         );
         assert_eq!(
             error("0 0\n  7\n"),

@@ -60,7 +60,8 @@ const OTHER_TYPES: [&str; 15] = [
 ///
 /// # Errors
 /// [`ParseError`] with line and column for a syntax error, a number that is not a finite
-/// decimal, a point with fewer than 2 or more than 4 coordinates, an empty ring, a geometry type
+/// decimal, a point with fewer than 2 or more than 4 coordinates (or not as many as the first
+/// point of its polygon: a missing comma, most likely), an empty ring, a geometry type
 /// other than `POLYGON`, `MULTIPOLYGON` and `GEOMETRYCOLLECTION`, collections nested deeper than
 /// 64 levels, or text after the geometry; without location for an empty input or a geometry
 /// holding no polygon (all `EMPTY`).
@@ -78,6 +79,7 @@ pub fn read(text: &str) -> Result<Vec<RawPolygon>, ParseError> {
         text,
         pos: 0,
         polygons: Vec::new(),
+        dimensions: None,
     };
     if parser.peek().kind == Tok::End {
         return Err(ParseError::new("empty input: no polygon found"));
@@ -181,6 +183,9 @@ struct Parser<'a> {
     text: &'a str,
     pos: usize,
     polygons: Vec<RawPolygon>,
+    /// How many coordinates the current polygon's first point has: every point of a polygon
+    /// must have as many (a point with more is most likely a missing comma).
+    dimensions: Option<usize>,
 }
 
 impl<'a> Parser<'a> {
@@ -352,6 +357,7 @@ impl<'a> Parser<'a> {
     /// Reads `( ring, ... )`; `what` names the opening parenthesis in an error.
     fn polygon(&mut self, what: &str) -> Result<RawPolygon, ParseError> {
         self.expect(Tok::Open, what)?;
+        self.dimensions = None;
         let mut rings = Vec::new();
         loop {
             rings.push(self.ring()?);
@@ -394,20 +400,25 @@ impl<'a> Parser<'a> {
 
     /// Reads `x y [z [m]]`, keeping `x` and `y`.
     fn point(&mut self) -> Result<[Decimal; 2], ParseError> {
-        let first = self.next();
-        let Tok::Word(x) = first.kind else {
-            return Err(self.expected("a number", first));
+        let first_token = self.next();
+        let Tok::Word(x) = first_token.kind else {
+            return Err(self.expected("a number", first_token));
         };
-        let x = parse_number(x).map_err(|m| self.error(first, m))?;
+        let x = parse_number(x).map_err(|m| self.error(first_token, m))?;
         let second = self.next();
         let Tok::Word(y) = second.kind else {
-            return Err(self.error(first, "a point needs at least 2 coordinates `x y`, found 1"));
+            return Err(self.error(
+                first_token,
+                "a point needs at least 2 coordinates `x y`, found 1",
+            ));
         };
         let y = parse_number(y).map_err(|m| self.error(second, m))?;
+        let mut count = 2;
         for _ in 0..2 {
             let token = self.peek();
             let Tok::Word(extra) = token.kind else { break };
             self.next();
+            count += 1;
             // z and m are ignored, but must be numbers; NaN is a common "no value" for them.
             if !matches!(
                 Decimal::parse(extra),
@@ -424,6 +435,21 @@ impl<'a> Parser<'a> {
                 quote(w)
             );
             return Err(self.error(token, message));
+        }
+        match self.dimensions {
+            None => self.dimensions = Some(count),
+            Some(first) if first != count => {
+                let hint = if count > first {
+                    " (a missing comma?)"
+                } else {
+                    ""
+                };
+                let message = format!(
+                    "this point has {count} coordinates but the polygon's first point has {first}{hint}"
+                );
+                return Err(self.error(first_token, message));
+            }
+            Some(_) => {}
         }
         Ok([x, y])
     }
