@@ -93,12 +93,11 @@ pub fn read(text: &str) -> Result<Vec<RawPolygon>, ParseError> {
 
 /// A `serde_json` syntax error as a [`ParseError`] at its line and (character) column.
 fn json_error(text: &str, bom: usize, error: &serde_json::Error) -> ParseError {
-    let message = json_message(error);
     if error.is_eof() {
-        return ParseError::at(locate(text, text.len()), message);
+        return ParseError::at(locate(text, text.len()), json_message(error, None));
     }
     if error.line() == 0 {
-        return ParseError::new(message);
+        return ParseError::new(json_message(error, None));
     }
     // serde_json counts bytes from the start of the line (after the byte-order mark on line 1),
     // and its column is that of the last byte read, or 0 right after a newline.
@@ -111,6 +110,7 @@ fn json_error(text: &str, bom: usize, error: &serde_json::Error) -> ParseError {
     };
     let offset = line_start + error.column().saturating_sub(1);
     let location = locate(text, offset);
+    let message = json_message(error, text.as_bytes().get(offset).copied());
     ParseError::at(
         Location {
             line: error.line(),
@@ -120,8 +120,9 @@ fn json_error(text: &str, bom: usize, error: &serde_json::Error) -> ParseError {
     )
 }
 
-/// A `serde_json` syntax error in words, without its position: `invalid JSON: ...`.
-pub(super) fn json_message(error: &serde_json::Error) -> String {
+/// A `serde_json` syntax error in words, without its position: `invalid JSON: ...`; `found` is
+/// the byte where it was detected, if known (to name `NaN` and `Infinity`, which JSON lacks).
+pub(super) fn json_message(error: &serde_json::Error, found: Option<u8>) -> String {
     let full = error.to_string();
     let suffix = format!(" at line {} column {}", error.line(), error.column());
     let message = full.strip_suffix(&suffix).unwrap_or(&full);
@@ -129,7 +130,13 @@ pub(super) fn json_message(error: &serde_json::Error) -> String {
         Some(what) => format!("the input ends in the middle of {what}"),
         None => message.to_string(),
     };
-    format!("invalid JSON: {message}")
+    let hint = match found {
+        Some(b'N' | b'I') if !error.is_eof() => {
+            " (NaN and Infinity are not JSON numbers; coordinates must be finite)"
+        }
+        _ => "",
+    };
+    format!("invalid JSON: {message}{hint}")
 }
 
 /// What is wrong with a well-formed document, and the path to where (outermost first).

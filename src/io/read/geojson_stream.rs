@@ -86,7 +86,7 @@ pub fn stream<R: BufRead>(
     {
         reader.consume("\u{feff}".len());
     }
-    let position = Rc::new(Cell::new((1, 0)));
+    let position = Rc::new(Cell::new((1, 0, 0u8)));
     let counting = Counting {
         inner: reader,
         position: Rc::clone(&position),
@@ -108,7 +108,7 @@ pub fn stream<R: BufRead>(
             Err(e) if e.is_io() => return Err(Stop::Read(e.into())),
             Err(_) => {} // trailing characters: another value starts here
         }
-        let (line, column) = position.get();
+        let (line, column, _) = position.get();
         let start = Location {
             line,
             column: column.max(1),
@@ -127,7 +127,7 @@ pub fn stream<R: BufRead>(
                 return Err(match sink.output_error.take() {
                     Some(output) => Stop::Output(output),
                     None if e.is_io() => Stop::Read(e.into()),
-                    None => Stop::Parse(syntax_error(&e)),
+                    None => Stop::Parse(syntax_error(&e, position.get().2)),
                 })
             }
         }
@@ -177,7 +177,10 @@ pub fn read_line(line: &str, number: usize) -> Result<Vec<RawPolygon>, ParseErro
     let value: Value = serde_json::from_str(body).map_err(|e| {
         let before = line.len() - body.len();
         let column = line[..before].chars().count() + e.column();
-        ParseError::at(at(column), json_message(&e))
+        let found = (e.line() == 1 && e.column() > 0)
+            .then(|| body.as_bytes().get(e.column() - 1).copied())
+            .flatten();
+        ParseError::at(at(column), json_message(&e, found))
     })?;
     let mut polygons = Vec::new();
     top_level(&value, &mut polygons).map_err(|failure| {
@@ -202,9 +205,10 @@ pub fn looks_line_delimited(start: &[u8]) -> bool {
     !rest.iter().all(blank) && serde_json::from_slice::<de::IgnoredAny>(line).is_ok()
 }
 
-/// A `serde_json` syntax error at its line and column (columns in characters of the line read).
-fn syntax_error(error: &serde_json::Error) -> ParseError {
-    let message = json_message(error);
+/// A `serde_json` syntax error at its line and column (columns in characters of the line read);
+/// `last` is the last byte read, where `serde_json` found the error.
+fn syntax_error(error: &serde_json::Error, last: u8) -> ParseError {
+    let message = json_message(error, Some(last));
     if error.line() == 0 {
         return ParseError::new(message);
     }
@@ -217,17 +221,19 @@ fn syntax_error(error: &serde_json::Error) -> ParseError {
     )
 }
 
-/// A reader that remembers the line and column (in characters) of the last byte it delivered.
+/// A reader that remembers the line and column (in characters) of the last byte it delivered,
+/// and that byte.
 struct Counting<R> {
     inner: R,
-    position: Rc<Cell<(usize, usize)>>,
+    position: Rc<Cell<(usize, usize, u8)>>,
 }
 
 impl<R: Read> Read for Counting<R> {
     fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
         let n = self.inner.read(buf)?;
-        let (mut line, mut column) = self.position.get();
+        let (mut line, mut column, mut last) = self.position.get();
         for &byte in buf.get(..n).unwrap_or_default() {
+            last = byte;
             if byte == b'\n' {
                 line += 1;
                 column = 0;
@@ -235,7 +241,7 @@ impl<R: Read> Read for Counting<R> {
                 column += 1; // not a UTF-8 continuation byte: a new character
             }
         }
-        self.position.set((line, column));
+        self.position.set((line, column, last));
         Ok(n)
     }
 }
