@@ -36,7 +36,7 @@ pub enum NumberError {
     #[error("`{0}` has more than {MAX_DIGITS} significant digits")]
     TooManyDigits(String),
     /// An exponent far outside any usable range.
-    #[error("`{0}` has an exponent out of range")]
+    #[error("`{0}` has an exponent outside -{MAX_EXPONENT}..{MAX_EXPONENT}")]
     ExponentOutOfRange(String),
 }
 

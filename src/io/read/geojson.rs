@@ -674,7 +674,7 @@ mod tests {
         assert_eq!(bad("[7]"), "ring 0: expected a ring [[x, y], ...], found 7");
         assert_eq!(
             bad(r#"[[[0, 0], [1, 0], [0, 1e99999]]]"#),
-            "ring 0, position 2: `1e+99999` has an exponent out of range"
+            "ring 0, position 2: `1e+99999` has an exponent outside -1000..1000"
         );
         let multi = r#"{"type": "MultiPolygon", "coordinates": [[[[0, 0], [1, 0], [0, 1]]], [[[0, 0], [1, 0], [true, 1]]]]}"#;
         assert_eq!(

@@ -175,6 +175,12 @@ pub fn read_line(line: &str, number: usize) -> Result<Vec<RawPolygon>, ParseErro
         column: column.max(1),
     };
     let value: Value = serde_json::from_str(body).map_err(|e| {
+        if e.is_eof() {
+            // The line ends too soon: the column just after its last character.
+            let end = line.trim_end_matches(['\n', '\r']).chars().count() + 1;
+            let message = json_message(&e, None).replace("the input ends", "the line ends");
+            return ParseError::at(at(end), message);
+        }
         let before = line.len() - body.len();
         let column = line[..before].chars().count() + e.column();
         let found = (e.line() == 1 && e.column() > 0)

@@ -164,6 +164,11 @@ fn end_ring(ring: &mut Vec<[Decimal; 2]>, rings: &mut Vec<Vec<[Decimal; 2]>>) {
 /// Parses a vertex line without its comment; errors carry the byte offset in the line.
 fn parse_vertex(line: &str) -> Result<[Decimal; 2], (usize, String)> {
     let fields = split_fields(line)?;
+    // A field that is not a number is named before a wrong count (`POLYGON ((0 0, ...` read as
+    // a vertex list is better told by its first word than by its number of fields).
+    for (at, field) in fields.iter().take(2) {
+        parse_number(field).map_err(|m| (*at, m))?;
+    }
     match fields.as_slice() {
         [(x_at, x), (y_at, y)] => {
             let x = parse_number(x).map_err(|m| (*x_at, m))?;
@@ -349,7 +354,7 @@ mod tests {
         );
         assert_eq!(
             error("1 1e99999\n"),
-            "line 1, column 3: `1e99999` has an exponent out of range"
+            "line 1, column 3: `1e99999` has an exponent outside -1000..1000"
         );
         assert_eq!(
             error("0 0\n1 0\n---\n# c\n\n---\n1 1\n"),
