@@ -170,33 +170,6 @@ fn the_same_polygon_in_three_formats_gives_identical_json() {
 }
 
 #[test]
-fn every_invalid_fixture_exits_1_naming_the_problem_without_panicking() {
-    let expected = expected("invalid");
-    assert!(expected.len() >= 15);
-    for (name, message) in &expected {
-        let path = format!("fixtures/invalid/{name}");
-        let (code, out, err) = run(&["-a", "asano", &path], None);
-        assert_eq!(code, 1, "{name}: {err}");
-        assert!(
-            err.contains(message),
-            "{name}: stderr lacks {message:?}:\n{err}"
-        );
-        assert!(err.contains(&path), "{name}: the source is named: {err}");
-        assert!(!err.contains("panicked"), "{name}: {err}");
-        // The error is also in the JSON document, and no polygon is reported.
-        let doc = json(&out);
-        assert_eq!(doc["polygons"], serde_json::json!([]), "{name}");
-        assert!(
-            doc["errors"][0]["message"]
-                .as_str()
-                .unwrap()
-                .contains(message),
-            "{name}"
-        );
-    }
-}
-
-#[test]
 fn one_bad_input_does_not_stop_the_others() {
     let (code, out, err) = run(
         &[

@@ -3,6 +3,7 @@
 mod batch;
 mod cli;
 mod earcut;
+mod errors;
 mod formats;
 mod holes_dp;
 mod property;

@@ -180,7 +180,7 @@ impl Decimal {
         Some(if self.negative { -magnitude } else { magnitude })
     }
 
-    /// For messages: the plain notation when it is short (at most 24 characters), else the same
+    /// For messages: the plain notation when it is short (at most 16 characters), else the same
     /// exact value in scientific notation (`1e400`, `-1.25e-30`), so a message stays short.
     ///
     /// # Examples
@@ -192,7 +192,7 @@ impl Decimal {
     /// ```
     pub fn brief(&self) -> String {
         let plain = self.to_string();
-        if plain.len() <= 24 {
+        if plain.len() <= 16 {
             return plain;
         }
         let digits = self.mantissa.to_string();

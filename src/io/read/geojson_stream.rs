@@ -218,10 +218,13 @@ fn syntax_error(error: &serde_json::Error, last: u8) -> ParseError {
     if error.line() == 0 {
         return ParseError::new(message);
     }
+    // At the end of the input the column is the one after the last character, as in
+    // `geojson::read` (`serde_json` gives the last character's, or 0 after a newline).
+    let column = error.column() + usize::from(error.is_eof());
     ParseError::at(
         Location {
             line: error.line(),
-            column: error.column().max(1),
+            column: column.max(1),
         },
         message,
     )

@@ -1,0 +1,272 @@
+//! The error catalogue of the README, run against the real binary: every fixture of
+//! `fixtures/invalid/` gives exactly the message of its table row (from a file and from standard
+//! input), and the generated 100 MB inputs give the messages of the second table. The README is
+//! the single source of the expected messages, so it cannot drift from the tool.
+
+use crate::util::{fixtures, json, minitri};
+use serde_json::Value;
+use std::collections::BTreeSet;
+use std::path::Path;
+
+/// One row of a README table: its cells, code spans unquoted.
+type Row = Vec<String>;
+
+/// The rows of the first table after the heading `heading` in README.md (header and separator
+/// left out).
+fn readme_table(heading: &str) -> Vec<Row> {
+    let readme = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md"))
+        .expect("README.md");
+    let section = readme
+        .split_once(&format!("\n{heading}\n"))
+        .unwrap_or_else(|| panic!("README has no heading {heading:?}"))
+        .1;
+    section
+        .lines()
+        .skip_while(|l| !l.starts_with('|'))
+        .take_while(|l| l.starts_with('|'))
+        .skip(2)
+        .map(|line| {
+            let inner = line
+                .strip_prefix("| ")
+                .and_then(|l| l.strip_suffix(" |"))
+                .unwrap_or_else(|| panic!("not a table row: {line}"));
+            inner.split(" | ").map(unquote).collect()
+        })
+        .collect()
+}
+
+/// A table cell without its code-span quotes: `` `x` `` or ``` `` x `` ```.
+fn unquote(cell: &str) -> String {
+    if let Some(inner) = cell.strip_prefix("`` ").and_then(|c| c.strip_suffix(" ``")) {
+        inner.to_string()
+    } else if let Some(inner) = cell.strip_prefix('`').and_then(|c| c.strip_suffix('`')) {
+        assert!(!inner.contains('`'), "a backtick needs a double fence: {cell}");
+        inner.to_string()
+    } else {
+        cell.to_string()
+    }
+}
+
+/// The `--from` value for a fixture's extension.
+fn format_of(fixture: &str) -> &'static str {
+    match Path::new(fixture).extension().and_then(|e| e.to_str()) {
+        Some("wkt") => "wkt",
+        Some("geojson" | "ndjson") => "geojson",
+        Some("txt") => "vertices",
+        other => panic!("{fixture}: no format for extension {other:?}"),
+    }
+}
+
+/// Runs the binary with `args` and `stdin`: (exit code, stdout, stderr).
+fn run_bytes(args: &[&str], stdin: Option<Vec<u8>>) -> (i32, String, String) {
+    let mut cmd = minitri();
+    cmd.args(args);
+    if let Some(bytes) = stdin {
+        cmd.write_stdin(bytes);
+    }
+    let out = cmd.output().expect("run minitri");
+    (
+        out.status.code().expect("exit code"),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+/// The JSON error entry a message stands for: `polygon I: ` becomes the index.
+fn json_error(source: &str, message: &str) -> Value {
+    let polygon = message.strip_prefix("polygon ").and_then(|rest| {
+        let (index, text) = rest.split_once(": ")?;
+        Some((index.parse::<u64>().ok()?, text))
+    });
+    match polygon {
+        Some((index, text)) => {
+            serde_json::json!({"source": source, "index": index, "message": text})
+        }
+        None => serde_json::json!({"source": source, "message": message}),
+    }
+}
+
+#[test]
+fn every_row_of_the_readme_catalogue_is_exactly_what_the_binary_says() {
+    let rows = readme_table("### Error catalogue");
+    assert!(rows.len() >= 40, "{} rows", rows.len());
+    let listed: Vec<&str> = rows.iter().map(|row| row[1].as_str()).collect();
+    let unique: BTreeSet<&str> = listed.iter().copied().collect();
+    assert_eq!(unique.len(), listed.len(), "a fixture listed twice");
+    let on_disk: BTreeSet<String> = std::fs::read_dir(fixtures().join("invalid"))
+        .unwrap()
+        .map(|entry| entry.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    assert_eq!(
+        on_disk.iter().map(String::as_str).collect::<BTreeSet<_>>(),
+        unique,
+        "every file of fixtures/invalid/ has a row, and every row a file"
+    );
+    for row in &rows {
+        let [class, fixture, message] = row.as_slice() else {
+            panic!("a row needs 3 cells: {row:?}");
+        };
+        let path = format!("fixtures/invalid/{fixture}");
+        let (code, out, err) = run_bytes(&[&path], None);
+        assert_eq!(code, 1, "{class}: {err}");
+        assert_eq!(err, format!("minitri: {path}: {message}\n"), "{class}");
+        // The same error under `errors`, and nothing else there.
+        let doc = json(&out);
+        assert_eq!(doc["errors"], serde_json::json!([json_error(&path, message)]), "{class}");
+        // From standard input: the same line, the source named `-`.
+        let bytes = std::fs::read(fixtures().join("invalid").join(fixture)).unwrap();
+        let (code, _, err) = run_bytes(&["--from", format_of(fixture)], Some(bytes));
+        assert_eq!(code, 1, "{class} (standard input): {err}");
+        assert_eq!(err, format!("minitri: -: {message}\n"), "{class} (standard input)");
+    }
+}
+
+#[test]
+fn empty_standard_input_and_auto_detected_formats_are_reported_alike() {
+    for (args, stdin) in [
+        (&[][..], ""),
+        (&[][..], " \n\t\n"),
+        (&[][..], "# only a comment\n"),
+        (&["--from", "wkt"][..], ""),
+        (&["--from", "geojson"][..], "\n"),
+        (&["--from", "vertices"][..], ""),
+    ] {
+        let (code, out, err) = run_bytes(args, Some(stdin.as_bytes().to_vec()));
+        assert_eq!(code, 1, "{args:?} {stdin:?}");
+        assert_eq!(
+            err, "minitri: -: empty input: no polygon found\n",
+            "{args:?} {stdin:?}"
+        );
+        assert_eq!(json(&out)["polygons"], serde_json::json!([]));
+    }
+    // Binary data on standard input, whatever the format guessed from its first byte.
+    let (code, _, err) = run_bytes(&[], Some(b"\x7fELF\x02\x01\x01\x00\x00".to_vec()));
+    assert_eq!(code, 1);
+    assert_eq!(
+        err,
+        "minitri: -: line 1, column 8: binary data, not text (a NUL byte)\n"
+    );
+}
+
+#[test]
+fn a_failed_input_writes_no_output_file_in_any_format() {
+    let dir = tempfile::tempdir().unwrap();
+    for to in ["json", "svg", "geojson", "wkt"] {
+        for fixture in ["spike.wkt", "unclosed.wkt", "binary.wkt", "empty.wkt"] {
+            let target = dir.path().join(format!("out.{to}"));
+            let path = format!("fixtures/invalid/{fixture}");
+            let (code, _, err) = run_bytes(
+                &["--to", to, "-o", target.to_str().unwrap(), &path],
+                None,
+            );
+            assert_eq!(code, 1, "{to} {fixture}");
+            assert!(!target.exists(), "{to} {fixture}: no file");
+            assert!(
+                err.ends_with(&format!(
+                    "minitri: nothing triangulated; {} not written\n",
+                    target.display()
+                )),
+                "{to} {fixture}: {err}"
+            );
+            // An existing file of that name is left as it was.
+            std::fs::write(&target, "previous").unwrap();
+            let (code, _, _) = run_bytes(
+                &["--to", to, "-o", target.to_str().unwrap(), &path],
+                None,
+            );
+            assert_eq!(code, 1);
+            assert_eq!(std::fs::read_to_string(&target).unwrap(), "previous");
+            std::fs::remove_file(&target).unwrap();
+        }
+    }
+    assert_eq!(
+        std::fs::read_dir(dir.path()).unwrap().count(),
+        0,
+        "no temporary file left behind"
+    );
+    // A feature collection with one good feature and one bad: written, the bad one listed.
+    let target = dir.path().join("mixed.json");
+    let path = "fixtures/invalid/collection_linestring.geojson";
+    let (code, _, _) = run_bytes(&["-o", target.to_str().unwrap(), path], None);
+    assert_eq!(code, 1);
+    let doc: Value = serde_json::from_str(&std::fs::read_to_string(&target).unwrap()).unwrap();
+    assert_eq!(doc["polygons"][0]["triangle_count"], 2, "the square");
+    assert_eq!(doc["errors"].as_array().unwrap().len(), 1);
+}
+
+#[test]
+fn a_failed_input_of_a_batch_gets_no_output_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let (code, _, err) = run_bytes(
+        &[
+            "fixtures/invalid/spike.wkt",
+            "fixtures/invalid/binary.geojson",
+            "fixtures/invalid/line_point.ndjson",
+            "fixtures/valid/u_shape.wkt",
+            "-o",
+            out.to_str().unwrap(),
+        ],
+        None,
+    );
+    assert_eq!(code, 1, "{err}");
+    let mut written: Vec<String> = std::fs::read_dir(&out)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    written.sort();
+    // line_point.ndjson has a good line: written, with its bad line under `errors`.
+    assert_eq!(written, ["line_point.json", "u_shape.json"]);
+}
+
+/// A file of `size` bytes: `head`, then `unit` repeated, then `tail`, written in pieces.
+fn generate(path: &Path, head: &str, unit: &str, tail: &str, size: usize) {
+    use std::io::Write;
+    let mut file = std::io::BufWriter::new(std::fs::File::create(path).unwrap());
+    file.write_all(head.as_bytes()).unwrap();
+    let block = unit.repeat((1 << 16) / unit.len());
+    let mut written = head.len() + tail.len();
+    while written + block.len() <= size {
+        file.write_all(block.as_bytes()).unwrap();
+        written += block.len();
+    }
+    while written + unit.len() <= size {
+        file.write_all(unit.as_bytes()).unwrap();
+        written += unit.len();
+    }
+    file.write_all(tail.as_bytes()).unwrap();
+}
+
+#[test]
+fn hundred_megabyte_single_lines_are_rejected_with_a_short_message() {
+    const SIZE: usize = 100_000_000;
+    // (file name as in the README table, head, repeated unit, tail)
+    let inputs = [
+        ("number.wkt", "POLYGON ((0 ", "1", "))"),
+        ("number.txt", "0 ", "1", "\n"),
+        ("number.geojson", r#"{"type":"Polygon","coordinates":[[[0,"#, "1", "]]]}"),
+        ("coordinates.wkt", "POLYGON ((", "0 0, ", ""),
+        ("coordinates.txt", "", "0 0, ", ""),
+        ("garbage.wkt", "POLYGON ((0 0, ", "x", ""),
+        ("garbage.txt", "", "x", ""),
+        ("garbage.geojson", r#"{"type":""#, "x", ""),
+    ];
+    let table = readme_table("### Inputs too large to store");
+    assert_eq!(table.len(), inputs.len(), "one README row per generated input");
+    let dir = tempfile::tempdir().unwrap();
+    for (name, head, unit, tail) in inputs {
+        let row = table
+            .iter()
+            .find(|row| row[0].starts_with(&format!("{name}: ")))
+            .unwrap_or_else(|| panic!("{name}: no README row"));
+        let path = dir.path().join(name);
+        generate(&path, head, unit, tail, SIZE);
+        assert_eq!(std::fs::metadata(&path).unwrap().len() as usize, SIZE);
+        let path = path.to_str().unwrap();
+        let (code, out, err) = run_bytes(&[path], None);
+        std::fs::remove_file(path).unwrap();
+        assert_eq!(code, 1, "{name}");
+        assert_eq!(err, format!("minitri: {path}: {}\n", row[1]), "{name}");
+        assert!(out.len() < 1000, "{name}: a short document");
+    }
+}
