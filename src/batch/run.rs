@@ -449,7 +449,14 @@ fn read_input(input: &Input, from: Option<Format>, chunker: &mut Chunker) -> io:
         }
         return stream_geojson(&source, reader, chunker);
     }
+    // Room for the whole file at once: growing by doubling would hold two copies at a time.
+    // (A size the allocator refuses is not reserved: reading then fails or succeeds on its own.)
     let mut bytes = Vec::new();
+    if !input.is_stdin() {
+        if let Ok(metadata) = std::fs::metadata(&input.path) {
+            let _ = bytes.try_reserve_exact(usize::try_from(metadata.len()).unwrap_or(0) + 1);
+        }
+    }
     if let Err(e) = reader.read_to_end(&mut bytes) {
         return failed(chunker, Error::Read(e.to_string()));
     }

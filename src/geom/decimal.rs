@@ -61,13 +61,13 @@ impl Decimal {
     /// # Ok::<(), minitri::NumberError>(())
     /// ```
     pub fn parse(text: &str) -> Result<Decimal, NumberError> {
-        let invalid = || NumberError::Invalid(text.to_string());
+        let invalid = || NumberError::Invalid(literal(text));
         // Only a short text can name a non-finite value (no copy of a long literal is made).
         if text.len() <= "-infinity".len() {
             let lower = text.to_ascii_lowercase();
             let unsigned = lower.trim_start_matches(['+', '-']);
             if matches!(unsigned, "nan" | "inf" | "infinity") {
-                return Err(NumberError::NonFinite(text.to_string()));
+                return Err(NumberError::NonFinite(literal(text)));
             }
         }
         let bytes = text.as_bytes();
@@ -104,7 +104,7 @@ impl Decimal {
                         significant += 1;
                         if significant > MAX_DIGITS {
                             // Rejected at once: a long literal is never read to its end.
-                            return Err(NumberError::TooManyDigits(text.to_string()));
+                            return Err(NumberError::TooManyDigits(literal(text)));
                         }
                         for _ in 0..zeros {
                             mantissa *= 10;
@@ -136,7 +136,7 @@ impl Decimal {
             }
             let trimmed = body.trim_start_matches('0');
             if trimmed.len() > 6 {
-                return Err(NumberError::ExponentOutOfRange(text.to_string()));
+                return Err(NumberError::ExponentOutOfRange(literal(text)));
             }
             let magnitude: i64 = if trimmed.is_empty() {
                 0
@@ -154,7 +154,7 @@ impl Decimal {
         }
         exponent = exponent - fraction_digits + zeros;
         if exponent.abs() > MAX_EXPONENT {
-            return Err(NumberError::ExponentOutOfRange(text.to_string()));
+            return Err(NumberError::ExponentOutOfRange(literal(text)));
         }
         Ok(Decimal {
             negative,
@@ -208,6 +208,18 @@ impl Decimal {
     pub fn to_f64(&self) -> f64 {
         // Formatting then parsing gives the correctly rounded value.
         self.to_string().parse().unwrap_or(0.0)
+    }
+}
+
+/// Longest literal kept in a [`NumberError`], in characters (then `...`): a rejected 100 MB
+/// literal is not copied.
+const MAX_LITERAL_CHARS: usize = 80;
+
+/// `text` for a [`NumberError`]: at most [`MAX_LITERAL_CHARS`] characters, then `...`.
+fn literal(text: &str) -> String {
+    match text.char_indices().nth(MAX_LITERAL_CHARS) {
+        Some((end, _)) => format!("{}...", &text[..end]),
+        None => text.to_string(),
     }
 }
 
