@@ -40,7 +40,10 @@ fn unquote(cell: &str) -> String {
     if let Some(inner) = cell.strip_prefix("`` ").and_then(|c| c.strip_suffix(" ``")) {
         inner.to_string()
     } else if let Some(inner) = cell.strip_prefix('`').and_then(|c| c.strip_suffix('`')) {
-        assert!(!inner.contains('`'), "a backtick needs a double fence: {cell}");
+        assert!(
+            !inner.contains('`'),
+            "a backtick needs a double fence: {cell}"
+        );
         inner.to_string()
     } else {
         cell.to_string()
@@ -112,12 +115,20 @@ fn every_row_of_the_readme_catalogue_is_exactly_what_the_binary_says() {
         assert_eq!(err, format!("minitri: {path}: {message}\n"), "{class}");
         // The same error under `errors`, and nothing else there.
         let doc = json(&out);
-        assert_eq!(doc["errors"], serde_json::json!([json_error(&path, message)]), "{class}");
+        assert_eq!(
+            doc["errors"],
+            serde_json::json!([json_error(&path, message)]),
+            "{class}"
+        );
         // From standard input: the same line, the source named `-`.
         let bytes = std::fs::read(fixtures().join("invalid").join(fixture)).unwrap();
         let (code, _, err) = run_bytes(&["--from", format_of(fixture)], Some(bytes));
         assert_eq!(code, 1, "{class} (standard input): {err}");
-        assert_eq!(err, format!("minitri: -: {message}\n"), "{class} (standard input)");
+        assert_eq!(
+            err,
+            format!("minitri: -: {message}\n"),
+            "{class} (standard input)"
+        );
     }
 }
 
@@ -155,10 +166,8 @@ fn a_failed_input_writes_no_output_file_in_any_format() {
         for fixture in ["spike.wkt", "unclosed.wkt", "binary.wkt", "empty.wkt"] {
             let target = dir.path().join(format!("out.{to}"));
             let path = format!("fixtures/invalid/{fixture}");
-            let (code, _, err) = run_bytes(
-                &["--to", to, "-o", target.to_str().unwrap(), &path],
-                None,
-            );
+            let (code, _, err) =
+                run_bytes(&["--to", to, "-o", target.to_str().unwrap(), &path], None);
             assert_eq!(code, 1, "{to} {fixture}");
             assert!(!target.exists(), "{to} {fixture}: no file");
             assert!(
@@ -170,10 +179,8 @@ fn a_failed_input_writes_no_output_file_in_any_format() {
             );
             // An existing file of that name is left as it was.
             std::fs::write(&target, "previous").unwrap();
-            let (code, _, _) = run_bytes(
-                &["--to", to, "-o", target.to_str().unwrap(), &path],
-                None,
-            );
+            let (code, _, _) =
+                run_bytes(&["--to", to, "-o", target.to_str().unwrap(), &path], None);
             assert_eq!(code, 1);
             assert_eq!(std::fs::read_to_string(&target).unwrap(), "previous");
             std::fs::remove_file(&target).unwrap();
@@ -244,7 +251,12 @@ fn hundred_megabyte_single_lines_are_rejected_with_a_short_message() {
     let inputs = [
         ("number.wkt", "POLYGON ((0 ", "1", "))"),
         ("number.txt", "0 ", "1", "\n"),
-        ("number.geojson", r#"{"type":"Polygon","coordinates":[[[0,"#, "1", "]]]}"),
+        (
+            "number.geojson",
+            r#"{"type":"Polygon","coordinates":[[[0,"#,
+            "1",
+            "]]]}",
+        ),
         ("coordinates.wkt", "POLYGON ((", "0 0, ", ""),
         ("coordinates.txt", "", "0 0, ", ""),
         ("garbage.wkt", "POLYGON ((0 0, ", "x", ""),
@@ -252,7 +264,11 @@ fn hundred_megabyte_single_lines_are_rejected_with_a_short_message() {
         ("garbage.geojson", r#"{"type":""#, "x", ""),
     ];
     let table = readme_table("### Inputs too large to store");
-    assert_eq!(table.len(), inputs.len(), "one README row per generated input");
+    assert_eq!(
+        table.len(),
+        inputs.len(),
+        "one README row per generated input"
+    );
     let dir = tempfile::tempdir().unwrap();
     for (name, head, unit, tail) in inputs {
         let row = table

@@ -278,6 +278,19 @@ mod tests {
         assert_eq!(d("-2.5").scaled(3), Some(-2500));
         assert_eq!(d("0.25").scaled(1), None, "not an integer on that grid");
         assert_eq!(d("1e200").scaled(0), None, "overflow is detected");
+        assert_eq!(d("0").scaled(400), Some(0), "zero fits any grid");
+    }
+
+    #[test]
+    fn brief_is_plain_when_short_and_scientific_when_long() {
+        assert_eq!(d("-0.125").brief(), "-0.125");
+        assert_eq!(d("1e15").brief(), "1000000000000000");
+        assert_eq!(d("1e16").brief(), "1e16");
+        assert_eq!(d("-1.5e-30").brief(), "-1.5e-30");
+        assert_eq!(
+            d("123456789012345678901234567890").brief(),
+            "1.2345678901234567890123456789e29"
+        );
     }
 
     #[test]
@@ -308,6 +321,24 @@ mod tests {
             Decimal::parse("123456789012345678901234567890123456789"),
             Err(NumberError::TooManyDigits(_))
         ));
+        // A long literal is rejected at its 39th significant digit, and quoted short.
+        let long = "7".repeat(1_000_000);
+        let error = Decimal::parse(&long).unwrap_err().to_string();
+        assert_eq!(
+            error,
+            format!(
+                "`{}...` has more than 38 significant digits",
+                "7".repeat(80)
+            )
+        );
+        let zeros = format!("1{}", "0".repeat(1_000_000));
+        assert_eq!(
+            Decimal::parse(&zeros),
+            Err(NumberError::ExponentOutOfRange(format!(
+                "1{}...",
+                "0".repeat(79)
+            )))
+        );
         // Trailing zeros do not count as significant digits.
         assert_eq!(
             d("1000000000000000000000000000000000000000000")

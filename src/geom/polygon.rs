@@ -436,12 +436,7 @@ fn to_grid(raw: &RawPolygon) -> Result<(Vec<Point>, Grid), InvalidPolygon> {
     for axis in 0..2 {
         let span = top[axis].checked_sub(origin[axis]);
         if span.is_none_or(|s| s > i128::from(MAX_COORD)) {
-            let value = |id: usize| {
-                all()
-                    .nth(id)
-                    .map(|p| p[axis].brief())
-                    .unwrap_or_default()
-            };
+            let value = |id: usize| all().nth(id).map(|p| p[axis].brief()).unwrap_or_default();
             return Err(too_large(format!(
                 "the {name} coordinates range from {} ({}) to {} ({}), more than 2^62 units of {unit} (the finest decimal place used)",
                 value(lowest[axis]),

@@ -700,7 +700,7 @@ mod tests {
         );
         assert_eq!(
             error("[[[0, 0], [1, 0], [0, NaN]]]"),
-            "line 1, column 23: invalid JSON: expected value"
+            "line 1, column 23: invalid JSON: expected value (NaN and Infinity are not JSON numbers; coordinates must be finite)"
         );
         assert_eq!(
             error("[[[0, 0], [1, 0], [0, 1],]]"),

@@ -528,6 +528,17 @@ mod tests {
             stop.is_some_and(|s| s.contains("the input ends in the middle of")),
             "truncated"
         );
+        // Cut short: located just after the last character, streamed and line by line alike.
+        assert_eq!(
+            events(r#"{"type": "Polygon""#).1.as_deref(),
+            Some("line 1, column 19: invalid JSON: the input ends in the middle of an object")
+        );
+        assert_eq!(
+            read_line("{\"type\": \"Polygon\"\n", 7)
+                .unwrap_err()
+                .to_string(),
+            "line 7, column 19: invalid JSON: the line ends in the middle of an object"
+        );
         assert_eq!(
             events(" \n ").1.as_deref(),
             Some("empty input: no polygon found")

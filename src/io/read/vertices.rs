@@ -175,7 +175,10 @@ fn parse_vertex(line: &str) -> Result<[Decimal; 2], (usize, String)> {
             let y = parse_number(y).map_err(|m| (*y_at, m))?;
             Ok([x, y])
         }
-        [(at, _)] => Err((*at, "expected 2 numbers `x y` or `x,y`, found 1 field".to_string())),
+        [(at, _)] => Err((
+            *at,
+            "expected 2 numbers `x y` or `x,y`, found 1 field".to_string(),
+        )),
         _ => {
             let (at, third) = fields.get(2).copied().unwrap_or_default();
             let message = format!(
@@ -383,6 +386,12 @@ mod tests {
         let message = error(&long);
         assert!(message.starts_with("line 1, column 3: `9999"), "{message}");
         assert!(message.len() < 120, "{message}");
+        // A line of a million vertices is split no further than its third field.
+        let fields = "0 0, ".repeat(1_000_000);
+        assert_eq!(
+            error(&fields),
+            "line 1, column 6: expected 2 numbers `x y` or `x,y`, found a third field \"0\""
+        );
         let binary = "\u{0}\u{1}\u{7f} 1\n";
         assert_eq!(
             error(binary),

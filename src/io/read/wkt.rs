@@ -534,10 +534,24 @@ mod tests {
             "POLYGON ZM ((0 0 5 1, 1 0 6 2, 0 1 7 NaN))",
             "POLYGONZ ((0 0 5, 1 0 6, 0 1 7))",
             "polygonzm((0 0 5 1,1 0 6 2,0 1 7 3))",
-            "POLYGON ((0 0 1, 1 0, 0 1 2 3))",
+            "POLYGON ((0 0 1, 1 0 2, 0 1 3))",
         ] {
             assert_eq!(read(text).unwrap(), plain, "{text}");
         }
+        // Points of one polygon with different numbers of coordinates: most likely a missing
+        // comma, which would otherwise swallow a point silently. Each polygon decides alone.
+        assert_eq!(
+            read("POLYGON ((0 0, 4 0 4 4, 0 4))").unwrap_err().to_string(),
+            "line 1, column 16: this point has 4 coordinates but the polygon's first point has 2 (a missing comma?)"
+        );
+        assert_eq!(
+            read("POLYGON ((0 0 1, 1 0, 0 1 2 3))")
+                .unwrap_err()
+                .to_string(),
+            "line 1, column 18: this point has 2 coordinates but the polygon's first point has 3"
+        );
+        let mixed = "MULTIPOLYGON (((0 0, 1 0, 0 1)), ((0 0 9, 1 0 9, 0 1 9)))";
+        assert_eq!(read(mixed).unwrap().len(), 2);
     }
 
     #[test]
