@@ -100,7 +100,11 @@ fn run() -> anyhow::Result<ExitCode> {
                 })
                 .with_context(|| format!("cannot write {}", path.display()))?;
             progress.bar.finish_and_clear();
-            if report.tally.solved == 0 {
+            if file.is_direct() {
+                // A device or a pipe: written as it went, like standard output.
+                file.commit()
+                    .with_context(|| format!("cannot write {}", path.display()))?;
+            } else if report.tally.solved == 0 {
                 eprintln!(
                     "minitri: nothing triangulated; {} not written",
                     path.display()
@@ -117,10 +121,12 @@ fn run() -> anyhow::Result<ExitCode> {
             report.tally
         }
         (None, None) => {
-            let report = pool.install(|| {
-                let stdout = io::BufWriter::new(io::stdout().lock());
-                run_document(&inputs, &settings, config.to.sink(stdout)?, &progress)
-            })?;
+            let report = pool
+                .install(|| {
+                    let stdout = io::BufWriter::new(io::stdout().lock());
+                    run_document(&inputs, &settings, config.to.sink(stdout)?, &progress)
+                })
+                .context("cannot write to standard output")?;
             report.tally
         }
     };

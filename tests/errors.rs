@@ -286,3 +286,29 @@ fn hundred_megabyte_single_lines_are_rejected_with_a_short_message() {
         assert!(out.len() < 1000, "{name}: a short document");
     }
 }
+
+#[cfg(unix)]
+#[test]
+fn output_into_a_pipe_is_written_as_it_goes_and_the_pipe_stays() {
+    use std::os::unix::fs::FileTypeExt;
+    let dir = tempfile::tempdir().unwrap();
+    let fifo = dir.path().join("pipe");
+    let made = std::process::Command::new("mkfifo").arg(&fifo).status();
+    if !made.is_ok_and(|s| s.success()) {
+        return; // no mkfifo here: nothing to check
+    }
+    let reader = {
+        let fifo = fifo.clone();
+        std::thread::spawn(move || std::fs::read_to_string(fifo).unwrap())
+    };
+    let (code, _, err) = run_bytes(
+        &["-o", fifo.to_str().unwrap(), "fixtures/valid/u_shape.wkt"],
+        None,
+    );
+    assert_eq!(code, 0, "{err}");
+    // Checked before waiting for the reader, which would wait forever on a replaced pipe.
+    let kind = std::fs::symlink_metadata(&fifo).unwrap().file_type();
+    assert!(kind.is_fifo(), "still a pipe, not replaced by a file");
+    let doc = json(&reader.join().unwrap());
+    assert_eq!(doc["polygons"][0]["triangle_count"], 5);
+}

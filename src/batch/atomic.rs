@@ -6,6 +6,11 @@
 //! `.NAME.minitri-PID-K.tmp` lives beside the target while it is written; it is removed when the
 //! output is abandoned (an error, or [`AtomicFile`] dropped without [`AtomicFile::commit`]); only
 //! a process killed outright can leave one behind (a rename is atomic on POSIX file systems).
+//!
+//! Two exceptions: a target that is a device or a pipe (`/dev/stdout`, a FIFO) is written
+//! directly, like standard output (there is no file to replace; renaming over it would replace
+//! the device node); a target that is a symbolic link has the file it points to replaced, the
+//! link itself stays.
 
 use std::fs::File;
 use std::io::{self, BufWriter, Write};
@@ -29,6 +34,28 @@ impl AtomicFile {
     /// # Errors
     /// When the temporary file cannot be created.
     pub fn create(target: &Path) -> io::Result<AtomicFile> {
+        // A device or a pipe (`/dev/stdout`, `/dev/null`, a FIFO) is written directly, as
+        // standard output is: renaming a file over it would replace the device itself.
+        if std::fs::metadata(target).is_ok_and(|m| !m.is_file() && !m.is_dir()) {
+            let file = std::fs::OpenOptions::new().write(true).open(target)?;
+            return Ok(AtomicFile {
+                target: target.to_path_buf(),
+                temp: PathBuf::new(),
+                file: Some(BufWriter::new(file)),
+            });
+        }
+        // A symbolic link: the file it points to is replaced, and the link stays.
+        let resolved;
+        let target = if std::fs::symlink_metadata(target).is_ok_and(|m| m.is_symlink()) {
+            // (A dangling link: the file it names, relative to the link's directory.)
+            resolved = std::fs::canonicalize(target).or_else(|_| {
+                let named = std::fs::read_link(target)?;
+                Ok::<_, io::Error>(target.parent().unwrap_or(Path::new("")).join(named))
+            })?;
+            resolved.as_path()
+        } else {
+            target
+        };
         let dir = target
             .parent()
             .filter(|d| !d.as_os_str().is_empty())
@@ -47,13 +74,22 @@ impl AtomicFile {
         })
     }
 
+    /// Is the target a device or a pipe, written directly (so nothing can be held back)?
+    pub fn is_direct(&self) -> bool {
+        self.temp.as_os_str().is_empty()
+    }
+
     /// Flushes, syncs and renames the temporary file over the target.
     ///
     /// # Errors
     /// Any I/O error; the temporary file is then removed and the target left as it was.
     pub fn commit(mut self) -> io::Result<()> {
         let file = self.file.take().ok_or_else(closed)?;
-        file.into_inner().map_err(|e| e.into_error())?.sync_all()?;
+        let file = file.into_inner().map_err(|e| e.into_error())?;
+        if self.is_direct() {
+            return Ok(()); // a device or a pipe, written directly
+        }
+        file.sync_all()?;
         std::fs::rename(&self.temp, &self.target)?;
         self.temp = PathBuf::new(); // nothing left to remove
         Ok(())
@@ -108,4 +144,52 @@ pub fn write_atomically(
     let mut file = AtomicFile::create(path)?;
     body(&mut file)?;
     file.commit()
+}
+
+#[cfg(all(test, unix))]
+mod tests {
+    use super::*;
+    use std::os::unix::fs::{symlink, FileTypeExt};
+
+    #[test]
+    fn a_link_keeps_pointing_to_the_replaced_file() {
+        let dir = tempfile::tempdir().unwrap();
+        let real = dir.path().join("real.json");
+        let link = dir.path().join("link.json");
+        std::fs::write(&real, "old").unwrap();
+        symlink("real.json", &link).unwrap();
+        write_atomically(&link, |out| out.write_all(b"new")).unwrap();
+        assert!(std::fs::symlink_metadata(&link).unwrap().is_symlink());
+        assert_eq!(std::fs::read_to_string(&real).unwrap(), "new");
+        // A dangling link: the file it names is created.
+        let dangling = dir.path().join("dangling.json");
+        symlink("made.json", &dangling).unwrap();
+        write_atomically(&dangling, |out| out.write_all(b"made")).unwrap();
+        assert!(std::fs::symlink_metadata(&dangling).unwrap().is_symlink());
+        assert_eq!(
+            std::fs::read_to_string(dir.path().join("made.json")).unwrap(),
+            "made"
+        );
+        assert_eq!(
+            std::fs::read_dir(dir.path()).unwrap().count(),
+            4,
+            "no temporary file"
+        );
+    }
+
+    #[test]
+    fn a_device_is_written_directly_and_stays_a_device() {
+        let null = Path::new("/dev/null");
+        if !std::fs::metadata(null).is_ok_and(|m| m.file_type().is_char_device()) {
+            return; // no /dev/null here: nothing to check
+        }
+        let mut file = AtomicFile::create(null).unwrap();
+        assert!(file.is_direct());
+        file.write_all(b"discarded").unwrap();
+        file.commit().unwrap();
+        assert!(std::fs::metadata(null)
+            .unwrap()
+            .file_type()
+            .is_char_device());
+    }
 }
