@@ -27,7 +27,7 @@
 //! Complexity: linear in the input size; memory proportional to the largest feature.
 
 use super::geojson::{collection_feature, json_message, top_level};
-use super::{Location, ParseError, RawPolygon};
+use super::{locate, Location, ParseError, RawPolygon};
 use serde::de::{self, DeserializeSeed, MapAccess, SeqAccess, Visitor};
 use serde::Deserialize;
 use serde_json::{Map, Value};
@@ -127,7 +127,7 @@ pub fn stream<R: BufRead>(
                 return Err(match sink.output_error.take() {
                     Some(output) => Stop::Output(output),
                     None if e.is_io() => Stop::Read(e.into()),
-                    None => Stop::Parse(syntax_error(&e, position.get().2)),
+                    None => Stop::Parse(syntax_error(&e, position.get())),
                 })
             }
         }
@@ -181,8 +181,9 @@ pub fn read_line(line: &str, number: usize) -> Result<Vec<RawPolygon>, ParseErro
             let message = json_message(&e, None).replace("the input ends", "the line ends");
             return ParseError::at(at(end), message);
         }
+        // `serde_json` counts bytes; the column is in characters.
         let before = line.len() - body.len();
-        let column = line[..before].chars().count() + e.column();
+        let column = locate(line, before + e.column().saturating_sub(1)).column;
         let found = (e.line() == 1 && e.column() > 0)
             .then(|| body.as_bytes().get(e.column() - 1).copied())
             .flatten();
@@ -211,19 +212,19 @@ pub fn looks_line_delimited(start: &[u8]) -> bool {
     !rest.iter().all(blank) && serde_json::from_slice::<de::IgnoredAny>(line).is_ok()
 }
 
-/// A `serde_json` syntax error at its line and column (columns in characters of the line read);
-/// `last` is the last byte read, where `serde_json` found the error.
-fn syntax_error(error: &serde_json::Error, last: u8) -> ParseError {
-    let message = json_message(error, Some(last));
+/// A `serde_json` syntax error at the line and column (in characters) of `last`, the position
+/// and the value of the last byte read, where `serde_json` (reading byte by byte) found it.
+fn syntax_error(error: &serde_json::Error, last: (usize, usize, u8)) -> ParseError {
+    let (line, column, byte) = last;
+    let message = json_message(error, Some(byte));
     if error.line() == 0 {
         return ParseError::new(message);
     }
-    // At the end of the input the column is the one after the last character, as in
-    // `geojson::read` (`serde_json` gives the last character's, or 0 after a newline).
-    let column = error.column() + usize::from(error.is_eof());
+    // At the end of the input: the column after the last character (as in `geojson::read`).
+    let column = column + usize::from(error.is_eof());
     ParseError::at(
         Location {
-            line: error.line(),
+            line,
             column: column.max(1),
         },
         message,
@@ -528,6 +529,12 @@ mod tests {
             stop.is_some_and(|s| s.contains("the input ends in the middle of")),
             "truncated"
         );
+        // Columns count characters, not bytes: `x` is the 15th character (the 19th byte).
+        let accents = r#"{"a": "éééé", x}"#;
+        let expected = "line 1, column 15: invalid JSON: key must be a string";
+        assert_eq!(events(accents).1.as_deref(), Some(expected));
+        assert_eq!(read_line(accents, 1).unwrap_err().to_string(), expected);
+        assert_eq!(geojson::read(accents).unwrap_err().to_string(), expected);
         // Cut short: located just after the last character, streamed and line by line alike.
         assert_eq!(
             events(r#"{"type": "Polygon""#).1.as_deref(),
