@@ -31,7 +31,8 @@ use super::{locate, Location, ParseError, RawPolygon};
 use serde::de::{self, DeserializeSeed, MapAccess, SeqAccess, Visitor};
 use serde::Deserialize;
 use serde_json::{Map, Value};
-use std::cell::Cell;
+use std::cell::RefCell;
+use std::collections::VecDeque;
 use std::fmt;
 use std::io::{self, BufRead, Read};
 use std::rc::Rc;
@@ -86,7 +87,7 @@ pub fn stream<R: BufRead>(
     {
         reader.consume("\u{feff}".len());
     }
-    let position = Rc::new(Cell::new((1, 0, 0u8)));
+    let position = Rc::new(RefCell::new(Position::default()));
     let counting = Counting {
         inner: reader,
         position: Rc::clone(&position),
@@ -108,7 +109,10 @@ pub fn stream<R: BufRead>(
             Err(e) if e.is_io() => return Err(Stop::Read(e.into())),
             Err(_) => {} // trailing characters: another value starts here
         }
-        let (line, column, _) = position.get();
+        let (line, column) = {
+            let p = position.borrow();
+            (p.line, p.chars)
+        };
         let start = Location {
             line,
             column: column.max(1),
@@ -127,7 +131,7 @@ pub fn stream<R: BufRead>(
                 return Err(match sink.output_error.take() {
                     Some(output) => Stop::Output(output),
                     None if e.is_io() => Stop::Read(e.into()),
-                    None => Stop::Parse(syntax_error(&e, position.get())),
+                    None => Stop::Parse(syntax_error(&e, &position.borrow())),
                 })
             }
         }
@@ -212,46 +216,127 @@ pub fn looks_line_delimited(start: &[u8]) -> bool {
     !rest.iter().all(blank) && serde_json::from_slice::<de::IgnoredAny>(line).is_ok()
 }
 
-/// A `serde_json` syntax error at the line and column (in characters) of `last`, the position
-/// and the value of the last byte read, where `serde_json` (reading byte by byte) found it.
-fn syntax_error(error: &serde_json::Error, last: (usize, usize, u8)) -> ParseError {
-    let (line, column, byte) = last;
-    let message = json_message(error, Some(byte));
+/// A `serde_json` syntax error at its line and column, the column in characters (`serde_json`
+/// counts bytes; `read` says how many characters they are, when it still knows).
+fn syntax_error(error: &serde_json::Error, read: &Position) -> ParseError {
+    let found = read.byte_at(error.line(), error.column());
+    let message = json_message(error, found);
     if error.line() == 0 {
         return ParseError::new(message);
     }
+    let column = read
+        .char_column(error.line(), error.column())
+        .unwrap_or(error.column());
     // At the end of the input: the column after the last character (as in `geojson::read`).
     let column = column + usize::from(error.is_eof());
     ParseError::at(
         Location {
-            line,
+            line: error.line(),
             column: column.max(1),
         },
         message,
     )
 }
 
-/// A reader that remembers the line and column (in characters) of the last byte it delivered,
-/// and that byte.
+/// How many of the last bytes read [`Position`] keeps.
+const RECENT: usize = 256;
+
+/// What a [`Counting`] reader has delivered: the position of the last byte (line from 1; column
+/// in bytes and in characters, 0 right after a newline), the previous line's length, and the
+/// last [`RECENT`] bytes. `serde_json` may read a little past an error before reporting it (it
+/// closes the open object); these let the error's byte column be turned into characters.
+#[derive(Debug)]
+struct Position {
+    line: usize,
+    bytes: usize,
+    chars: usize,
+    /// The previous line's length in bytes and in characters, without its newline.
+    previous: (usize, usize),
+    recent: VecDeque<u8>,
+}
+
+impl Default for Position {
+    fn default() -> Position {
+        Position {
+            line: 1,
+            bytes: 0,
+            chars: 0,
+            previous: (0, 0),
+            recent: VecDeque::with_capacity(RECENT),
+        }
+    }
+}
+
+impl Position {
+    fn push(&mut self, byte: u8) {
+        if self.recent.len() == RECENT {
+            self.recent.pop_front();
+        }
+        self.recent.push_back(byte);
+        if byte == b'\n' {
+            self.previous = (self.bytes, self.chars);
+            self.line += 1;
+            self.bytes = 0;
+            self.chars = 0;
+        } else {
+            self.bytes += 1;
+            if byte & 0xc0 != 0x80 {
+                self.chars += 1; // not a UTF-8 continuation byte: a new character
+            }
+        }
+    }
+
+    /// How many bytes were read after byte column `column` of line `line`, if still known.
+    fn read_after(&self, line: usize, column: usize) -> Option<usize> {
+        let after = if line == self.line {
+            self.bytes.checked_sub(column)?
+        } else if line + 1 == self.line {
+            self.previous.0.checked_sub(column)? + 1 + self.bytes
+        } else {
+            return None;
+        };
+        (after < self.recent.len()).then_some(after)
+    }
+
+    /// The byte at byte column `column` (from 1) of line `line`, if still known.
+    fn byte_at(&self, line: usize, column: usize) -> Option<u8> {
+        let after = self.read_after(line, column)?;
+        self.recent.iter().rev().nth(after).copied()
+    }
+
+    /// The character column of byte column `column` of line `line`, if still known.
+    fn char_column(&self, line: usize, column: usize) -> Option<usize> {
+        let after = self.read_after(line, column)?;
+        let characters = |skip: usize, take: usize| {
+            self.recent
+                .iter()
+                .rev()
+                .skip(skip)
+                .take(take)
+                .filter(|&&b| b & 0xc0 != 0x80)
+                .count()
+        };
+        if line == self.line {
+            Some(self.chars - characters(0, after))
+        } else {
+            Some(self.previous.1 - characters(self.bytes + 1, after - self.bytes - 1))
+        }
+    }
+}
+
+/// A reader that records what it delivers in a [`Position`].
 struct Counting<R> {
     inner: R,
-    position: Rc<Cell<(usize, usize, u8)>>,
+    position: Rc<RefCell<Position>>,
 }
 
 impl<R: Read> Read for Counting<R> {
     fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
         let n = self.inner.read(buf)?;
-        let (mut line, mut column, mut last) = self.position.get();
+        let mut position = self.position.borrow_mut();
         for &byte in buf.get(..n).unwrap_or_default() {
-            last = byte;
-            if byte == b'\n' {
-                line += 1;
-                column = 0;
-            } else if byte & 0xc0 != 0x80 {
-                column += 1; // not a UTF-8 continuation byte: a new character
-            }
+            position.push(byte);
         }
-        self.position.set((line, column, last));
         Ok(n)
     }
 }
@@ -535,6 +620,16 @@ mod tests {
         assert_eq!(events(accents).1.as_deref(), Some(expected));
         assert_eq!(read_line(accents, 1).unwrap_err().to_string(), expected);
         assert_eq!(geojson::read(accents).unwrap_err().to_string(), expected);
+        // `serde_json` reads past the error (closing the object) before reporting it; the column
+        // is still the error's, in characters: the second comma, character 71 (byte 72).
+        let ahead =
+            r#"{"type": "FeatureCollection", "features": [{"type": "Feature", "é": 1,, }]}"#;
+        let expected = "line 1, column 71: invalid JSON: key must be a string";
+        assert_eq!(events(ahead).1.as_deref(), Some(expected));
+        assert_eq!(geojson::read(ahead).unwrap_err().to_string(), expected);
+        let across = ahead.replace(",, }", ",,\n }");
+        let expected = "line 1, column 71: invalid JSON: key must be a string";
+        assert_eq!(events(&across).1.as_deref(), Some(expected));
         // Cut short: located just after the last character, streamed and line by line alike.
         assert_eq!(
             events(r#"{"type": "Polygon""#).1.as_deref(),
