@@ -16,7 +16,7 @@ mod common;
 
 use common::Shape;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, SamplingMode};
-use minitri::{triangulate, Algorithm, Options};
+use minitri::{triangulate_with, Algorithm, Options};
 use std::hint::black_box;
 use std::time::Duration;
 
@@ -63,7 +63,7 @@ fn family(c: &mut Criterion, shape: Shape) {
         if n <= minitri_max_n {
             group.bench_with_input(BenchmarkId::new("minitri", n), &polygon, |b, p| {
                 b.iter(|| {
-                    triangulate(black_box(p), Algorithm::Minitri, &options).expect("hole-free")
+                    triangulate_with(black_box(p), Algorithm::Minitri, &options).expect("hole-free")
                 })
             });
         } else {
@@ -73,7 +73,7 @@ fn family(c: &mut Criterion, shape: Shape) {
             );
         }
         group.bench_with_input(BenchmarkId::new("ear", n), &polygon, |b, p| {
-            b.iter(|| triangulate(black_box(p), Algorithm::Ear, &options).expect("hole-free"))
+            b.iter(|| triangulate_with(black_box(p), Algorithm::Ear, &options).expect("hole-free"))
         });
         group.bench_with_input(BenchmarkId::new("earcut", n), &coords, |b, xy| {
             b.iter(|| common::earcut(black_box(xy), &[]))
