@@ -4,6 +4,7 @@ mod batch;
 mod cli;
 mod earcut;
 mod formats;
+mod geo;
 mod holes_dp;
 mod property;
 mod svg;
