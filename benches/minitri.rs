@@ -80,7 +80,7 @@ fn family(c: &mut Criterion, shape: Shape) {
         });
         if polygon.len() <= DP_MAX_N {
             group.bench_with_input(BenchmarkId::new("asano", n), &polygon, |b, p| {
-                b.iter(|| triangulate(black_box(p), Algorithm::Asano, &options).expect("fits"))
+                b.iter(|| triangulate_with(black_box(p), Algorithm::Asano, &options).expect("fits"))
             });
         }
     }
