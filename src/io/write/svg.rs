@@ -9,9 +9,11 @@
 //!   (one `<circle>` each, and no other `<circle>` anywhere) on the middle vertex b;
 //! - small dots on the vertices when n <= [`DOTS_MAX`], and the INPUT vertex numbers
 //!   ([`Polygon::id`]) when n <= [`LABELS_MAX`] or [`Style::labels`] asks for them, placed
-//!   outside the polygon along the bisector; each label's font shrinks with the room around its
-//!   vertex (see [`label_rooms`]), from 11 pixels down to [`MIN_ROOM`]-sized text, so that even
-//!   10^5 labels leave the picture legible (and readable when zoomed in);
+//!   outside the polygon along the bisector; each label's font fits the room around its vertex
+//!   (the distance to the nearest other vertex, to within a factor of 6, found on grids of cells
+//!   of side [`MAX_ROOM`], half that, ... down to [`MIN_ROOM`] pixels): at most 11 pixels, and
+//!   about as wide as the room, so that even 10^5 labels leave the picture legible (and
+//!   readable when zoomed in);
 //! - what `--verify` found wrong ([`Figure::faults`]), in red ([`FAULT`]): the region where the
 //!   triangles do not cover the polygon exactly once (gaps, overlaps, triangles outside: filled
 //!   where the winding number of the triangles' boundaries minus the polygon's is not zero, with
@@ -65,9 +67,9 @@ pub const PER_ROW: usize = 3;
 pub const DOTS_MAX: usize = 2000;
 /// Vertex numbers are written up to this many vertices (at any size with [`Style::labels`]).
 pub const LABELS_MAX: usize = 60;
-/// The largest room around a vertex that [`label_rooms`] looks for, in pixels.
+/// The largest room around a vertex that labels look for, in pixels.
 pub const MAX_ROOM: f64 = 16.0;
-/// The smallest room [`label_rooms`] tells apart, in pixels; denser vertices get this room.
+/// The smallest room labels tell apart, in pixels; denser vertices get this room.
 pub const MIN_ROOM: f64 = 1.0 / 16.0;
 /// The red of what `--verify` found wrong.
 pub const FAULT: &str = "#e60000";
@@ -1311,6 +1313,104 @@ mod tests {
         assert!(assert_inside_view_box(&svg) > 100);
         assert!(render(&[]).contains("no polygons to draw"));
         assert_well_formed(&render(&[]));
+    }
+
+    #[test]
+    fn label_rooms_bound_the_nearest_neighbour_distance() {
+        // Far from everything: the largest room. Two points 0.3 apart: cells of 0.25 put them in
+        // neighbouring columns (802 and 803), cells of 0.125 two columns apart (1604, 1606).
+        let rooms = label_rooms(&[Xy(0.5, 0.5), Xy(200.5, 200.5), Xy(200.8, 200.5)]);
+        assert_eq!(rooms, [MAX_ROOM, 0.125, 0.125]);
+        // Coincident points get the smallest room.
+        assert_eq!(label_rooms(&[Xy(3.0, 3.0), Xy(3.0, 3.0)]), [MIN_ROOM; 2]);
+        // Random clouds of every density, against the brute-force nearest neighbour.
+        let mut random = crate::test_support::xorshift(11);
+        for spread in [5, 50, 500, 5000] {
+            let points: Vec<Xy> = (0..300)
+                .map(|_| {
+                    Xy(
+                        random(spread * 100) as f64 / 100.0,
+                        random(spread * 100) as f64 / 100.0,
+                    )
+                })
+                .collect();
+            let rooms = label_rooms(&points);
+            for (i, &Xy(x, y)) in points.iter().enumerate() {
+                let nearest = points
+                    .iter()
+                    .enumerate()
+                    .filter(|&(j, _)| j != i)
+                    .map(|(_, &Xy(u, v))| (u - x).hypot(v - y))
+                    .fold(f64::INFINITY, f64::min);
+                let room = rooms[i];
+                assert!(room >= MIN_ROOM && room <= MAX_ROOM);
+                assert!(room == MIN_ROOM || nearest >= room, "{nearest} < {room}");
+                assert!(
+                    room == MAX_ROOM || nearest <= 6.0 * room,
+                    "{nearest} > 6 x {room}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn faults_are_drawn_in_red_over_the_figure() {
+        let p = u_shape(|v| v.to_string());
+        let mut t = u_triangulation();
+        t.triangles.pop();
+        t.triangles[0] = [0, 11, 3]; // clockwise
+        let check = crate::verify::check(&p, &t);
+        assert!(!check.valid && check.faults.triangles == [0]);
+        let svg = render(&[Figure {
+            faults: Some(&check.faults),
+            alerts: vec!["disagreement: it is wrong".into()],
+            ..figure("faulty", &p, Some(&t))
+        }]);
+        assert_well_formed(&svg);
+        // The region path: the 5 triangles and the ring reversed, one subpath each.
+        let region = svg
+            .lines()
+            .find(|l| l.contains(r#"fill-rule="nonzero""#))
+            .expect("the region covered other than once");
+        assert!(region.contains(FAULT));
+        let d = attribute(region, "d").unwrap();
+        assert_eq!(d.matches('M').count(), 5 + 1);
+        let ring = path_points(&d[d.rfind('M').unwrap()..]);
+        let view = View::new(&p, (GAP, GAP));
+        let reversed: Vec<[f64; 2]> = (0..12)
+            .rev()
+            .map(|i| {
+                let Xy(x, y) = view.at(i).unwrap();
+                [x, y]
+            })
+            .collect();
+        for (a, b) in ring.iter().zip(&reversed) {
+            assert!((a[0] - b[0]).abs() < 0.01 && (a[1] - b[1]).abs() < 0.01);
+        }
+        // One stroke per uncancelled stretch; the clockwise triangle outlined.
+        let stretches = svg
+            .lines()
+            .find(|l| l.contains(&format!(r#"<path fill="none" stroke="{FAULT}""#)))
+            .unwrap();
+        assert_eq!(
+            attribute(stretches, "d").unwrap().matches('M').count(),
+            check.faults.stretches.len()
+        );
+        assert!(svg.contains(&format!(
+            r#"<path fill="{FAULT}" fill-opacity="0.4" stroke="{FAULT}""#
+        )));
+        // Red frame, red alert text.
+        assert!(svg.contains(&format!(r#"stroke="{FAULT}" stroke-width="2"/>"#)));
+        assert!(svg.contains(&format!(
+            r#"fill="{FAULT}">disagreement: it is wrong</text>"#
+        )));
+        // A valid triangulation with empty faults draws nothing red.
+        let clean = crate::verify::check(&p, &u_triangulation());
+        let svg = render(&[Figure {
+            faults: Some(&clean.faults),
+            ..figure("clean", &p, Some(&u_triangulation()))
+        }]);
+        assert!(!svg.contains(FAULT));
     }
 
     /// Writes sample drawings to the temporary directory, to look at (`--ignored`).
