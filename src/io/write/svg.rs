@@ -1343,7 +1343,7 @@ mod tests {
                     .map(|(_, &Xy(u, v))| (u - x).hypot(v - y))
                     .fold(f64::INFINITY, f64::min);
                 let room = rooms[i];
-                assert!(room >= MIN_ROOM && room <= MAX_ROOM);
+                assert!((MIN_ROOM..=MAX_ROOM).contains(&room));
                 assert!(room == MIN_ROOM || nearest >= room, "{nearest} < {room}");
                 assert!(
                     room == MAX_ROOM || nearest <= 6.0 * room,
