@@ -50,7 +50,7 @@ fn fonts() -> Arc<usvg::fontdb::Database> {
                 .find(|f| families.iter().any(|g| g == f))
                 .map(str::to_string)
                 .or_else(|| families.first().cloned())
-                .expect("a font, to render text");
+                .expect("no font installed: the picture tests read text (install e.g. fonts-dejavu-core)");
             db.set_sans_serif_family(sans);
             Arc::new(db)
         })

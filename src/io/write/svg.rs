@@ -45,7 +45,7 @@
 //!
 //! Complexity: O(n + t + d) time per figure (t triangles, d degenerate triangles), output
 //! streamed through a buffer; about 45 bytes per triangle, 25 per vertex, 40 per degenerate
-//! triangle; labels add O(n log(MAX_ROOM / MIN_ROOM)) time and about 70 bytes per vertex; the
+//! triangle; labels add O(n log(MAX_ROOM / MIN_ROOM)) time and about 100 bytes per vertex; the
 //! faults of a failed check add about 45 bytes per triangle.
 
 use crate::algo::Triangulation;
