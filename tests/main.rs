@@ -4,6 +4,8 @@ mod batch;
 mod cli;
 mod earcut;
 mod formats;
+mod geo;
 mod holes_dp;
 mod property;
+mod svg;
 mod util;
