@@ -19,7 +19,7 @@
 //! - Each measurement runs in a fresh worker process (this binary, `--worker`), which builds the
 //!   input from the seed, then times only the algorithm: `validate` is `Polygon::from_raw`
 //!   (exact decimals to grid, validation); `minitri`, `ear` and `asano` are
-//!   `minitri::triangulate` on the validated polygon; `earcut` is a fresh `earcut::Earcut` on the
+//!   `minitri::triangulate_with` on the validated polygon; `earcut` is a fresh `earcut::Earcut` on the
 //!   same coordinates as `f64`. Up to `--runs` runs, stopping once they add up to 2 s; the table
 //!   gives the median. Every worker prints a fingerprint of its input, and the parent checks that
 //!   all workers of a row saw the same one.
@@ -35,7 +35,7 @@
 mod common;
 
 use common::Shape;
-use minitri::{triangulate, Algorithm, Polygon, RawPolygon};
+use minitri::{triangulate_with, Algorithm, Polygon, RawPolygon};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::collections::HashMap;
 use std::fmt::Write as _;
@@ -246,7 +246,7 @@ fn worker(case: &str, algo: &str, runs: usize, verify: bool) -> Result<String, S
             };
             let mut result = None;
             repeat(&mut || {
-                let (r, t, p) = measure(|| triangulate(&polygon, algorithm, &unlimited));
+                let (r, t, p) = measure(|| triangulate_with(&polygon, algorithm, &unlimited));
                 result = Some(r);
                 (t, p)
             });

@@ -17,7 +17,7 @@ mod common;
 
 use common::Shape;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, SamplingMode};
-use minitri::{triangulate, Algorithm, Options};
+use minitri::{triangulate_with, Algorithm, Options};
 use std::hint::black_box;
 use std::time::Duration;
 
@@ -64,7 +64,7 @@ fn family(c: &mut Criterion, shape: Shape) {
         if n <= minitri_max_n {
             group.bench_with_input(BenchmarkId::new("minitri", n), &polygon, |b, p| {
                 b.iter(|| {
-                    triangulate(black_box(p), Algorithm::Minitri, &options).expect("hole-free")
+                    triangulate_with(black_box(p), Algorithm::Minitri, &options).expect("hole-free")
                 })
             });
         } else {
@@ -74,14 +74,14 @@ fn family(c: &mut Criterion, shape: Shape) {
             );
         }
         group.bench_with_input(BenchmarkId::new("ear", n), &polygon, |b, p| {
-            b.iter(|| triangulate(black_box(p), Algorithm::Ear, &options).expect("hole-free"))
+            b.iter(|| triangulate_with(black_box(p), Algorithm::Ear, &options).expect("hole-free"))
         });
         group.bench_with_input(BenchmarkId::new("earcut", n), &coords, |b, xy| {
             b.iter(|| common::earcut(black_box(xy), &[]))
         });
         if polygon.len() <= DP_MAX_N {
             group.bench_with_input(BenchmarkId::new("asano", n), &polygon, |b, p| {
-                b.iter(|| triangulate(black_box(p), Algorithm::Asano, &options).expect("fits"))
+                b.iter(|| triangulate_with(black_box(p), Algorithm::Asano, &options).expect("fits"))
             });
         }
     }

@@ -5,6 +5,8 @@ mod cli;
 mod earcut;
 mod errors;
 mod formats;
+mod geo;
 mod holes_dp;
 mod property;
+mod svg;
 mod util;
