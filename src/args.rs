@@ -51,7 +51,8 @@ NO_COLOR set to anything but the empty string turns colour off."
 pub struct Flags {
     /// Input files or directories (searched recursively); none or `-` reads standard input
     pub inputs: Vec<PathBuf>,
-    /// Algorithm: minitri (minimum, Chen & Chang), asano (minimum, O(n^3) DP), ear (n + 2w - 2)
+    /// Algorithm: minitri (minimum, Chen & Chang), asano (minimum, O(n^3) DP), ear (n + 2w - 2);
+    /// pseudo, pseudo-hull: pseudotriangulations (Rote, Wang, Wang & Xu)
     #[arg(short, long, value_enum, default_value = "minitri")]
     pub algorithm: AlgorithmFlag,
     /// Input format; auto decides by extension, then by content
@@ -112,6 +113,10 @@ pub enum AlgorithmFlag {
     Asano,
     /// A plain triangulation into n + 2w - 2 triangles
     Ear,
+    /// A minimal pseudotriangulation of the polygon inside a triangulation (linear greedy)
+    Pseudo,
+    /// A minimum pseudotriangulation of the convex hull containing the polygon's edges
+    PseudoHull,
 }
 
 /// `--from`.
@@ -185,6 +190,8 @@ impl Flags {
             AlgorithmFlag::Minitri => Algorithm::Minitri,
             AlgorithmFlag::Asano => Algorithm::Asano,
             AlgorithmFlag::Ear => Algorithm::Ear,
+            AlgorithmFlag::PseudoHull => Algorithm::PseudoHull,
+            AlgorithmFlag::Pseudo => Algorithm::Pseudo,
         };
         let from = match self.from {
             FromFlag::Auto => None,

@@ -29,7 +29,7 @@
 //! streamed through a buffer; about 45 bytes per triangle, 25 per vertex, 40 per degenerate
 //! triangle.
 
-use crate::algo::Triangulation;
+use crate::algo::{Pseudotriangulation, Triangulation};
 use crate::geom::kernel::Point;
 use crate::geom::polygon::Polygon;
 use crate::pipeline::Outcome;
@@ -64,6 +64,9 @@ const TRIANGLE_FILL: &str = "#e2ebf9";
 const TRIANGLE_STROKE: &str = "#4a78c2";
 const BOUNDARY: &str = "#1f2a3a";
 const DEGENERATE: &str = "#e8590c";
+const FACE_FILL: &str = "#dbe7fb";
+const FACE_FILL_2: &str = "#f3e3c3";
+const CORNER: &str = "#2b8a3e";
 const ERROR: &str = "#c92a2a";
 const FRAME: &str = "#d5dbe5";
 const MUTED: &str = "#555";
@@ -78,6 +81,8 @@ pub struct Figure<'a> {
     pub triangulation: Option<&'a Triangulation>,
     /// Why it could not be triangulated; drawn in red instead of triangles.
     pub error: Option<String>,
+    /// Its pseudotriangulation (`pseudo`, `pseudo-hull`), drawn instead of the triangles.
+    pub pseudo: Option<&'a Pseudotriangulation>,
 }
 
 /// Writes one SVG document of every outcome that has a valid polygon (solved or not; inputs that
@@ -95,6 +100,7 @@ pub fn write_outcomes(outcomes: &[Outcome], out: &mut impl Write) -> io::Result<
                 polygon,
                 triangulation: o.result.as_ref().ok().map(|s| &s.triangulation),
                 error: o.result.as_ref().err().map(ToString::to_string),
+                pseudo: o.result.as_ref().ok().and_then(|s| s.pseudo.as_ref()),
             })
         })
         .collect();
@@ -247,7 +253,10 @@ fn draw_figure(
     writeln!(out, r#""/>"#)?;
 
     let triangulation = figure.triangulation.filter(|_| figure.error.is_none());
-    if let Some(t) = triangulation.filter(|t| !t.triangles.is_empty()) {
+    let pseudo = figure.pseudo.filter(|_| figure.error.is_none());
+    if let Some(p) = pseudo {
+        faces(out, &view, p, triangle_width)?;
+    } else if let Some(t) = triangulation.filter(|t| !t.triangles.is_empty()) {
         write!(
             out,
             r#"<path fill="{TRIANGLE_FILL}" stroke="{TRIANGLE_STROKE}" stroke-width="{triangle_width}" stroke-linejoin="round" d=""#
@@ -306,11 +315,75 @@ fn draw_figure(
         writeln!(out, "</g>")?;
     }
 
+    if let Some(p) = pseudo.filter(|_| n <= DOTS_MAX) {
+        corners(out, &view, p)?;
+    }
+
     if n <= LABELS_MAX {
         labels(out, &view)?;
     }
 
     draw_caption(out, caption, origin)?;
+    writeln!(out, "</g>")
+}
+
+/// The faces of a pseudotriangulation, shaded in two alternating tones.
+fn faces(
+    out: &mut impl Write,
+    view: &View<'_>,
+    p: &Pseudotriangulation,
+    width: f64,
+) -> io::Result<()> {
+    for (tone, fill) in [FACE_FILL, FACE_FILL_2].into_iter().enumerate() {
+        write!(
+            out,
+            r#"<path fill="{fill}" stroke="{TRIANGLE_STROKE}" stroke-width="{width}" stroke-linejoin="round" d=""#
+        )?;
+        for face in p.faces.iter().skip(tone).step_by(2) {
+            let points: Vec<Xy> = face.cycle.iter().filter_map(|&v| view.at(v)).collect();
+            if let Some((first, rest)) = points.split_first() {
+                write!(out, "M{first}L")?;
+                for (k, q) in rest.iter().enumerate() {
+                    write!(out, "{}{q}", if k == 0 { "" } else { " " })?;
+                }
+                write!(out, "Z")?;
+            }
+        }
+        writeln!(out, r#""/>"#)?;
+    }
+    Ok(())
+}
+
+/// A dot just inside each corner of each face, on the bisector of its angle.
+fn corners(out: &mut impl Write, view: &View<'_>, p: &Pseudotriangulation) -> io::Result<()> {
+    writeln!(out, r##"<g fill="{CORNER}" stroke="none">"##)?;
+    for face in &p.faces {
+        let k = face.cycle.len();
+        for (i, &v) in face.cycle.iter().enumerate() {
+            if !face.corners.contains(&v) {
+                continue;
+            }
+            let (Some(Xy(x, y)), Some(Xy(px, py)), Some(Xy(nx, ny))) = (
+                view.at(v),
+                view.at(face.cycle[(i + k - 1) % k]),
+                view.at(face.cycle[(i + 1) % k]),
+            ) else {
+                continue;
+            };
+            let unit = |dx: f64, dy: f64| {
+                let length = dx.hypot(dy);
+                if length > 0.0 {
+                    (dx / length, dy / length)
+                } else {
+                    (0.0, 0.0)
+                }
+            };
+            let (a, b) = (unit(px - x, py - y), unit(nx - x, ny - y));
+            let (bx, by) = unit(a.0 + b.0, a.1 + b.1);
+            let (cx, cy) = (Num(x + 7.0 * bx), Num(y + 7.0 * by));
+            writeln!(out, r#"<circle cx="{cx}" cy="{cy}" r="2.5"/>"#)?;
+        }
+    }
     writeln!(out, "</g>")
 }
 
@@ -405,6 +478,20 @@ fn caption(figure: &Figure<'_>) -> Vec<Line> {
                 }
             }
             lines.extend(wrapped.into_iter().map(|t| line(Kind::Error, t)));
+        }
+        (None, Some(t)) if figure.pseudo.is_some() => {
+            if let Some(p) = figure.pseudo {
+                stats += &format!(
+                    ", pseudotriangles = {}, edges = {}, algorithm = {}",
+                    p.faces.len(),
+                    p.edge_count,
+                    t.algorithm
+                );
+            }
+            lines.push(line(Kind::Stats, stats));
+            let key =
+                "shaded: pseudotriangles; green dot: a corner (angle < π) of the face it lies in";
+            lines.push(line(Kind::Key, key.to_string()));
         }
         (None, Some(t)) => {
             stats += &format!(
@@ -668,6 +755,7 @@ mod tests {
             polygon,
             triangulation,
             error: None,
+            pseudo: None,
         }
     }
 
