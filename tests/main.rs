@@ -6,4 +6,5 @@ mod earcut;
 mod formats;
 mod holes_dp;
 mod property;
+mod pseudo;
 mod util;

@@ -359,3 +359,129 @@ fn big_angles(polygon: &Polygon, hull: &[usize]) -> usize {
     }
     total
 }
+
+#[cfg(test)]
+mod tests {
+    use super::check;
+    use crate::algo::{Algorithm, Pseudotriangle, Pseudotriangulation};
+    use crate::test_support::polygon;
+
+    fn faces(list: &[(&[usize], &[usize])], edge_count: usize) -> Pseudotriangulation {
+        Pseudotriangulation {
+            faces: list
+                .iter()
+                .map(|(c, k)| Pseudotriangle {
+                    cycle: c.to_vec(),
+                    corners: k.to_vec(),
+                })
+                .collect(),
+            edge_count,
+            hull: None,
+        }
+    }
+
+    fn problems(p: &crate::Polygon, a: Algorithm, t: &Pseudotriangulation) -> Vec<String> {
+        let c = check(p, a, t);
+        assert_eq!(c.valid, c.problems.is_empty());
+        c.problems
+    }
+
+    #[test]
+    fn a_removable_edge_is_reported() {
+        // The arrowhead left as two triangles: diagonal 1-3 can go (Lemma 4(a)).
+        let p = polygon(&[&[(0, 0), (2, 1), (4, 0), (2, 3)]]);
+        let two = faces(&[(&[0, 1, 3], &[0, 1, 3]), (&[1, 2, 3], &[1, 2, 3])], 5);
+        let found = problems(&p, Algorithm::Pseudo, &two);
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert!(found[0].contains("edge 1-3 can be removed"), "{found:?}");
+        let one = faces(&[(&[0, 1, 2, 3], &[0, 2, 3])], 4);
+        assert!(problems(&p, Algorithm::Pseudo, &one).is_empty());
+    }
+
+    #[test]
+    fn a_removable_triangle_is_reported() {
+        let p = polygon(&[&[(0, 0), (6, 2), (12, 0), (8, 4), (6, 10), (4, 4)]]);
+        let four = faces(
+            &[
+                (&[0, 1, 5], &[0, 1, 5]),
+                (&[1, 2, 3], &[1, 2, 3]),
+                (&[5, 3, 4], &[5, 3, 4]),
+                (&[1, 3, 5], &[1, 3, 5]),
+            ],
+            9,
+        );
+        let found = problems(&p, Algorithm::Pseudo, &four);
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert!(
+            found[0].contains("triangle [1, 3, 5] can be removed"),
+            "{found:?}"
+        );
+    }
+
+    #[test]
+    fn four_corners_a_gap_and_wrong_corners_are_reported() {
+        let p = polygon(&[&[(0, 0), (4, 0), (4, 4), (0, 4)]]);
+        let square = faces(&[(&[0, 1, 2, 3], &[0, 1, 2])], 4);
+        let found = problems(&p, Algorithm::Pseudo, &square);
+        assert!(
+            found.iter().any(|m| m.contains("has 4 corners")),
+            "{found:?}"
+        );
+        assert!(
+            found.iter().any(|m| m.contains("lists corners")),
+            "{found:?}"
+        );
+        let half = faces(&[(&[0, 1, 2], &[0, 1, 2])], 3);
+        let found = problems(&p, Algorithm::Pseudo, &half);
+        assert!(
+            found.iter().any(|m| m.contains("do not cancel")),
+            "{found:?}"
+        );
+        let miscounted = faces(&[(&[0, 1, 2], &[0, 1, 2]), (&[0, 2, 3], &[0, 2, 3])], 4);
+        let found = problems(&p, Algorithm::Pseudo, &miscounted);
+        assert_eq!(found, ["edge_count is 4 but the faces have 5 edges"]);
+    }
+
+    #[test]
+    fn a_clockwise_or_self_crossing_face_and_bad_indices_are_reported() {
+        let p = polygon(&[&[(0, 0), (4, 0), (4, 4), (0, 4)]]);
+        let clockwise = faces(&[(&[0, 2, 1], &[0, 2, 1]), (&[0, 3, 2], &[0, 3, 2])], 5);
+        let found = problems(&p, Algorithm::Pseudo, &clockwise);
+        assert!(
+            found.iter().any(|m| m.contains("not counter-clockwise")),
+            "{found:?}"
+        );
+        let bowtie = faces(&[(&[0, 1, 3, 2], &[])], 5);
+        let found = problems(&p, Algorithm::Pseudo, &bowtie);
+        assert!(
+            found.iter().any(|m| m.contains("not a simple polygon")),
+            "{found:?}"
+        );
+        let nonsense = faces(&[(&[0, 9, 1], &[]), (&[0, 0, 1], &[])], 5);
+        assert_eq!(problems(&p, Algorithm::Pseudo, &nonsense).len(), 2);
+    }
+
+    #[test]
+    fn pseudo_hull_needs_the_count_and_the_polygon_edges() {
+        // The arrowhead: the polygon and its pocket are the minimum (2 = 2n - N - 2).
+        let p = polygon(&[&[(0, 0), (4, 0), (2, 1), (2, 4)]]);
+        let good = faces(&[(&[0, 1, 2, 3], &[0, 1, 3]), (&[1, 3, 2], &[1, 3, 2])], 5);
+        assert!(problems(&p, Algorithm::PseudoHull, &good).is_empty());
+        // The hull cut by 0-... : triangles 0 1 3 and the pocket, but polygon edges 0-1... kept;
+        // leaving out edges 1-2 and 2-3 (a triangulation of the hull alone) is caught.
+        let hull_only = faces(&[(&[0, 1, 3], &[0, 1, 3])], 3);
+        let found = problems(&p, Algorithm::PseudoHull, &hull_only);
+        assert!(
+            found
+                .iter()
+                .any(|m| m.contains("polygon edge 1-2 is no face edge")),
+            "{found:?}"
+        );
+        assert!(
+            found
+                .iter()
+                .any(|m| m.contains("1 pseudotriangle but 2n - N - 2")),
+            "{found:?}"
+        );
+    }
+}
