@@ -180,3 +180,159 @@ fn the_cases_are_varied() {
     assert!(merged >= 100, "{merged}");
     assert!(collinear_hull >= 100, "{collinear_hull}");
 }
+
+// ---------- the command line ----------
+
+use crate::util::{expected, json, run};
+
+/// Every fixture with and without holes, both algorithms, `--verify`: exit 0, checked, and the
+/// document's counts consistent (Euler; three corners per face; Corollary 1 for pseudo-hull).
+#[test]
+fn every_fixture_verifies_with_both_algorithms() {
+    let mut paths: Vec<String> = Vec::new();
+    for dir in ["valid", "holes"] {
+        paths.extend(
+            expected(dir)
+                .into_iter()
+                .map(|(name, _)| format!("fixtures/{dir}/{name}")),
+        );
+    }
+    assert!(paths.len() >= 14);
+    for path in &paths {
+        for algorithm in ["pseudo", "pseudo-hull"] {
+            let (code, out, err) = run(&["-a", algorithm, "--verify", path], None);
+            assert_eq!(code, 0, "{algorithm} {path}: {err}");
+            let doc = json(&out);
+            for p in doc["polygons"].as_array().unwrap() {
+                assert_eq!(p["algorithm"], algorithm);
+                assert_eq!(
+                    p["verification"]["ok"], true,
+                    "{path}: {}",
+                    p["verification"]
+                );
+                assert_eq!(p["verification"]["pseudotriangulation"]["valid"], true);
+                assert!(p.get("triangles").is_none() && p.get("triangle_count").is_none());
+                let faces = p["pseudotriangles"].as_array().unwrap();
+                let count = p["pseudotriangle_count"].as_u64().unwrap();
+                assert_eq!(faces.len() as u64, count);
+                for f in faces {
+                    assert_eq!(f["corners"].as_array().unwrap().len(), 3, "{path}: {f}");
+                    assert_eq!(f["cycle"][0], f["corners"][0], "cycles start at a corner");
+                }
+                let (n, w, e) = (
+                    p["vertices"].as_u64().unwrap(),
+                    p["holes"].as_u64().unwrap(),
+                    p["edge_count"].as_u64().unwrap(),
+                );
+                if algorithm == "pseudo" {
+                    assert_eq!(count + n, e + 1 - w, "{path}: Euler with w holes");
+                    assert!(count <= n + 2 * w - 2);
+                } else {
+                    // The hull has no holes: faces = edges - n + 1, and the minimum count.
+                    assert_eq!(count + n, e + 1, "{path}: Euler");
+                    assert_eq!(p["minimum_count"], p["pseudotriangle_count"]);
+                    assert_eq!(p["reflex_vertices"].as_u64(), Some(n));
+                    assert_eq!(p["corollary_count"].as_u64(), Some(n - 2));
+                    assert_eq!(p["optimal"], true);
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn pseudo_on_the_arrowhead_from_standard_input() {
+    // One pseudotriangle: the diagonal at the reflex vertex 1 goes (Lemma 4(a)).
+    let (code, out, err) = run(
+        &["-a", "pseudo"],
+        Some("POLYGON ((0 0, 2 1, 4 0, 2 3, 0 0))"),
+    );
+    assert_eq!(code, 0, "{err}");
+    let p = &json(&out)["polygons"][0];
+    assert_eq!(p["pseudotriangle_count"], 1);
+    assert_eq!(p["edge_count"], 4);
+    let mut corners: Vec<u64> = p["pseudotriangles"][0]["corners"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter_map(|c| c.as_u64())
+        .collect();
+    corners.sort_unstable();
+    assert_eq!(corners, [0, 2, 3]);
+    assert_eq!(p["optimal"], false, "minimal, not proved minimum");
+}
+
+#[test]
+fn pseudo_hull_counts_a_flat_vertex_twice() {
+    // A square with a flat vertex: N = 6, 2n - N - 2 = 2 faces, below Corollary 1's n - 2 = 3
+    // for general position.
+    let (code, out, err) = run(
+        &["-a", "pseudo-hull", "--verify"],
+        Some("POLYGON ((0 0, 1 0, 2 0, 2 2, 0 2, 0 0))"),
+    );
+    assert_eq!(code, 0, "{err}");
+    let p = &json(&out)["polygons"][0];
+    assert_eq!(p["pseudotriangle_count"], 2);
+    assert_eq!(
+        (p["big_angles"].as_u64(), p["corollary_count"].as_u64()),
+        (Some(6), Some(3))
+    );
+    assert_eq!(p["minimum_count"], 2);
+}
+
+#[test]
+fn pseudo_writes_geojson_wkt_and_svg() {
+    let input = "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (3 3, 3 6, 7 6, 7 3, 3 3))";
+    let (_, out, _) = run(&["-a", "pseudo"], Some(input));
+    let count = json(&out)["polygons"][0]["pseudotriangle_count"]
+        .as_u64()
+        .unwrap() as usize;
+    let (code, geo, err) = run(&["-a", "pseudo", "--to", "geojson"], Some(input));
+    assert_eq!(code, 0, "{err}");
+    let doc = json(&geo);
+    let features = doc["features"].as_array().unwrap();
+    assert_eq!(features.len(), count);
+    for f in features {
+        let ring = f["geometry"]["coordinates"][0].as_array().unwrap();
+        let cycle = f["properties"]["cycle"].as_array().unwrap();
+        assert_eq!(ring.len(), cycle.len() + 1, "closed ring");
+        assert_eq!(ring[0], ring[ring.len() - 1]);
+        assert_eq!(f["properties"]["corners"].as_array().unwrap().len(), 3);
+    }
+    let (code, wkt, err) = run(&["-a", "pseudo-hull", "--to", "wkt"], Some(input));
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(wkt.lines().count(), 1);
+    // One polygon per face: as many as the JSON output counts.
+    let (_, hull_json, _) = run(&["-a", "pseudo-hull"], Some(input));
+    let hull_count = json(&hull_json)["polygons"][0]["pseudotriangle_count"]
+        .as_u64()
+        .unwrap();
+    assert_eq!(wkt.matches("((").count() as u64, hull_count, "{wkt}");
+    let (code, svg, err) = run(&["-a", "pseudo", "--to", "svg"], Some(input));
+    assert_eq!(code, 0, "{err}");
+    assert!(svg.contains(&format!("pseudotriangles = {count}")), "{svg}");
+    assert_eq!(
+        svg.matches("<circle").count(),
+        3 * count,
+        "one corner dot per face corner"
+    );
+}
+
+#[test]
+fn verify_catches_a_missing_pseudotriangle_and_exits_3() {
+    let out = crate::util::minitri()
+        .args(["-a", "pseudo", "--verify", "fixtures/valid/u_shape.wkt"])
+        .env(minitri::pipeline::CORRUPT_FOR_TESTS, "1")
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(3));
+    let doc = json(&String::from_utf8_lossy(&out.stdout));
+    let v = &doc["polygons"][0]["verification"];
+    assert_eq!(v["ok"], false);
+    assert!(
+        v["pseudotriangulation"]["problems"]
+            .to_string()
+            .contains("do not cancel"),
+        "{v}"
+    );
+}

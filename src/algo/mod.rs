@@ -121,11 +121,14 @@ impl Pseudotriangle {
             let [u, v, w] = [(i + k - 1) % k, i, (i + 1) % k].map(|j| points[cycle[j]]);
             crate::geom::kernel::cross(u, v, w) > 0
         };
-        let corner_at: Vec<usize> = (0..k).filter(|&i| is_corner(i)).collect();
-        let corners = corner_at.iter().map(|&i| cycle[i]).collect();
-        if let Some(&first) = corner_at.first() {
+        if let Some(first) = (0..k).find(|&i| is_corner(i)) {
             cycle.rotate_left(first);
         }
+        let is_corner = |i: usize| {
+            let [u, v, w] = [(i + k - 1) % k, i, (i + 1) % k].map(|j| points[cycle[j]]);
+            crate::geom::kernel::cross(u, v, w) > 0
+        };
+        let corners = (0..k).filter(|&i| is_corner(i)).map(|i| cycle[i]).collect();
         Pseudotriangle { cycle, corners }
     }
 }

@@ -148,8 +148,9 @@ fn triangle_fields(
 
 /// The fields of a pseudotriangulated polygon (`pseudo`, `pseudo-hull`), in order: no triangle
 /// fields, but `pseudotriangle_count`, `edge_count` and `pseudotriangles` (each `cycle`
-/// counter-clockwise from a corner, and its three `corners`); for `pseudo-hull` also Corollary
-/// 1's counts. `optimal` says whether the count is proved minimum (`pseudo-hull`) rather than
+/// counter-clockwise from a corner, and its three `corners`); for `pseudo-hull` also
+/// `reflex_vertices` (r), `big_angles` (N), `corollary_count` (2n - r - 2) and `minimum_count`
+/// (2n - N - 2, the same in general position). `optimal` says whether the count is proved minimum (`pseudo-hull`) rather than
 /// only minimal (`pseudo`).
 fn pseudo_fields(
     outcome: &Outcome,
@@ -185,6 +186,7 @@ fn pseudo_fields(
         fields.push(("reflex_vertices", json(&h.reflex_vertices)));
         fields.push(("big_angles", json(&h.big_angles)));
         fields.push(("corollary_count", json(&h.corollary(n))));
+        fields.push(("minimum_count", json(&h.minimum(n))));
     }
     fields.push(("pseudotriangles", format!("[{}]", faces.join(", "))));
     fields.push(("optimal", json(&p.hull.is_some())));
