@@ -65,6 +65,9 @@ pub fn check(polygon: &Polygon, algorithm: Algorithm, p: &Pseudotriangulation) -
         }
     }
     let mut region = WideSum::default();
+    if hull_region && !is_hull(polygon, &hull) {
+        problems.add(|| "the checker's own convex hull is wrong (a checker bug)".to_string());
+    }
     if hull_region {
         for i in 0..hull.len() {
             let (a, b) = (hull[i], hull[(i + 1) % hull.len()]);
@@ -332,6 +335,21 @@ fn hull_cycle(points: &[Point]) -> Vec<usize> {
     }
     lower.extend(upper);
     lower
+}
+
+/// Whether `hull` is the convex hull's boundary with every point on it: every vertex lies on or
+/// to the left of every hull edge, and none strictly inside one (O(n h), a cross-check of the
+/// monotone chain above).
+fn is_hull(polygon: &Polygon, hull: &[usize]) -> bool {
+    let h = hull.len();
+    h >= 3
+        && (0..h).all(|k| {
+            let (a, b) = (polygon.point(hull[k]), polygon.point(hull[(k + 1) % h]));
+            polygon.points().iter().all(|&p| {
+                let side = cross(a, b, p);
+                side > 0 || (side == 0 && (p == a || p == b || dot(p, a, b) > 0))
+            })
+        })
 }
 
 /// N: the angles of at least pi between neighbouring segments among the polygon's edges and the
