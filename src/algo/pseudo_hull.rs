@@ -46,7 +46,7 @@ use crate::geom::polygon::Polygon;
 use std::cmp::Ordering;
 
 /// The largest polygon (vertices over all rings) accepted: the search is O(n^3).
-pub const DEFAULT_LIMIT: usize = 1000;
+pub const DEFAULT_LIMIT: usize = 2000;
 
 /// A minimum pseudotriangulation of the convex hull of `polygon`'s vertices containing its edges.
 ///
@@ -220,17 +220,19 @@ impl<'a> Graph<'a> {
     /// Whether segment `u v` can be added: nothing on it, no contact with an edge but at a
     /// shared end, and every angle of at least pi kept at both ends.
     fn addable(&self, u: usize, v: usize) -> bool {
+        if !self.keeps_big_angle(u, v) || !self.keeps_big_angle(v, u) {
+            return false; // the cheap test first: O(log degree)
+        }
         let (pu, pv) = (self.points[u], self.points[v]);
         if self.points.iter().any(|&w| strictly_between(pu, w, pv)) {
             return false;
         }
-        let clear = self.edges.iter().all(|&(a, b)| {
+        self.edges.iter().all(|&(a, b)| {
             let shared = a == u || a == v || b == u || b == v;
             shared
                 || segment_contact(pu, pv, self.points[a], self.points[b])
                     == SegmentContact::Disjoint
-        });
-        clear && self.keeps_big_angle(u, v) && self.keeps_big_angle(v, u)
+        })
     }
 
     /// The bounded faces, each counter-clockwise; `outer_from -> outer_to` is a half-edge of the
