@@ -8,7 +8,8 @@
 //!   faces = edges - n + 1 - w; at most as many faces as the n + 2w - 2 triangles started from;
 //! - `pseudo-hull`: the checker accepts every result (partition of the hull, three corners per
 //!   face, every polygon edge kept, 2n - N - 2 faces); in general position exactly Corollary 1's
-//!   2n - r - 2 = n - 2 faces and 3n - r - 3 = 2n - 3 edges, with r = N = n.
+//!   2n - r - 2 = n - 2 faces and 3n - r - 3 = 2n - 3 edges, with r = N = n;
+//! - Lemma 3: a random pseudotriangle under a random triangulation comes back as one face.
 
 use crate::property::{config, general, holed, holed_recipe, rectilinear, without_flat};
 use crate::util::polygon_from_rings;
@@ -335,4 +336,93 @@ fn verify_catches_a_missing_pseudotriangle_and_exits_3() {
             .contains("do not cancel"),
         "{v}"
     );
+}
+
+// ---------- Lemma 3: a pseudotriangle, triangulated anyhow, comes back whole ----------
+
+/// A random pseudotriangle: corners (0, 0), (s, 0) and (s / 2, s), each side replaced by a chain
+/// of `k` points bulging inwards along a parabola of height `h` (so every chain vertex is reflex),
+/// rounded to the grid; `None` if rounding spoils a reflex vertex.
+fn pseudotriangle(s: i64, ks: [usize; 3], hs: [i64; 3]) -> Option<Vec<(i64, i64)>> {
+    let corners = [(0, 0), (s, 0), (s / 2, s)];
+    let mut ring = Vec::new();
+    for side in 0..3 {
+        let (p, q) = (corners[side], corners[(side + 1) % 3]);
+        ring.push(p);
+        let (dx, dy) = (q.0 - p.0, q.1 - p.1);
+        let length = ((dx * dx + dy * dy) as f64).sqrt();
+        // Inwards: left of p -> q for a counter-clockwise triangle.
+        let (nx, ny) = (-dy as f64 / length, dx as f64 / length);
+        let k = ks[side];
+        for i in 1..=k {
+            let t = i as f64 / (k + 1) as f64;
+            let bulge = 4.0 * hs[side] as f64 * t * (1.0 - t);
+            ring.push((
+                (p.0 as f64 + t * dx as f64 + bulge * nx).round() as i64,
+                (p.1 as f64 + t * dy as f64 + bulge * ny).round() as i64,
+            ));
+        }
+    }
+    let m = ring.len();
+    let pt = |i: usize| Point::new(ring[i % m].0, ring[i % m].1);
+    let corners_found = (0..m)
+        .filter(|&i| cross(pt(i + m - 1), pt(i), pt(i + 1)) > 0)
+        .count();
+    (corners_found == 3).then_some(ring)
+}
+
+/// A random triangulation of a simple counter-clockwise polygon: ear clipping, choosing among
+/// the ears by `pick` (an ear: a strictly convex vertex whose closed triangle holds no other
+/// remaining vertex). Written here, independent of the crate.
+fn random_triangulation(p: &Polygon, mut pick: impl FnMut(usize) -> usize) -> Vec<[usize; 3]> {
+    let mut left: Vec<usize> = (0..p.len()).collect();
+    let mut out = Vec::new();
+    while left.len() > 3 {
+        let m = left.len();
+        let ears: Vec<usize> = (0..m)
+            .filter(|&i| {
+                let (a, b, c) = (left[(i + m - 1) % m], left[i], left[(i + 1) % m]);
+                let [pa, pb, pc] = [a, b, c].map(|v| p.point(v));
+                cross(pa, pb, pc) > 0
+                    && left.iter().all(|&v| {
+                        let q = p.point(v);
+                        [a, b, c].contains(&v)
+                            || cross(pa, pb, q) < 0
+                            || cross(pb, pc, q) < 0
+                            || cross(pc, pa, q) < 0
+                    })
+            })
+            .collect();
+        let i = ears[pick(ears.len())];
+        out.push([left[(i + m - 1) % m], left[i], left[(i + 1) % m]]);
+        left.remove(i);
+    }
+    out.push([left[0], left[1], left[2]]);
+    out
+}
+
+proptest! {
+    #![proptest_config(config(1_000, 0x5eed_0705))]
+    /// Lemma 3 with Theorem 2: any set of edges cutting a pseudotriangle into pseudotriangles has
+    /// a removable edge or is a removable triangle, so every minimal pseudotriangulation inside
+    /// any triangulation of a pseudotriangle is the pseudotriangle itself.
+    #[test]
+    fn lemma_3_a_pseudotriangle_comes_back_whole(
+        ks in [0usize..6, 0usize..6, 0usize..6],
+        hs in [1i64..300, 1i64..300, 1i64..300],
+        seed in any::<u64>(),
+    ) {
+        let ring = pseudotriangle(1000, ks, hs);
+        prop_assume!(ring.is_some());
+        let rings = vec![ring.unwrap_or_default()];
+        let poly = polygon_from_rings(&rings);
+        prop_assume!(poly.is_some());
+        let poly = poly.expect("assumed");
+        let mut rnd = crate::util::xorshift(seed | 1);
+        let triangles = random_triangulation(&poly, |k| rnd(k as i64) as usize);
+        let result = pseudo::minimal(&poly, &triangles);
+        prop_assert_eq!(result.faces.len(), 1, "{:?} from {:?}", rings, triangles);
+        prop_assert_eq!(result.faces[0].cycle.len(), poly.len());
+        prop_assert!(check(&poly, Algorithm::Pseudo, &result).valid);
+    }
 }
