@@ -21,6 +21,7 @@ macro_rules! examples {
   minitri -q shapes/ -o out/                       the same without summary, warnings or progress bar
   minitri --time-limit 60 holes.geojson            search polygons with holes up to 60 s each (0: no limit)
   minitri -a ear shape.geojson                     a plain triangulation (n + 2w - 2 triangles)
+  minitri -a pseudo shape.wkt                      a minimal pseudotriangulation (also pseudo-hull)
   echo 'POLYGON ((0 0, 0.1 0.3, 0.2 0.6, 0 1))' | minitri      exact decimals: 1 triangle
 
 Exit status: 0 all processed, 1 some input failed, 2 bad command line, 3 --verify found a problem."
