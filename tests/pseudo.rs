@@ -412,12 +412,10 @@ proptest! {
         hs in [1i64..300, 1i64..300, 1i64..300],
         seed in any::<u64>(),
     ) {
-        let ring = pseudotriangle(1000, ks, hs);
-        prop_assume!(ring.is_some());
-        let rings = vec![ring.unwrap_or_default()];
-        let poly = polygon_from_rings(&rings);
-        prop_assume!(poly.is_some());
-        let poly = poly.expect("assumed");
+        // About one ring in four loses a reflex vertex to rounding and is skipped.
+        let Some(ring) = pseudotriangle(1000, ks, hs) else { return Ok(()) };
+        let rings = vec![ring];
+        let Some(poly) = polygon_from_rings(&rings) else { return Ok(()) };
         let mut rnd = crate::util::xorshift(seed | 1);
         let triangles = random_triangulation(&poly, |k| rnd(k as i64) as usize);
         let result = pseudo::minimal(&poly, &triangles);
