@@ -36,7 +36,7 @@
 //! simple: a merged face of two (or four) simple faces joined along edges is simply connected,
 //! and a closed boundary walk touching itself would have to turn once clockwise around what it
 //! encloses, which three corners cannot allow (the right turns of a pseudotriangle total less
-//! than pi). [`crate::verify::check_pseudo`] checks all of it independently.
+//! than pi). [`crate::verify::pseudo::check`] checks all of it independently.
 //!
 //! Complexity: O(n) after the triangulation (Theorem 5): linear-time twin matching (two counting
 //! sorts), one work list, one face scan. With the triangulation, O(n log n) in all.

@@ -27,7 +27,7 @@
 //! with `3n - N0 - 3` edges that keeps N = N0 has exactly that many. In general position
 //! (Section 2) every vertex has one angle of at least pi, so N0 = r = n and this is Corollary 1's
 //! `2n - r - 2 = n - 2`; that a graph keeping every vertex pointed can always be extended until
-//! it is a pseudotriangulation is Streinu's theorem (reference [5] of the paper), and the
+//! it is a pseudotriangulation is Streinu's theorem (reference 5 of the paper), and the
 //! construction of Theorem 6 shows it with L given.
 //!
 //! Collinear input (the paper assumes general position): a flat vertex keeps both its angles of
