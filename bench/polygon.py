@@ -6,10 +6,13 @@
                                          rounded points (so the polygon is star-shaped and simple)
   bench/polygon.py convex N              a convex polygon (points on a parabola): every vertex
                                          pair is a chord, the Asano DP's worst case
-  bench/polygon.py rectilinear N [SEED]  a random rectilinear polygon of about N vertices: a bar
-                                         whose top and bottom follow random step heights from a
-                                         small range, so that many horizontal edges at equal
-                                         heights see each other (many degenerate triangles)
+  bench/polygon.py maze N [SEED]         a random rectilinear polygon of about N vertices: the
+                                         cells of a random spanning tree of a grid (corridors one
+                                         cell wide; many degenerate triangles, local visibility)
+  bench/polygon.py bars N [SEED]         a random rectilinear polygon of about 0.83 N vertices: a
+                                         bar whose top and bottom follow random step heights from
+                                         a small range, so that an open corridor runs its whole
+                                         length and Theta(N^2) vertex pairs see each other
 """
 import math, random, sys
 
@@ -26,7 +29,40 @@ if kind == "star":
     pts = sorted(pts, key=lambda p: (math.atan2(p[1], p[0]), p[0] * p[0] + p[1] * p[1]))
 elif kind == "convex":
     pts = [(i, i * i) for i in range(n - 1)] + [(0, (n - 2) ** 2)]
-elif kind == "rectilinear":
+elif kind == "maze":
+    k = max(2, round((n / 1.72) ** 0.5))
+    parent = list(range(k * k))
+    def find(a):
+        while parent[a] != a:
+            parent[a] = parent[parent[a]]
+            a = parent[a]
+        return a
+    edges = [(i, j, 0) for i in range(k - 1) for j in range(k)]
+    edges += [(i, j, 1) for i in range(k) for j in range(k - 1)]
+    rng.shuffle(edges)
+    cells = set((2 * i, 2 * j) for i in range(k) for j in range(k))
+    for i, j, d in edges:                     # randomized Kruskal: a random spanning tree
+        a = i * k + j
+        b = (i + 1) * k + j if d == 0 else i * k + j + 1
+        ra, rb = find(a), find(b)
+        if ra != rb:
+            parent[ra] = rb
+            cells.add((2 * i + 1, 2 * j) if d == 0 else (2 * i, 2 * j + 1))
+    nxt = {}                                  # boundary unit edges, inside on the left
+    for (x, y) in cells:
+        if (x, y - 1) not in cells: nxt[(x, y)] = (x + 1, y)
+        if (x + 1, y) not in cells: nxt[(x + 1, y)] = (x + 1, y + 1)
+        if (x, y + 1) not in cells: nxt[(x + 1, y + 1)] = (x, y + 1)
+        if (x - 1, y) not in cells: nxt[(x, y + 1)] = (x, y)
+    ring, p = [(0, 0)], nxt[(0, 0)]
+    while p != (0, 0):
+        ring.append(p)
+        p = nxt[p]
+    m = len(ring)
+    def turn(a, b, c):
+        return (b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0]) != 0
+    pts = [ring[i] for i in range(m) if turn(ring[i - 1], ring[i], ring[(i + 1) % m])]
+elif kind == "bars":
     columns = max(2, n // 4)
     def steps(lo, hi):
         hs = [rng.randint(lo, hi) for _ in range(columns)]
@@ -59,5 +95,5 @@ elif kind == "rectilinear":
         ring = out
     pts = ring
 else:
-    sys.exit(f"unknown kind {kind!r}: use star, convex or rectilinear")
+    sys.exit(f"unknown kind {kind!r}: use star, convex, maze or bars")
 print("POLYGON ((" + ", ".join(f"{x} {y}" for x, y in pts + pts[:1]) + "))")

@@ -133,7 +133,7 @@ fn main() -> Result<(), String> {
     let options = Options::default();
     let start = Instant::now();
     let mut triangles = 0;
-    for (k, raw) in raws.iter().enumerate() {
+    for (k, raw) in raws.into_iter().enumerate() {
         let outcome = process_raw("bench", k, raw, &options);
         match outcome.result {
             Ok(solved) => triangles += solved.triangulation.triangles.len(),

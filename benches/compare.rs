@@ -5,21 +5,21 @@
 //! Run (release build, as every `cargo bench`):
 //!
 //! ```text
-//! cargo bench --bench compare -- [--sizes 1000,10000,100000,1000000] [--shapes star,rectilinear]
+//! cargo bench --bench compare -- [--sizes 1000,10000,100000,1000000] [--shapes star,maze,bars]
 //!     [--max-seconds 10] [--kill-after 120] [--runs 5] [--dp-max 2000] [--seed 1] [--verify]
 //!     [--fixtures water-huge,water-huge2,water-huge3,hilbert] [--fixtures-dir DIR] [--no-fixtures]
 //! ```
 //!
 //! or `bench/compare.sh [options]`. What is measured:
 //!
-//! - Inputs: the families of `benches/common` (`star`, `rectilinear`) at each nominal size, and
+//! - Inputs: the families of `benches/common` (`star`, `maze`, `bars`) at each nominal size, and
 //!   the largest fixtures of mapbox/earcut (`fixtures/earcut/`). minitri does not do
 //!   holes yet, so a fixture with holes gets earcut alone ("holes: n/a" for the others), then a
 //!   second row with its outer ring alone, for all of them.
 //! - Each measurement runs in a fresh worker process (this binary, `--worker`), which builds the
 //!   input from the seed, then times only the algorithm: `validate` is `Polygon::from_raw`
 //!   (exact decimals to grid, validation); `minitri`, `ear` and `asano` are
-//!   `minitri::triangulate` on the validated polygon; `earcut` is a fresh `earcut::Earcut` on the
+//!   `minitri::triangulate_with` on the validated polygon; `earcut` is a fresh `earcut::Earcut` on the
 //!   same coordinates as `f64`. Up to `--runs` runs, stopping once they add up to 2 s; the table
 //!   gives the median. Every worker prints a fingerprint of its input, and the parent checks that
 //!   all workers of a row saw the same one.
@@ -35,7 +35,7 @@
 mod common;
 
 use common::Shape;
-use minitri::{triangulate, Algorithm, Polygon, RawPolygon};
+use minitri::{triangulate_with, Algorithm, Polygon, RawPolygon};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::collections::HashMap;
 use std::fmt::Write as _;
@@ -171,8 +171,9 @@ fn load(case: &str) -> Result<Input, String> {
 fn parse_shape(name: &str) -> Result<Shape, String> {
     match name {
         "star" => Ok(Shape::Star),
-        "rectilinear" => Ok(Shape::Rectilinear),
-        _ => Err(format!("unknown shape {name:?} (star, rectilinear)")),
+        "maze" => Ok(Shape::Maze),
+        "bars" => Ok(Shape::Bars),
+        _ => Err(format!("unknown shape {name:?} (star, maze, bars)")),
     }
 }
 
@@ -245,7 +246,7 @@ fn worker(case: &str, algo: &str, runs: usize, verify: bool) -> Result<String, S
             };
             let mut result = None;
             repeat(&mut || {
-                let (r, t, p) = measure(|| triangulate(&polygon, algorithm, &unlimited));
+                let (r, t, p) = measure(|| triangulate_with(&polygon, algorithm, &unlimited));
                 result = Some(r);
                 (t, p)
             });
@@ -297,11 +298,11 @@ struct Config {
 }
 
 const USAGE: &str =
-    "usage: cargo bench --bench compare -- [--sizes N,N,..] [--shapes star,rectilinear]
+    "usage: cargo bench --bench compare -- [--sizes N,N,..] [--shapes star,maze,bars]
     [--max-seconds S] [--kill-after K] [--runs R] [--dp-max N] [--seed N] [--verify]
     [--fixtures NAME,NAME,..] [--fixtures-dir DIR] [--no-fixtures]
   --sizes         nominal sizes (default 1000,10000,100000,1000000; 1e5 and 10^5 work too)
-  --shapes        generated families (default star,rectilinear)
+  --shapes        generated families (default star,maze,bars)
   --max-seconds   skip an algorithm's larger sizes once one run took more than S s (default 10)
   --kill-after    kill a worker still running after K s, input generation included (default 120)
   --runs          at most R runs per measurement, fewer once they add up to 2 s (default 5)
@@ -326,7 +327,7 @@ fn parse_size(s: &str) -> Result<usize, String> {
 
 fn parse_args(args: &[String]) -> Result<Config, String> {
     let mut c = Config {
-        shapes: vec![Shape::Star, Shape::Rectilinear],
+        shapes: vec![Shape::Star, Shape::Maze, Shape::Bars],
         sizes: vec![1_000, 10_000, 100_000, 1_000_000],
         max_seconds: 10.0,
         kill_after: 120.0,

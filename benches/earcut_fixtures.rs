@@ -26,7 +26,7 @@ mod common;
 
 use common::Fixture;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, SamplingMode};
-use minitri::{triangulate, Algorithm, Options, Polygon, RawPolygon};
+use minitri::{triangulate_with, Algorithm, Options, Polygon, RawPolygon};
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 
@@ -111,7 +111,7 @@ fn run(cases: &[&Case], job: Job, options: &Options) -> usize {
                     continue;
                 };
                 if let Job::Minitri(algorithm) = job {
-                    let t = triangulate(&p, algorithm, options).expect("valid polygons");
+                    let t = triangulate_with(&p, algorithm, options).expect("valid polygons");
                     total += t.triangles.len();
                 }
             }
@@ -138,9 +138,9 @@ fn summary(cases: &[Case], options: &Options) {
         nonempty += usize::from(earcut > 0);
         unread += usize::from(f.raw.is_err());
         let Ok(p) = case.validate() else { continue };
-        let plain = triangulate(&p, Algorithm::Ear, options).expect("valid");
+        let plain = triangulate_with(&p, Algorithm::Ear, options).expect("valid");
         let start = Instant::now();
-        let t = triangulate(&p, Algorithm::Minitri, options).expect("valid");
+        let t = triangulate_with(&p, Algorithm::Minitri, options).expect("valid");
         let took = start.elapsed();
         let proved = if t.optimal {
             "yes".to_string()

@@ -1,14 +1,15 @@
 //! MINITRI beside minitri's plain triangulation (`ear`), the `earcut` crate and, up to 2000
 //! vertices, the Asano DP, on the same inputs: random star-shaped polygons in general position
-//! and random rectilinear bars (many degenerate triangles), n = 10^3 .. 10^6 (`benches/common`).
+//! and two random rectilinear families (many degenerate triangles): mazes (local visibility) and
+//! bars (an open corridor, quadratic visibility), n = 10^3 .. 10^6 (`benches/common`).
 //! Only the triangulation is timed: the polygon is built and validated beforehand; `earcut` gets
 //! the same coordinates as `f64`.
 //!
 //! Run: `cargo bench --bench minitri`. Environment:
 //! - `MINITRI_BENCH_MAX_N` (default 100000): the largest size (sizes are 10^3, 10^4, ...);
-//! - `MINITRI_BENCH_RECTILINEAR_MAX_N` (default 1000): the largest size at which `minitri` itself
-//!   is benchmarked on the rectilinear bars, where it is still slow (minutes above ~8000
-//!   vertices) until step 3 is optimised; the other functions follow `MINITRI_BENCH_MAX_N`.
+//! - `MINITRI_BENCH_BARS_MAX_N` (default 1000): the largest size at which `minitri` itself
+//!   is benchmarked on the bars, where it is quadratic (minutes above ~8000 vertices, issue 3);
+//!   the other functions follow `MINITRI_BENCH_MAX_N`.
 //!
 //! The one-run table with peak memory and triangle counts is `benches/compare.rs`.
 
@@ -16,7 +17,7 @@ mod common;
 
 use common::Shape;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, SamplingMode};
-use minitri::{triangulate, Algorithm, Options};
+use minitri::{triangulate_with, Algorithm, Options};
 use std::hint::black_box;
 use std::time::Duration;
 
@@ -37,8 +38,8 @@ fn env_usize(name: &str, default: usize) -> usize {
 fn family(c: &mut Criterion, shape: Shape) {
     let max_n = env_usize("MINITRI_BENCH_MAX_N", 100_000);
     let minitri_max_n = match shape {
-        Shape::Star => max_n,
-        Shape::Rectilinear => env_usize("MINITRI_BENCH_RECTILINEAR_MAX_N", 1000),
+        Shape::Star | Shape::Maze => max_n,
+        Shape::Bars => env_usize("MINITRI_BENCH_BARS_MAX_N", 1000),
     };
     let options = Options {
         dp_limit: usize::MAX,
@@ -63,7 +64,7 @@ fn family(c: &mut Criterion, shape: Shape) {
         if n <= minitri_max_n {
             group.bench_with_input(BenchmarkId::new("minitri", n), &polygon, |b, p| {
                 b.iter(|| {
-                    triangulate(black_box(p), Algorithm::Minitri, &options).expect("hole-free")
+                    triangulate_with(black_box(p), Algorithm::Minitri, &options).expect("hole-free")
                 })
             });
         } else {
@@ -73,14 +74,14 @@ fn family(c: &mut Criterion, shape: Shape) {
             );
         }
         group.bench_with_input(BenchmarkId::new("ear", n), &polygon, |b, p| {
-            b.iter(|| triangulate(black_box(p), Algorithm::Ear, &options).expect("hole-free"))
+            b.iter(|| triangulate_with(black_box(p), Algorithm::Ear, &options).expect("hole-free"))
         });
         group.bench_with_input(BenchmarkId::new("earcut", n), &coords, |b, xy| {
             b.iter(|| common::earcut(black_box(xy), &[]))
         });
         if polygon.len() <= DP_MAX_N {
             group.bench_with_input(BenchmarkId::new("asano", n), &polygon, |b, p| {
-                b.iter(|| triangulate(black_box(p), Algorithm::Asano, &options).expect("fits"))
+                b.iter(|| triangulate_with(black_box(p), Algorithm::Asano, &options).expect("fits"))
             });
         }
     }
@@ -91,9 +92,13 @@ fn star(c: &mut Criterion) {
     family(c, Shape::Star);
 }
 
-fn rectilinear(c: &mut Criterion) {
-    family(c, Shape::Rectilinear);
+fn maze(c: &mut Criterion) {
+    family(c, Shape::Maze);
 }
 
-criterion_group!(benches, star, rectilinear);
+fn bars(c: &mut Criterion) {
+    family(c, Shape::Bars);
+}
+
+criterion_group!(benches, star, maze, bars);
 criterion_main!(benches);

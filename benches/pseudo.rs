@@ -3,7 +3,7 @@
 //!
 //! - group `pseudo_greedy`: the linear-time greedy of Section 5 (`pseudo::minimal`) alone, on
 //!   the plain triangulation, for random star-shaped polygons (general position) and rectilinear
-//!   bars (many collinear vertices) of 10^3 to 10^6 vertices. Time per vertex should stay flat
+//!   mazes (many collinear vertices) of 10^3 to 10^6 vertices. Time per vertex should stay flat
 //!   (Theorem 5); throughput is reported in vertices.
 //! - group `pseudo_end_to_end`: the same with the O(n log n) plain triangulation included, as
 //!   `--algorithm pseudo` runs it.
@@ -26,7 +26,7 @@ fn greedy(c: &mut Criterion) {
     for (name, end_to_end) in [("pseudo_greedy", false), ("pseudo_end_to_end", true)] {
         let mut group = c.benchmark_group(name);
         group.sampling_mode(SamplingMode::Flat);
-        for shape in [Shape::Star, Shape::Rectilinear] {
+        for shape in [Shape::Star, Shape::Maze] {
             for n in [1_000, 10_000, 100_000, 1_000_000] {
                 let polygon = common::polygon(&shape.points(n, 7));
                 let start = ear::triangulate(&polygon).expect("plain");

@@ -2,7 +2,7 @@
 
 use clap::{ColorChoice, CommandFactory, FromArgMatches, Parser, ValueEnum};
 use clap_complete::Shell;
-use minitri::io::write::OutputFormat;
+use minitri::io::write::{svg, OutputFormat};
 use minitri::{Algorithm, Format, Options};
 use std::path::PathBuf;
 
@@ -14,6 +14,7 @@ macro_rules! examples {
   cat shape.wkt | minitri                          read standard input (also: minitri < shape.wkt)
   minitri a.wkt b.geojson > both.json              several inputs, one document, in input order
   minitri --to svg -o u.svg u_shape.wkt            draw it
+  minitri --to svg --labels --verify big.wkt > b.svg   vertex numbers at any size, faults in red
   minitri --to geojson u_shape.wkt                 the triangles for a GIS (also --to wkt)
   minitri --from vertices points.txt               one `x y` vertex per line (also --from wkt, geojson)
   minitri --verify shapes/                         a directory, every output checked by the DP too
@@ -67,9 +68,13 @@ pub struct Flags {
     #[arg(short, long, value_name = "PATH")]
     pub output: Option<PathBuf>,
     /// Also run every other exact algorithm that applies and check every output independently;
-    /// exit status 3 if anything disagrees or is invalid
+    /// exit status 3 if anything disagrees or is invalid (with --to svg: drawn in red)
     #[arg(long)]
     pub verify: bool,
+    /// With --to svg: write the vertex numbers whatever the polygon's size (by default only up
+    /// to 60 vertices); their font shrinks where vertices are dense
+    #[arg(long)]
+    pub labels: bool,
     /// Worker threads for a batch (default: all cores)
     #[arg(short, long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
     pub jobs: Option<u32>,
@@ -182,7 +187,15 @@ impl Flags {
     pub fn from_env() -> Flags {
         let mut cmd = Flags::command_for_env();
         let matches = cmd.get_matches_mut();
-        Flags::from_arg_matches(&matches).unwrap_or_else(|e| e.format(&mut cmd).exit())
+        let flags = Flags::from_arg_matches(&matches).unwrap_or_else(|e| e.format(&mut cmd).exit());
+        if flags.labels && flags.to != ToFlag::Svg {
+            cmd.error(
+                clap::error::ErrorKind::ArgumentConflict,
+                "--labels only applies to --to svg",
+            )
+            .exit();
+        }
+        flags
     }
 
     /// Validates the flags into a [`Config`].
@@ -212,7 +225,9 @@ impl Flags {
                 ToFlag::Json => OutputFormat::Json,
                 ToFlag::Geojson => OutputFormat::GeoJson,
                 ToFlag::Wkt => OutputFormat::Wkt,
-                ToFlag::Svg => OutputFormat::Svg,
+                ToFlag::Svg => OutputFormat::Svg(svg::Style {
+                    labels: self.labels,
+                }),
             },
             output: self.output,
             options: Options {

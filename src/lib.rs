@@ -2,6 +2,64 @@
 //!
 //! The path is read ([`io::read`]) -> validate ([`Polygon::from_raw`]) -> triangulate
 //! ([`algo`]) -> verify ([`verify`]) -> write ([`io::write`]); [`pipeline`] runs it.
+//!
+//! # Library use
+//!
+//! Build a [`Polygon`] (from a [`geo_types::Polygon`], see [`geo`] for how coordinates are taken
+//! exactly, or from text with [`io::read::read`]), then [`triangulate`] it. A vertex lying inside
+//! a triangle side (a T-junction, listed as a degenerate triangle) saves one triangle, so
+//! `triangles = n + 2w - 2 - d` for `n` vertices, `w` holes and `d` degenerate triangles.
+//!
+//! ```
+//! use geo_types::polygon;
+//! use minitri::{Algorithm, Polygon};
+//!
+//! // A U: a 3 x 1 bar with two 1 x 1 arms; 12 vertices, 4 of them flat (on a straight side).
+//! let u = polygon![
+//!     (x: 0.0, y: 0.0), (x: 1.0, y: 0.0), (x: 2.0, y: 0.0), (x: 3.0, y: 0.0),
+//!     (x: 3.0, y: 1.0), (x: 3.0, y: 2.0), (x: 2.0, y: 2.0), (x: 2.0, y: 1.0),
+//!     (x: 1.0, y: 1.0), (x: 1.0, y: 2.0), (x: 0.0, y: 2.0), (x: 0.0, y: 1.0),
+//! ];
+//! let polygon = Polygon::try_from(&u)?;
+//! assert_eq!((polygon.len(), polygon.holes()), (12, 0));
+//!
+//! let t = minitri::triangulate(&polygon, Algorithm::Minitri)?;
+//! // Every T-junction saves a triangle: n + 2w - 2 - d.
+//! assert_eq!(t.triangles.len(), 12 + 0 - 2 - t.degenerate.len());
+//! // 5 is the minimum: 5 T-junctions; the O(n^3) dynamic program finds the same count.
+//! assert_eq!((t.triangles.len(), t.degenerate.len()), (5, 5));
+//! assert!(t.optimal);
+//! assert_eq!(minitri::triangulate(&polygon, Algorithm::Asano)?.triangles.len(), 5);
+//! // The independent checker accepts it.
+//! assert!(minitri::verify::check(&polygon, &t).valid);
+//!
+//! // Out as geo-types, with the input coordinates: 5 triangles covering the U's area, 5.
+//! let triangles = minitri::geo::triangles(&polygon, &t);
+//! let area: f64 = triangles.iter().map(|t| t.to_polygon().exterior().0.windows(2)
+//!     .map(|w| w[0].x * w[1].y - w[1].x * w[0].y).sum::<f64>() / 2.0).sum();
+//! assert_eq!((triangles.len(), area), (5, 5.0));
+//! # Ok::<(), minitri::Error>(())
+//! ```
+//!
+//! Coordinates are the decimals as written: `(0.1, 0.3)` lies exactly on the segment from
+//! `(0, 0)` to `(0.2, 0.6)`, although not in binary floating point, so this quadrilateral needs
+//! only 1 triangle.
+//!
+//! ```
+//! use geo_types::polygon;
+//! let quad = polygon![(x: 0.0, y: 0.0), (x: 0.1, y: 0.3), (x: 0.2, y: 0.6), (x: 0.0, y: 1.0)];
+//! let polygon = minitri::Polygon::try_from(&quad)?;
+//! let t = minitri::triangulate(&polygon, minitri::Algorithm::Minitri)?;
+//! assert_eq!((t.triangles.len(), t.degenerate.len()), (1, 1));
+//! // The degenerate triangle, out as geo-types: (0.1, 0.3) is its middle corner, bit for bit.
+//! let [_, b, _] = minitri::geo::degenerate(&polygon, &t)[0].to_array();
+//! assert_eq!((b.x, b.y), (0.1, 0.3));
+//! // NaN is refused with a message naming the place.
+//! let bad = polygon![(x: 0.0, y: 0.0), (x: f64::NAN, y: 0.0), (x: 0.0, y: 1.0)];
+//! let error = minitri::Polygon::try_from(&bad).unwrap_err();
+//! assert_eq!(error.to_string(), "polygon 0, outer ring, vertex 1: x coordinate `NaN` is not a finite number");
+//! # Ok::<(), minitri::Error>(())
+//! ```
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 #![deny(rustdoc::broken_intra_doc_links)]
@@ -26,6 +84,7 @@ macro_rules! order_from_cmp {
 
 pub mod algo;
 pub mod batch;
+pub mod geo;
 pub mod geom;
 pub mod io;
 pub mod pipeline;
@@ -38,4 +97,4 @@ pub use geom::decimal::{Decimal, NumberError};
 pub use geom::polygon::{Polygon, Ring, Warning};
 pub use geom::validate::InvalidPolygon;
 pub use io::read::{Format, ParseError, RawPolygon};
-pub use pipeline::{process, solve, triangulate, Error, Options, Outcome};
+pub use pipeline::{process, solve, triangulate, triangulate_with, Error, Options, Outcome};

@@ -40,6 +40,14 @@ fn run() -> anyhow::Result<ExitCode> {
         return Ok(ExitCode::SUCCESS);
     }
     let config = flags.into_config();
+    // Ctrl-C: remove the temporary files of outputs being written and stop (exit status 130, as
+    // a shell reports a process stopped by SIGINT); outputs already written stay, complete.
+    // Without the handler a temporary file could be left beside its target.
+    ctrlc::set_handler(|| {
+        eprintln!("minitri: interrupted");
+        minitri::batch::exit_removing_temporaries(130)
+    })
+    .context("cannot install the Ctrl-C handler")?;
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(config.jobs.unwrap_or(0))
         .build()

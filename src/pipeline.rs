@@ -99,6 +99,9 @@ pub struct AlgorithmCheck {
     /// The independent checker's verdict.
     #[serde(flatten)]
     pub check: Check,
+    /// The output checked (for drawing it; not serialised).
+    #[serde(skip)]
+    pub triangulation: Triangulation,
 }
 
 /// A triangulated polygon.
@@ -158,11 +161,39 @@ impl fmt::Display for Outcome {
     }
 }
 
-/// Triangulates a valid polygon with one algorithm.
+/// Triangulates a valid polygon with one algorithm and the default [`Options`] (for the exact
+/// algorithms on polygons with holes: a search of at most 10 s, then the best found with
+/// `optimal: false`; for `asano`: at most [`asano::DEFAULT_LIMIT`] vertices).
 ///
 /// # Errors
-/// [`TriangulateError`] when the algorithm does not apply (holes, size, not implemented).
+/// [`TriangulateError`] when the algorithm does not apply (holes, size).
+///
+/// # Examples
+/// ```
+/// use geo_types::polygon;
+/// use minitri::{Algorithm, Polygon};
+/// // A square with a vertex in the middle of its bottom side: with the diagonals from the top
+/// // left corner, that vertex lies inside a side, so 2 triangles (n - 2 - d = 5 - 2 - 1) do;
+/// // and 1 cannot, the square not being a triangle.
+/// let square = polygon![(x: 0, y: 0), (x: 1, y: 0), (x: 2, y: 0), (x: 2, y: 2), (x: 0, y: 2)];
+/// let polygon = Polygon::try_from(&square)?;
+/// let t = minitri::triangulate(&polygon, Algorithm::Minitri)?;
+/// assert_eq!((t.triangles.len(), t.degenerate.len()), (2, 1));
+/// # Ok::<(), minitri::Error>(())
+/// ```
 pub fn triangulate(
+    polygon: &Polygon,
+    algorithm: Algorithm,
+) -> Result<Triangulation, TriangulateError> {
+    triangulate_with(polygon, algorithm, &Options::default())
+}
+
+/// Triangulates a valid polygon with one algorithm and the limits of `options` (its
+/// `algorithm` and `verify` are not used here).
+///
+/// # Errors
+/// [`TriangulateError`] when the algorithm does not apply (holes, size).
+pub fn triangulate_with(
     polygon: &Polygon,
     algorithm: Algorithm,
     options: &Options,
@@ -179,9 +210,16 @@ pub fn triangulate(
     }
 }
 
-/// Environment variable that makes [`solve`], when verifying, drop one triangle of every output
-/// before checking it: a fault injected on purpose, for the tests of `--verify` only.
+/// Environment variable that makes [`solve`], when verifying, corrupt the chosen algorithm's
+/// output before checking it: a fault injected on purpose, for the tests of `--verify` only.
+/// With the value [`CORRUPT_WITH_EAR`], the output is replaced by `ear`'s valid but not minimal
+/// triangulation, still labelled as the chosen algorithm (the exact algorithms then disagree
+/// although every check passes, when the polygon has a T-junction to use); with any other value,
+/// its last triangle is dropped (the checks fail).
 pub const CORRUPT_FOR_TESTS: &str = "MINITRI_CORRUPT_FOR_TESTS";
+
+/// The value of [`CORRUPT_FOR_TESTS`] that swaps in `ear`'s triangulation.
+pub const CORRUPT_WITH_EAR: &str = "ear";
 
 /// Triangulates a valid polygon as `options` say, verifying if asked.
 ///
@@ -191,10 +229,23 @@ pub fn solve(polygon: &Polygon, options: &Options) -> Result<Solved, Error> {
     if options.algorithm.is_pseudo() {
         return solve_pseudo(polygon, options);
     }
-    let mut triangulation = triangulate(polygon, options.algorithm, options)?;
-    if options.verify && std::env::var_os(CORRUPT_FOR_TESTS).is_some() {
+    let mut triangulation = triangulate_with(polygon, options.algorithm, options)?;
+    if let Some(mode) = std::env::var_os(CORRUPT_FOR_TESTS).filter(|_| options.verify) {
         // Fault injection, so that tests can see --verify catch a wrong output and exit 3.
-        triangulation.triangles.pop();
+        if mode == CORRUPT_WITH_EAR {
+            let Triangulation {
+                triangles,
+                degenerate,
+                ..
+            } = ear::triangulate(polygon)?;
+            triangulation = Triangulation {
+                triangles,
+                degenerate,
+                ..triangulation
+            };
+        } else {
+            triangulation.triangles.pop();
+        }
     }
     let verification = options
         .verify
@@ -245,24 +296,25 @@ fn verify_all(polygon: &Polygon, main: &Triangulation, options: &Options) -> Ver
         if other == main.algorithm {
             continue;
         }
-        match triangulate(polygon, other, options) {
+        match triangulate_with(polygon, other, options) {
             Ok(t) => outputs.push(t),
             Err(e) => skipped.push(format!("{other}: {e}")),
         }
     }
-    let checks: Vec<AlgorithmCheck> = outputs
-        .iter()
-        .map(|t| AlgorithmCheck {
-            algorithm: t.algorithm.name(),
-            triangle_count: t.triangles.len(),
-            degenerate_count: t.degenerate.len(),
-            check: verify::check(polygon, t),
-        })
-        .collect();
     let exact: Vec<(Algorithm, usize)> = outputs
         .iter()
         .filter(|t| t.algorithm.is_minimum())
         .map(|t| (t.algorithm, t.triangles.len()))
+        .collect();
+    let checks: Vec<AlgorithmCheck> = outputs
+        .into_iter()
+        .map(|t| AlgorithmCheck {
+            algorithm: t.algorithm.name(),
+            triangle_count: t.triangles.len(),
+            degenerate_count: t.degenerate.len(),
+            check: verify::check(polygon, &t),
+            triangulation: t,
+        })
         .collect();
     let disagreement = verify::agreement(&exact);
     let ok = disagreement.is_none() && checks.iter().all(|c| c.check.valid);
@@ -292,14 +344,19 @@ pub fn process(source: &str, text: &str, format: Format, options: &Options) -> V
         Ok(raws) => raws,
         Err(e) => return vec![unreadable(source, Error::Parse(e))],
     };
-    raws.iter()
+    raws.into_iter()
         .enumerate()
         .map(|(index, raw)| process_raw(source, index, raw, options))
         .collect()
 }
 
 /// Validates and triangulates polygon `index` of `source`, as read.
-pub fn process_raw(source: &str, index: usize, raw: &RawPolygon, options: &Options) -> Outcome {
+///
+/// Takes the polygon as read by value and frees it once validated: the decimals as read take
+/// 64 bytes a vertex (more with the reader's spare capacity), the validated [`Polygon`] holds
+/// the same coordinates on its integer grid, and a huge polygon should not carry both through
+/// the triangulation.
+pub fn process_raw(source: &str, index: usize, raw: RawPolygon, options: &Options) -> Outcome {
     let mut outcome = Outcome {
         source: source.to_string(),
         index: Some(index),
@@ -307,7 +364,9 @@ pub fn process_raw(source: &str, index: usize, raw: &RawPolygon, options: &Optio
         result: Err(Error::Invalid(Vec::new())),
         warnings: Vec::new(),
     };
-    match Polygon::from_raw_all_errors(raw) {
+    let validated = Polygon::from_raw_all_errors(&raw);
+    drop(raw);
+    match validated {
         Err(errors) => outcome.result = Err(Error::Invalid(errors)),
         Ok((polygon, warnings)) => {
             outcome.warnings = warnings;

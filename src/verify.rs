@@ -16,7 +16,11 @@
 //!    degenerate triangles share their middle vertex (in particular none is listed twice).
 //!
 //! Otherwise `problems` holds human sentences (at most [`MAX_PROBLEMS`], then `... and N more`)
-//! naming triangles by position in their list (from 0) and by INPUT vertex numbers.
+//! naming triangles by position in their list (from 0) and by INPUT vertex numbers, and
+//! `faults` says WHERE, for drawing (all of them, not only the first [`MAX_PROBLEMS`]): the
+//! triangles failing checks 1-2, the degenerate triangles failing check 6, and the stretches of
+//! check 3 where the boundaries do not cancel (beside each lies a gap, an overlap or a triangle
+//! outside the polygon). Checks 4 and 5 are global and have no place of their own.
 //!
 //! # Why the boundary chain proves a partition
 //!
@@ -75,6 +79,30 @@ pub struct Check {
     pub valid: bool,
     /// What is wrong, as sentences; at most [`MAX_PROBLEMS`] and a final `... and N more`.
     pub problems: Vec<String>,
+    /// Where it is wrong (not serialised: the sentences name the same places).
+    #[serde(skip)]
+    pub faults: Faults,
+}
+
+/// The places a check found wrong, for drawing them; empty when the triangulation is valid.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Faults {
+    /// Positions in `triangles` of the triangles failing checks 1-2 (bad or repeated index, zero
+    /// area, clockwise), in increasing order.
+    pub triangles: Vec<usize>,
+    /// Positions in `degenerate` of the degenerate triangles failing checks 1 or 6.
+    pub degenerate: Vec<usize>,
+    /// Check 3: each stretch `[from, to]` of grid points along which (triangles covering) minus
+    /// (polygon) is higher on the left than on the right; so the left side, near the stretch, is
+    /// covered too often (overlap, or a triangle outside) or the right side too rarely (a gap).
+    pub stretches: Vec<[Point; 2]>,
+}
+
+impl Faults {
+    /// Whether nothing was found at any place.
+    pub fn is_empty(&self) -> bool {
+        self.triangles.is_empty() && self.degenerate.is_empty() && self.stretches.is_empty()
+    }
 }
 
 /// Checks, exactly, that `t` is a valid triangulation of `polygon` (see the module documentation
@@ -109,11 +137,13 @@ pub fn agreement(results: &[(Algorithm, usize)]) -> Option<String> {
     ))
 }
 
-/// Collects problems up to [`MAX_PROBLEMS`], counting the rest without formatting them.
+/// Collects problems up to [`MAX_PROBLEMS`], counting the rest without formatting them, and
+/// every fault's place.
 #[derive(Default)]
 struct Problems {
     list: Vec<String>,
     more: usize,
+    faults: Faults,
 }
 
 impl Problems {
@@ -129,9 +159,14 @@ impl Problems {
         if self.more > 0 {
             self.list.push(format!("... and {} more", self.more));
         }
+        self.faults.triangles.sort_unstable();
+        self.faults.triangles.dedup();
+        self.faults.degenerate.sort_unstable();
+        self.faults.degenerate.dedup();
         Check {
             valid: self.list.is_empty(),
             problems: self.list,
+            faults: self.faults,
         }
     }
 }
@@ -226,18 +261,17 @@ fn check_triangles(polygon: &Polygon, t: &Triangulation, problems: &mut Problems
     for (k, &tri) in t.triangles.iter().enumerate() {
         if let Some(problem) = index_problem(polygon, "triangle", k, tri) {
             problems.add(|| problem);
+            problems.faults.triangles.push(k);
             continue;
         }
         let [a, b, c] = tri.map(|i| polygon.point(i));
-        match cross(a, b, c).cmp(&0) {
-            Ordering::Greater => {}
-            Ordering::Equal => {
-                problems.add(|| format!("{} has zero area", name(polygon, "triangle", k, tri)))
-            }
-            Ordering::Less => {
-                problems.add(|| format!("{} is clockwise", name(polygon, "triangle", k, tri)))
-            }
-        }
+        let what = match cross(a, b, c).cmp(&0) {
+            Ordering::Greater => continue,
+            Ordering::Equal => "has zero area",
+            Ordering::Less => "is clockwise",
+        };
+        problems.add(|| format!("{} {what}", name(polygon, "triangle", k, tri)));
+        problems.faults.triangles.push(k);
     }
 }
 
@@ -302,6 +336,8 @@ fn check_sides_cancel(polygon: &Polygon, mut sides: Vec<[usize; 2]>, problems: &
             if new_sum != sum {
                 if sum != 0 {
                     problems.add(|| uncancelled(polygon, start, at, sum));
+                    let stretch = if sum > 0 { [start, at] } else { [at, start] };
+                    problems.faults.stretches.push(stretch);
                 }
                 sum = new_sum;
                 start = at;
@@ -339,6 +375,7 @@ fn check_degenerate(polygon: &Polygon, t: &Triangulation, problems: &mut Problem
     for (k, &deg) in t.degenerate.iter().enumerate() {
         if let Some(problem) = index_problem(polygon, "degenerate triangle", k, deg) {
             problems.add(|| problem);
+            problems.faults.degenerate.push(k);
             continue;
         }
         let [a, b, c] = deg.map(|i| polygon.point(i));
@@ -350,6 +387,7 @@ fn check_degenerate(polygon: &Polygon, t: &Triangulation, problems: &mut Problem
                     name(polygon, "degenerate triangle", k, deg)
                 )
             });
+            problems.faults.degenerate.push(k);
             continue;
         }
         let (line, _) = line_through(a, c);
@@ -369,6 +407,7 @@ fn check_degenerate(polygon: &Polygon, t: &Triangulation, problems: &mut Problem
         if b != b2 {
             continue;
         }
+        problems.faults.degenerate.push(second);
         let this = name(polygon, "degenerate triangle", second, t.degenerate[second]);
         if (a, c) == (a2, c2) {
             problems.add(|| format!("{this} repeats degenerate triangle {first}"));
@@ -412,6 +451,7 @@ fn check_degenerate(polygon: &Polygon, t: &Triangulation, problems: &mut Problem
         let end = sides.partition_point(|s| (s.0, s.1) <= (query.line, query.lo));
         let covered = end > 0 && sides[end - 1].0 == query.line && reach[end - 1] >= query.hi;
         if !covered {
+            problems.faults.degenerate.push(query.k);
             let deg = t.degenerate[query.k];
             problems.add(|| {
                 let [ia, ib, ic] = deg.map(|i| polygon.id(i));

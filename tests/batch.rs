@@ -464,3 +464,73 @@ fn quiet_silences_the_summary_and_bad_command_lines_exit_2() {
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("file is not a directory"), "{err}");
 }
+
+/// A rectilinear bar of `columns` unit columns (bottom heights 0..=4, top 6..=12, pseudo-random):
+/// an open corridor runs its length, so MINITRI takes seconds on a few thousand columns.
+fn slow_bar(columns: i64) -> String {
+    let mut next = crate::util::xorshift(7);
+    let bottom: Vec<i64> = (0..columns).map(|_| next(5)).collect();
+    let top: Vec<i64> = (0..columns).map(|_| 6 + next(7)).collect();
+    let mut ring: Vec<(i64, i64)> = Vec::new();
+    for (x, &h) in (0..).zip(&bottom) {
+        ring.extend([(x, h), (x + 1, h)]);
+    }
+    for (x, &h) in top.iter().enumerate().rev() {
+        let x = x as i64;
+        ring.extend([(x + 1, h), (x, h)]);
+    }
+    ring.dedup();
+    let points: Vec<String> = ring.iter().map(|(x, y)| format!("{x} {y}")).collect();
+    format!("POLYGON (({}, {}))\n", points.join(", "), points[0])
+}
+
+/// Ctrl-C (SIGINT) during a batch: exit status 130, the outputs finished before it stay complete,
+/// the one being written is neither left truncated nor as a temporary file.
+#[cfg(unix)]
+#[test]
+fn interrupt_leaves_complete_outputs_and_no_temporary_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("in");
+    write_tree(
+        &input,
+        &[
+            ("a.wkt", "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0))\n"),
+            ("b/slow.wkt", &slow_bar(6000)),
+        ],
+    );
+    let out = dir.path().join("out");
+    let bin = assert_cmd::cargo::cargo_bin("minitri");
+    let mut child = std::process::Command::new(bin)
+        .current_dir(dir.path())
+        .args(["--jobs", "1", "in", "-o", "out"])
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("start minitri");
+    let temporary = |root: &Path| {
+        root.is_dir()
+            && files_below(root)
+                .iter()
+                .any(|p| p.to_string_lossy().ends_with(".tmp"))
+    };
+    let start = std::time::Instant::now();
+    while !temporary(&out.join("b")) {
+        assert!(
+            child.try_wait().unwrap().is_none(),
+            "minitri finished before the slow output was begun"
+        );
+        assert!(start.elapsed().as_secs() < 120, "no temporary file seen");
+        std::thread::sleep(std::time::Duration::from_millis(5));
+    }
+    let killed = std::process::Command::new("kill")
+        .args(["-INT", &child.id().to_string()])
+        .status()
+        .expect("run kill");
+    assert!(killed.success());
+    let output = child.wait_with_output().expect("wait for minitri");
+    assert_eq!(output.status.code(), Some(130));
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(stderr.contains("minitri: interrupted"), "{stderr}");
+    assert_eq!(files_below(&out), vec![PathBuf::from("a.json")]);
+    let done = json(&fs::read_to_string(out.join("a.json")).unwrap());
+    assert_eq!(done["polygons"][0]["triangle_count"], 2);
+}

@@ -8,10 +8,15 @@
 //! - [`star`]: a random star-shaped polygon in general position: random angles and radii around
 //!   the origin on an integer grid, sorted exactly by angle (then by distance), so the polygon is
 //!   simple; no flat vertices, and (on a grid this fine) collinear triples are rare.
-//! - [`rectilinear`]: a random rectilinear "bar" of about 0.83 n vertices (`n / 4` columns, as in
-//!   `bench/polygon.py`): the bottom follows random step heights 0..=4 and the top 6..=12, so long
-//!   runs of horizontal edges at equal heights see each other (many degenerate triangles).
-//!   Consecutive equal points and flat vertices are removed, as in `bench/polygon.py`.
+//! - [`maze`]: a random rectilinear polygon of about n vertices: a random spanning tree of a
+//!   k x k grid, each node and tree edge a unit cell, the union's boundary walked (no flat
+//!   vertices). Every vertex lies on a grid line shared with many others, so degenerate triangles
+//!   abound (d is about 0.37 n), but corridors are one cell wide and turn often, so each vertex
+//!   sees few others: the realistic rectilinear case (building footprints, floor plans).
+//! - [`bars`]: the adversarial rectilinear case, a random "bar" of about 0.83 n vertices
+//!   (`n / 4` columns, as in `bench/polygon.py`): the bottom follows random step heights 0..=4
+//!   and the top 6..=12, so an open corridor 4 < y < 6 runs the whole length and Theta(n^2)
+//!   vertex pairs see each other (issue 3). Consecutive equal points and flat vertices are removed.
 //!
 //! Both give the outer ring counter-clockwise as integer points, which [`polygon`] turns into a
 //! validated [`minitri::Polygon`] through the public API (exact decimals, `Polygon::from_raw`)
@@ -28,8 +33,12 @@ use std::cmp::Ordering;
 pub enum Shape {
     /// Random star-shaped polygon in general position.
     Star,
-    /// Random rectilinear bar with many degenerate triangles.
-    Rectilinear,
+    /// Random rectilinear maze (spanning tree of cells): many degenerate triangles, local
+    /// visibility.
+    Maze,
+    /// Random rectilinear bar with an open corridor: many degenerate triangles, quadratic
+    /// visibility.
+    Bars,
 }
 
 impl Shape {
@@ -37,7 +46,8 @@ impl Shape {
     pub fn name(self) -> &'static str {
         match self {
             Shape::Star => "star",
-            Shape::Rectilinear => "rectilinear",
+            Shape::Maze => "maze",
+            Shape::Bars => "bars",
         }
     }
 
@@ -45,7 +55,8 @@ impl Shape {
     pub fn points(self, n: usize, seed: u64) -> Vec<[i64; 2]> {
         match self {
             Shape::Star => star(n, seed),
-            Shape::Rectilinear => rectilinear(n, seed),
+            Shape::Maze => maze(n, seed),
+            Shape::Bars => bars(n, seed),
         }
     }
 }
@@ -118,7 +129,7 @@ pub fn star(n: usize, seed: u64) -> Vec<[i64; 2]> {
 /// A random rectilinear bar: `max(2, n / 4)` unit-wide columns, bottom heights in `0..=4`,
 /// top heights in `6..=12`, walked counter-clockwise; then consecutive equal points and flat
 /// vertices removed (about 0.83 n vertices remain).
-pub fn rectilinear(n: usize, seed: u64) -> Vec<[i64; 2]> {
+pub fn bars(n: usize, seed: u64) -> Vec<[i64; 2]> {
     let mut rng = Rng(seed);
     let columns = (n / 4).max(2) as i64;
     let top: Vec<i64> = (0..columns).map(|_| rng.range(6, 12)).collect();
@@ -137,6 +148,97 @@ pub fn rectilinear(n: usize, seed: u64) -> Vec<[i64; 2]> {
             return ring;
         }
         ring = kept;
+    }
+}
+
+/// A random rectilinear maze of about `n` vertices (`bench/polygon.py maze` draws the same
+/// family): a random spanning tree (randomized Kruskal) of a k x k grid of nodes,
+/// k = round(sqrt(n / 1.72)); node (i, j) is the unit cell (2i, 2j), the tree edge between two
+/// nodes the cell between them; the outer boundary of these cells, counter-clockwise, corners
+/// only. The union is simply connected (a tree) and never pinched: around every lattice point one
+/// of the four cells is a node (always in) and the diagonally opposite one (odd, odd) never is.
+pub fn maze(n: usize, seed: u64) -> Vec<[i64; 2]> {
+    let mut rng = Rng(seed);
+    let k = ((n as f64 / 1.72).sqrt().round() as usize).max(2);
+    let side = 2 * k - 1; // cells per row
+    let mut filled = vec![false; side * side];
+    let cell = |x: usize, y: usize| y * side + x;
+    for i in 0..k {
+        for j in 0..k {
+            filled[cell(2 * i, 2 * j)] = true;
+        }
+    }
+    // Candidate tree edges (node, node, cell between), shuffled (Fisher-Yates).
+    let mut edges: Vec<(usize, usize, usize)> = Vec::with_capacity(2 * k * k);
+    for i in 0..k {
+        for j in 0..k {
+            if i + 1 < k {
+                edges.push((i * k + j, (i + 1) * k + j, cell(2 * i + 1, 2 * j)));
+            }
+            if j + 1 < k {
+                edges.push((i * k + j, i * k + j + 1, cell(2 * i, 2 * j + 1)));
+            }
+        }
+    }
+    for e in (1..edges.len()).rev() {
+        edges.swap(e, (rng.next_u64() % (e as u64 + 1)) as usize);
+    }
+    let mut parent: Vec<usize> = (0..k * k).collect();
+    fn root(parent: &mut [usize], mut a: usize) -> usize {
+        while parent[a] != a {
+            parent[a] = parent[parent[a]];
+            a = parent[a];
+        }
+        a
+    }
+    for (a, b, between) in edges {
+        let (ra, rb) = (root(&mut parent, a), root(&mut parent, b));
+        if ra != rb {
+            parent[ra] = rb;
+            filled[between] = true;
+        }
+    }
+    // Walk the boundary with the inside on the left. At lattice point (x, y) heading in
+    // direction d (0 east, 1 north, 2 west, 3 south), the cells ahead-left and ahead-right
+    // decide: turn right if ahead-right is in, go straight if only ahead-left is in, else turn
+    // left.
+    let inside = |x: i64, y: i64| {
+        x >= 0
+            && y >= 0
+            && (x as usize) < side
+            && (y as usize) < side
+            && filled[cell(x as usize, y as usize)]
+    };
+    const STEP: [[i64; 2]; 4] = [[1, 0], [0, 1], [-1, 0], [0, -1]];
+    // The cell ahead-left / ahead-right of lattice point p in direction d, as its lower-left corner.
+    let ahead = |p: [i64; 2], d: usize| -> ([i64; 2], [i64; 2]) {
+        match d {
+            0 => ([p[0], p[1]], [p[0], p[1] - 1]),
+            1 => ([p[0] - 1, p[1]], [p[0], p[1]]),
+            2 => ([p[0] - 1, p[1] - 1], [p[0] - 1, p[1]]),
+            _ => ([p[0], p[1] - 1], [p[0] - 1, p[1] - 1]),
+        }
+    };
+    let start = [0i64, 0i64]; // lower-left corner of node (0, 0), heading east
+    let (mut p, mut d) = (start, 0usize);
+    let mut ring = Vec::with_capacity(n + 16);
+    loop {
+        let (left, right) = ahead(p, d);
+        let next = if inside(right[0], right[1]) {
+            (d + 3) % 4
+        } else if inside(left[0], left[1]) {
+            d
+        } else {
+            (d + 1) % 4
+        };
+        if next != d || ring.is_empty() {
+            ring.push(p);
+        }
+        d = next;
+        p = [p[0] + STEP[d][0], p[1] + STEP[d][1]];
+        if p == start {
+            return ring;
+        }
     }
 }
 

@@ -80,8 +80,10 @@
 //! | downward | finish `e_v`; insert `e_p` with helper `v`                               |
 //! | upward   | `e` = edge west of `v`; replace helper(e) by `v`                         |
 //!
-//! The status is a `BTreeSet` of `Cut`s compared by exact orientation tests only (as
-//! `geom::validate`'s `Cut`, turned to the `(y, x)` order). Two facts make that comparison exact
+//! The status is a [`Status`] (a treap reached by handle: an edge is compared only when inserted
+//! and when searched for west of a vertex, never to be removed) of `Cut`s compared by exact
+//! orientation tests only (as `geom::validate`'s `Cut`, turned to the `(y, x)` order). Two facts
+//! make that comparison exact
 //! and consistent: (1) status edges are pairwise disjoint closed segments (two downward edges meet
 //! only at a "downward" regular vertex, where one is removed before the other is inserted) and no
 //! status edge touches the vertex being processed when the status is searched or changed (edges
@@ -195,8 +197,8 @@
 //! collinear triples as on reflex ones.
 
 use crate::geom::kernel::{cross, dot, Point};
+use crate::geom::status::{Handle, Status};
 use std::cmp::Ordering;
-use std::collections::BTreeSet;
 
 /// Triangulates one counter-clockwise simple polygon given as its cycle of points (flat vertices
 /// allowed, no two points equal): exactly `len - 2` counter-clockwise triangles of positive area,
@@ -384,7 +386,9 @@ struct Sweep<'a> {
     pts: &'a [Point],
     links: &'a Links,
     kind: Vec<Kind>,
-    status: BTreeSet<Cut>,
+    status: Status<Cut>,
+    /// The status handle of every edge `e` in the status.
+    handle: Vec<Option<Handle>>,
     /// `helper[e]` for every edge `e` in the status.
     helper: Vec<usize>,
     diagonals: Vec<[usize; 2]>,
@@ -402,7 +406,8 @@ impl<'a> Sweep<'a> {
             pts,
             links,
             kind,
-            status: BTreeSet::new(),
+            status: Status::new(),
+            handle: vec![None; n],
             helper: vec![usize::MAX; n],
             diagonals: Vec::new(),
         };
@@ -450,19 +455,21 @@ impl<'a> Sweep<'a> {
     /// Inserts edge `e` with helper `v`.
     fn insert(&mut self, e: usize, v: usize) {
         self.helper[e] = v;
-        let inserted = self.status.insert(self.cut(e));
-        debug_assert!(inserted, "edge inserted twice into the sweep status");
+        debug_assert!(
+            self.handle[e].is_none(),
+            "edge inserted twice into the sweep status"
+        );
+        self.handle[e] = Some(self.status.insert(self.cut(e)));
     }
 
     /// Removes edge `e`, which ends at `v`, adding the diagonal to its helper if that is a merge
     /// vertex.
     fn finish(&mut self, e: usize, v: usize) {
         self.replace_helper(e, v);
-        let removed = self.status.remove(&self.cut(e));
-        assert!(
-            removed,
-            "edge missing from the sweep status: invariant broken"
-        );
+        let h = self.handle[e]
+            .take()
+            .expect("edge missing from the sweep status: invariant broken");
+        self.status.remove(h);
     }
 
     /// Makes `v` the helper of `e`, adding the diagonal to the old helper if it is a merge vertex.
@@ -477,11 +484,11 @@ impl<'a> Sweep<'a> {
     /// The status edge immediately west of vertex `v`, which exists whenever the interior lies
     /// west of `v` (split, merge and upward vertices).
     fn west_of(&self, v: usize) -> usize {
-        self.status
-            .range(..Cut::probe(self.pts[v]))
-            .next_back()
-            .expect("no edge west of a split, merge or upward vertex: invariant broken")
-            .edge
+        let west = self
+            .status
+            .below(&Cut::probe(self.pts[v]))
+            .expect("no edge west of a split, merge or upward vertex: invariant broken");
+        self.status.key(west).edge
     }
 }
 

@@ -4,16 +4,47 @@
 //! Guarantee: the target path holds either its previous content (or nothing) or the complete new
 //! output, never a truncated one, whatever happens to the process. A temporary file
 //! `.NAME.minitri-PID-K.tmp` lives beside the target while it is written; it is removed when the
-//! output is abandoned (an error, or [`AtomicFile`] dropped without [`AtomicFile::commit`]); only
-//! a process killed outright can leave one behind (a rename is atomic on POSIX file systems).
+//! output is abandoned (an error, or [`AtomicFile`] dropped without [`AtomicFile::commit`]) and
+//! on an interruption ([`exit_removing_temporaries`], which the binary calls on Ctrl-C); only a
+//! process killed outright (SIGKILL, a crash) can leave one behind (a rename is atomic on POSIX
+//! file systems).
 
 use std::fs::File;
 use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::{Mutex, MutexGuard};
 
 /// Distinguishes the temporary files of one process.
 static NEXT: AtomicUsize = AtomicUsize::new(0);
+
+/// The temporary files of this process not yet renamed or removed. Its lock is held across
+/// every rename and removal, so [`exit_removing_temporaries`] sees each file either still
+/// temporary or already complete under its final name.
+static LIVE: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+fn live() -> MutexGuard<'static, Vec<PathBuf>> {
+    // A panic elsewhere while holding the lock leaves the list itself intact.
+    LIVE.lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner)
+}
+
+fn forget(live: &mut Vec<PathBuf>, temp: &Path) {
+    if let Some(k) = live.iter().position(|p| p == temp) {
+        live.swap_remove(k);
+    }
+}
+
+/// Removes every temporary file of this process and exits with `code`, without running any
+/// further output: what an interruption (Ctrl-C) does, so that it leaves neither a truncated
+/// output nor a temporary file. Outputs already committed stay, complete.
+pub fn exit_removing_temporaries(code: i32) -> ! {
+    let live = live(); // held until the exit: no rename can start after this point
+    for temp in live.iter() {
+        let _ = std::fs::remove_file(temp);
+    }
+    std::process::exit(code)
+}
 
 /// An output file being written; it replaces its target only on [`AtomicFile::commit`].
 #[derive(Debug)]
@@ -39,7 +70,12 @@ impl AtomicFile {
             .unwrap_or_default();
         let k = NEXT.fetch_add(1, Ordering::Relaxed);
         let temp = dir.join(format!(".{name}.minitri-{}-{k}.tmp", std::process::id()));
-        let file = File::create(&temp)?;
+        let file = {
+            let mut live = live();
+            let file = File::create(&temp)?;
+            live.push(temp.clone());
+            file
+        };
         Ok(AtomicFile {
             target: target.to_path_buf(),
             temp,
@@ -54,7 +90,9 @@ impl AtomicFile {
     pub fn commit(mut self) -> io::Result<()> {
         let file = self.file.take().ok_or_else(closed)?;
         file.into_inner().map_err(|e| e.into_error())?.sync_all()?;
+        let mut live = live();
         std::fs::rename(&self.temp, &self.target)?;
+        forget(&mut live, &self.temp);
         self.temp = PathBuf::new(); // nothing left to remove
         Ok(())
     }
@@ -78,7 +116,9 @@ impl Drop for AtomicFile {
     fn drop(&mut self) {
         drop(self.file.take());
         if !self.temp.as_os_str().is_empty() {
+            let mut live = live();
             let _ = std::fs::remove_file(&self.temp);
+            forget(&mut live, &self.temp);
         }
     }
 }

@@ -18,7 +18,7 @@ mod plan;
 pub mod run;
 mod tally;
 
-pub use atomic::{write_atomically, AtomicFile};
+pub use atomic::{exit_removing_temporaries, write_atomically, AtomicFile};
 pub use discover::{discover, Input, Unreadable, EXTENSIONS};
 pub use plan::plan;
 pub use run::{run_document, run_tree, DocumentReport, Observer, Settings, Silent, TreeJob};

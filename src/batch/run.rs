@@ -393,7 +393,7 @@ impl<'a> Chunker<'a> {
         let outcomes: Vec<Outcome> = items
             .into_par_iter()
             .map(|item| match item {
-                Item::Polygon { source, index, raw } => process_raw(&source, index, &raw, options),
+                Item::Polygon { source, index, raw } => process_raw(&source, index, raw, options),
                 Item::Failed(outcome) => *outcome,
                 Item::Line { source, .. } => {
                     unreadable(&source, Error::Read("line not read".into()))

@@ -2,4 +2,5 @@
 pub mod decimal;
 pub mod kernel;
 pub mod polygon;
+pub mod status;
 pub mod validate;

@@ -56,7 +56,8 @@ fn a_square_split_in_two_is_valid() {
         result,
         Check {
             valid: true,
-            problems: vec![]
+            problems: vec![],
+            faults: Faults::default(),
         }
     );
 }
@@ -392,4 +393,75 @@ fn agreement_of_exact_algorithms() {
     );
     // A plain triangulation is not a minimum and is not compared.
     assert_eq!(agreement(&[(Ear, 7), (Minitri, 5), (Asano, 5)]), None);
+}
+
+fn faults(p: &Polygon, triangles: &[[usize; 3]], degenerate: &[[usize; 3]]) -> Faults {
+    let result = check(p, &triangulation(triangles, degenerate));
+    assert_eq!(result.valid, result.faults.is_empty(), "{result:?}");
+    result.faults
+}
+
+#[test]
+fn faults_of_a_missing_triangle_are_the_gap_sides_with_the_gap_on_their_right() {
+    let p = unit_square();
+    let found = faults(&p, &[[0, 1, 2]], &[]);
+    assert!(found.triangles.is_empty() && found.degenerate.is_empty());
+    // The gap is the triangle (0, 0), (1, 1), (0, 1): three sides, each once.
+    let mut sides: Vec<[Point; 2]> = found
+        .stretches
+        .iter()
+        .map(|&[a, b]| [a.min(b), a.max(b)])
+        .collect();
+    sides.sort();
+    let pt = Point::new;
+    assert_eq!(
+        sides,
+        [
+            [pt(0, 0), pt(0, 1)],
+            [pt(0, 0), pt(1, 1)],
+            [pt(0, 1), pt(1, 1)]
+        ]
+    );
+    // The gap's centroid (1/3, 2/3), tripled to stay on the grid, is right of every stretch.
+    for [a, b] in found.stretches {
+        let tripled = |q: Point| Point::new(3 * q.x, 3 * q.y);
+        assert!(
+            cross(tripled(a), tripled(b), Point::new(1, 2)) < 0,
+            "{a:?} -> {b:?}"
+        );
+    }
+}
+
+#[test]
+fn faults_name_bad_triangles_and_degenerate_triangles_by_position() {
+    let p = unit_square();
+    // Triangle 1 repeats a vertex, triangle 2 is clockwise, triangle 3 is out of range.
+    let found = faults(&p, &[[0, 1, 2], [0, 2, 2], [0, 3, 2], [0, 1, 9]], &[]);
+    assert_eq!(found.triangles, [1, 2, 3]);
+    let flat = flat_square();
+    let minimum = [[0, 2, 3], [0, 3, 4]];
+    assert!(faults(&flat, &minimum, &[[0, 1, 2]]).is_empty());
+    // Listed twice: the second is at fault; not between its ends: the first.
+    assert_eq!(
+        faults(&flat, &minimum, &[[0, 1, 2], [2, 1, 0]]).degenerate,
+        [1]
+    );
+    assert_eq!(
+        faults(&flat, &minimum, &[[1, 0, 2], [0, 1, 2]]).degenerate,
+        [0]
+    );
+    // Not on a triangle side.
+    let plain = [[0, 1, 3], [1, 2, 3], [0, 3, 4]];
+    let found = faults(&flat, &plain, &[[0, 1, 2]]);
+    assert_eq!(found.degenerate, [0]);
+    assert!(found.stretches.is_empty() && found.triangles.is_empty());
+}
+
+#[test]
+fn faults_are_not_capped_like_the_sentences() {
+    let p = unit_square();
+    let result = check(&p, &triangulation(&[[0, 0, 1]; 30], &[]));
+    assert_eq!(result.problems.len(), MAX_PROBLEMS + 1);
+    assert_eq!(result.faults.triangles, (0..30).collect::<Vec<_>>());
+    assert_eq!(result.faults.stretches.len(), 4);
 }

@@ -20,8 +20,8 @@ pub enum OutputFormat {
     GeoJson,
     /// WKT, one MULTIPOLYGON of triangles per line and polygon.
     Wkt,
-    /// An SVG picture.
-    Svg,
+    /// An SVG picture, drawn in this style.
+    Svg(svg::Style),
 }
 
 impl OutputFormat {
@@ -31,7 +31,7 @@ impl OutputFormat {
             OutputFormat::Json => "json",
             OutputFormat::GeoJson => "geojson",
             OutputFormat::Wkt => "wkt",
-            OutputFormat::Svg => "svg",
+            OutputFormat::Svg(_) => "svg",
         }
     }
 
@@ -44,8 +44,9 @@ impl OutputFormat {
             OutputFormat::Json => Box::new(json::JsonWriter::new(out)?),
             OutputFormat::GeoJson => Box::new(geojson::GeoJsonWriter::new(out)?),
             OutputFormat::Wkt => Box::new(wkt::WktWriter::new(out)),
-            OutputFormat::Svg => Box::new(SvgSink {
+            OutputFormat::Svg(style) => Box::new(SvgSink {
                 out,
+                style,
                 outcomes: Vec::new(),
             }),
         })
@@ -80,6 +81,7 @@ impl<W: Write> Sink for json::JsonWriter<W> {
 /// The SVG sink: keeps the outcomes, draws them all at the end.
 struct SvgSink<W: Write> {
     out: W,
+    style: svg::Style,
     outcomes: Vec<Outcome>,
 }
 
@@ -90,8 +92,12 @@ impl<W: Write> Sink for SvgSink<W> {
     }
 
     fn finish(self: Box<Self>) -> io::Result<()> {
-        let SvgSink { mut out, outcomes } = *self;
-        svg::write_outcomes(&outcomes, &mut out)?;
+        let SvgSink {
+            mut out,
+            style,
+            outcomes,
+        } = *self;
+        svg::write_outcomes(&outcomes, style, &mut out)?;
         out.flush()
     }
 }

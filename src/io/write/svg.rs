@@ -8,10 +8,28 @@
 //! - every degenerate triangle `[a, b, c]` used, as a thick orange segment a–c and an orange disc
 //!   (one `<circle>` each, and no other `<circle>` anywhere) on the middle vertex b;
 //! - small dots on the vertices when n <= [`DOTS_MAX`], and the INPUT vertex numbers
-//!   ([`Polygon::id`]) when n <= [`LABELS_MAX`], placed outside the polygon along the bisector;
+//!   ([`Polygon::id`]) when n <= [`LABELS_MAX`] or [`Style::labels`] asks for them, placed
+//!   outside the polygon along the bisector; each label's font fits the room around its vertex
+//!   (the distance to the nearest other vertex, to within a factor of 6, found on grids of cells
+//!   of side [`MAX_ROOM`], half that, ... down to [`MIN_ROOM`] pixels): at most 11 pixels, and
+//!   about as wide as the room, so that even 10^5 labels leave the picture legible (and
+//!   readable when zoomed in);
+//! - what `--verify` found wrong ([`Figure::faults`]), in red ([`FAULT`]): the region where the
+//!   triangles do not cover the polygon exactly once (gaps, overlaps, triangles outside: filled
+//!   where the winding number of the triangles' boundaries minus the polygon's is not zero, with
+//!   `fill-rule="nonzero"`), the stretches of boundary that do not cancel (a thick stroke, visible
+//!   however small the region), each bad triangle outlined, each bad degenerate triangle as a red
+//!   segment; the panel frame is then red too;
 //! - under the panel a caption: the title, `n = .., w = .., d = .., triangles = .., algorithm = ..`
-//!   (with `optimal` / `not proved optimal` for minimum algorithms) and a key for the orange
-//!   marks; or, when the figure carries an error, the polygon alone and the error text in red.
+//!   (with `optimal` / `not proved optimal` for minimum algorithms), the alerts in red (checker
+//!   problems, disagreement of the exact algorithms) and a key for the orange marks; or, when the
+//!   figure carries an error, the polygon alone and the error text in red.
+//!
+//! Each panel is a `<g>` whose `<title>` (a tooltip, and what screen readers announce) repeats
+//! the caption's title and numbers; the document's `<title>` names the first figure and the count.
+//!
+//! With a verification ([`write_outcomes`]) that found a problem or a disagreement, every other
+//! algorithm's output gets a panel of its own after the chosen one's, with its own faults.
 //!
 //! Panels are laid out in rows of up to [`PER_ROW`].
 //!
@@ -27,12 +45,15 @@
 //!
 //! Complexity: O(n + t + d) time per figure (t triangles, d degenerate triangles), output
 //! streamed through a buffer; about 45 bytes per triangle, 25 per vertex, 40 per degenerate
-//! triangle.
+//! triangle; labels add O(n log(MAX_ROOM / MIN_ROOM)) time and about 100 bytes per vertex; the
+//! faults of a failed check add about 45 bytes per triangle.
 
 use crate::algo::{Pseudotriangulation, Triangulation};
 use crate::geom::kernel::Point;
 use crate::geom::polygon::Polygon;
 use crate::pipeline::Outcome;
+use crate::verify::Faults;
+use std::collections::HashMap;
 use std::fmt;
 use std::io::{self, Write};
 
@@ -44,8 +65,14 @@ pub const MARGIN: f64 = 28.0;
 pub const PER_ROW: usize = 3;
 /// Vertex dots are drawn up to this many vertices (above, they would only blur the picture).
 pub const DOTS_MAX: usize = 2000;
-/// Vertex numbers are written up to this many vertices.
+/// Vertex numbers are written up to this many vertices (at any size with [`Style::labels`]).
 pub const LABELS_MAX: usize = 60;
+/// The largest room around a vertex that labels look for, in pixels.
+pub const MAX_ROOM: f64 = 16.0;
+/// The smallest room labels tell apart, in pixels; denser vertices get this room.
+pub const MIN_ROOM: f64 = 1.0 / 16.0;
+/// The red of what `--verify` found wrong.
+pub const FAULT: &str = "#e60000";
 
 /// Space around and between panels.
 const GAP: f64 = 24.0;
@@ -70,6 +97,16 @@ const CORNER: &str = "#2b8a3e";
 const ERROR: &str = "#c92a2a";
 const FRAME: &str = "#d5dbe5";
 const MUTED: &str = "#555";
+/// Largest label font, in pixels.
+const LABEL_FONT: f64 = 11.0;
+
+/// How to draw, beyond what the outcomes say.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Style {
+    /// Write vertex numbers at any size (`--labels`); otherwise only up to [`LABELS_MAX`]
+    /// vertices.
+    pub labels: bool,
+}
 
 /// One polygon to draw.
 pub struct Figure<'a> {
@@ -81,29 +118,99 @@ pub struct Figure<'a> {
     pub triangulation: Option<&'a Triangulation>,
     /// Why it could not be triangulated; drawn in red instead of triangles.
     pub error: Option<String>,
+    /// Where the independent checker found the triangulation wrong; drawn in red.
+    pub faults: Option<&'a Faults>,
+    /// Sentences for the caption, in red: checker problems, disagreements.
+    pub alerts: Vec<String>,
+    /// Write the vertex numbers whatever the size.
+    pub labels: bool,
     /// Its pseudotriangulation (`pseudo`, `pseudo-hull`), drawn instead of the triangles.
     pub pseudo: Option<&'a Pseudotriangulation>,
 }
 
 /// Writes one SVG document of every outcome that has a valid polygon (solved or not; inputs that
-/// could not be read and invalid polygons have nothing to draw).
+/// could not be read and invalid polygons have nothing to draw). A verification that failed
+/// adds its faults and alerts, and a panel for each other algorithm's output.
 ///
 /// # Errors
 /// Only those of `out`.
-pub fn write_outcomes(outcomes: &[Outcome], out: &mut impl Write) -> io::Result<()> {
-    let figures: Vec<Figure> = outcomes
-        .iter()
-        .filter_map(|o| {
-            let polygon = o.polygon.as_ref()?;
-            Some(Figure {
-                title: o.to_string(),
-                polygon,
-                triangulation: o.result.as_ref().ok().map(|s| &s.triangulation),
-                error: o.result.as_ref().err().map(ToString::to_string),
-                pseudo: o.result.as_ref().ok().and_then(|s| s.pseudo.as_ref()),
-            })
-        })
-        .collect();
+pub fn write_outcomes(outcomes: &[Outcome], style: Style, out: &mut impl Write) -> io::Result<()> {
+    let mut figures: Vec<Figure> = Vec::new();
+    for o in outcomes {
+        let Some(polygon) = o.polygon.as_ref() else {
+            continue;
+        };
+        let base = |title: String| Figure {
+            labels: style.labels,
+            ..Figure::new(title, polygon)
+        };
+        let solved = match &o.result {
+            Err(e) => {
+                figures.push(Figure {
+                    error: Some(e.to_string()),
+                    ..base(o.to_string())
+                });
+                continue;
+            }
+            Ok(solved) => solved,
+        };
+        if let Some(p) = &solved.pseudo {
+            // A pseudotriangulation: one figure, the checker's problems in red in the caption.
+            let check = solved
+                .verification
+                .as_ref()
+                .and_then(|v| v.pseudotriangulation.as_ref());
+            let mut alerts = Vec::new();
+            if let Some(c) = check.filter(|c| !c.valid) {
+                alerts.push(format!(
+                    "{} output invalid:",
+                    solved.triangulation.algorithm
+                ));
+                alerts.extend(c.problems.iter().cloned());
+            }
+            figures.push(Figure {
+                triangulation: Some(&solved.triangulation),
+                pseudo: Some(p),
+                alerts,
+                ..base(o.to_string())
+            });
+            continue;
+        }
+        let Some(v) = solved.verification.as_ref().filter(|v| !v.ok) else {
+            figures.push(Figure {
+                triangulation: Some(&solved.triangulation),
+                ..base(o.to_string())
+            });
+            continue;
+        };
+        // The chosen algorithm's output is checked first (`verify_all`); then the others.
+        let disagreement = v.disagreement.iter().map(|d| format!("disagreement: {d}"));
+        for (k, c) in v.checks.iter().enumerate() {
+            let mut alerts: Vec<String> = disagreement.clone().collect();
+            if !c.check.valid {
+                alerts.push(format!("{} output invalid (red):", c.algorithm));
+                alerts.extend(c.check.problems.iter().cloned());
+            }
+            if k > 0 && alerts.is_empty() {
+                continue;
+            }
+            let title = if k == 0 {
+                o.to_string()
+            } else {
+                format!("{o} — {} output (--verify)", c.algorithm)
+            };
+            figures.push(Figure {
+                triangulation: Some(if k == 0 {
+                    &solved.triangulation
+                } else {
+                    &c.triangulation
+                }),
+                faults: Some(&c.check.faults),
+                alerts,
+                ..base(title)
+            });
+        }
+    }
     write_svg(&figures, out)
 }
 
@@ -122,6 +229,12 @@ pub fn write_svg(figures: &[Figure<'_>], out: &mut impl Write) -> io::Result<()>
         out,
         r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" viewBox="0 0 {w} {h}" font-family="sans-serif">"#
     )?;
+    let title = match figures {
+        [] => "minitri: no polygons".to_string(),
+        [one] => format!("minitri: {}", one.title),
+        [first, ..] => format!("minitri: {} and {} more", first.title, figures.len() - 1),
+    };
+    writeln!(out, "<title>{}</title>", Esc(&title))?;
     writeln!(
         out,
         r##"<rect x="0" y="0" width="{w}" height="{h}" fill="#fff"/>"##
@@ -177,6 +290,22 @@ struct View<'a> {
     scale: f64,
     /// Pixel position of grid point `min`.
     base: (f64, f64),
+}
+
+impl<'a> Figure<'a> {
+    /// A figure of `polygon` with nothing else: no triangulation, error, faults, alerts.
+    pub fn new(title: String, polygon: &'a Polygon) -> Figure<'a> {
+        Figure {
+            title,
+            polygon,
+            triangulation: None,
+            error: None,
+            faults: None,
+            alerts: Vec::new(),
+            labels: false,
+            pseudo: None,
+        }
+    }
 }
 
 impl<'a> View<'a> {
@@ -238,11 +367,23 @@ fn draw_figure(
         _ => (0.4, 0.7, 0.0),
     };
     let (ox, oy) = (Num(origin.0), Num(origin.1));
-    let frame = if figure.error.is_some() { ERROR } else { FRAME };
+    let (frame, frame_width) = if figure.error.is_some() {
+        (ERROR, 1.0)
+    } else if !figure.alerts.is_empty() {
+        (FAULT, 2.0)
+    } else {
+        (FRAME, 1.0)
+    };
     writeln!(out, "<g>")?;
+    let tooltip: Vec<&str> = caption
+        .iter()
+        .filter(|l| l.kind != Kind::Key)
+        .map(|l| l.text.as_str())
+        .collect();
+    writeln!(out, "<title>{}</title>", Esc(&tooltip.join("; ")))?;
     writeln!(
         out,
-        r#"<rect x="{ox}" y="{oy}" width="{PANEL}" height="{PANEL}" fill="none" stroke="{frame}" stroke-width="1"/>"#
+        r#"<rect x="{ox}" y="{oy}" width="{PANEL}" height="{PANEL}" fill="none" stroke="{frame}" stroke-width="{frame_width}"/>"#
     )?;
 
     write!(
@@ -315,11 +456,15 @@ fn draw_figure(
         writeln!(out, "</g>")?;
     }
 
+    if let (Some(t), Some(faults)) = (triangulation, figure.faults) {
+        draw_faults(out, &view, t, faults)?;
+    }
+
     if let Some(p) = pseudo.filter(|_| n <= DOTS_MAX) {
         corners(out, &view, p)?;
     }
 
-    if n <= LABELS_MAX {
+    if n <= LABELS_MAX || figure.labels {
         labels(out, &view)?;
     }
 
@@ -404,16 +549,115 @@ fn rings(out: &mut impl Write, view: &View<'_>) -> io::Result<()> {
     Ok(())
 }
 
+/// Draws in red what the checker found wrong with `t` (see the module documentation).
+fn draw_faults(
+    out: &mut impl Write,
+    view: &View<'_>,
+    t: &Triangulation,
+    faults: &Faults,
+) -> io::Result<()> {
+    let polygon = view.polygon;
+    if !faults.stretches.is_empty() {
+        // Winding number of (triangle boundaries) - (polygon boundary): nonzero exactly where the
+        // cover is not once (away from the segments). Rings are reversed to subtract them.
+        write!(
+            out,
+            r#"<path fill="{FAULT}" fill-opacity="0.4" fill-rule="nonzero" stroke="none" d=""#
+        )?;
+        for &[a, b, c] in &t.triangles {
+            if let (Some(a), Some(b), Some(c)) = (view.at(a), view.at(b), view.at(c)) {
+                write!(out, "M{a}L{b} {c}Z")?;
+            }
+        }
+        for r in 0..=polygon.holes() {
+            let mut range = polygon.ring_range(r).rev();
+            if let Some(first) = range.next() {
+                write!(out, "M{}L", view.of(polygon.point(first)))?;
+                for (k, i) in range.enumerate() {
+                    let separator = if k == 0 { "" } else { " " };
+                    write!(out, "{separator}{}", view.of(polygon.point(i)))?;
+                }
+                write!(out, "Z")?;
+            }
+        }
+        writeln!(out, r#""/>"#)?;
+        write!(
+            out,
+            r#"<path fill="none" stroke="{FAULT}" stroke-width="3" stroke-linecap="round" d=""#
+        )?;
+        for &[from, to] in &faults.stretches {
+            write!(out, "M{}L{}", view.of(from), view.of(to))?;
+        }
+        writeln!(out, r#""/>"#)?;
+    }
+    let bad_triangles = faults.triangles.iter().filter_map(|&k| t.triangles.get(k));
+    let bad_degenerate = faults
+        .degenerate
+        .iter()
+        .filter_map(|&k| t.degenerate.get(k));
+    let mut bad = bad_triangles.chain(bad_degenerate).peekable();
+    if bad.peek().is_some() {
+        write!(
+            out,
+            r#"<path fill="{FAULT}" fill-opacity="0.4" stroke="{FAULT}" stroke-width="2.5" stroke-linejoin="round" stroke-linecap="round" d=""#
+        )?;
+        for &[a, b, c] in bad {
+            if let (Some(a), Some(b), Some(c)) = (view.at(a), view.at(b), view.at(c)) {
+                write!(out, "M{a}L{b} {c}Z")?;
+            }
+        }
+        writeln!(out, r#""/>"#)?;
+    }
+    Ok(())
+}
+
+/// The room around each point, in pixels: the largest `s` among [`MAX_ROOM`], [`MAX_ROOM`]/2, ...
+/// down to [`MIN_ROOM`] (which every point gets at least) such that no other point lies in the
+/// 3 x 3 block of grid cells of side `s` around the point's cell. Then no other point lies within
+/// distance `s`; and below [`MAX_ROOM`], one lies within `4 sqrt(2) s` (in the 3 x 3 block of side
+/// `2s`): the room is the nearest-neighbour distance up to a factor of 6.
+/// O(n) hashing per level, O(n log(MAX_ROOM / MIN_ROOM)) in all.
+fn label_rooms(points: &[Xy]) -> Vec<f64> {
+    let mut room = vec![MIN_ROOM; points.len()];
+    let mut undecided: Vec<usize> = (0..points.len()).collect();
+    let mut side = MAX_ROOM;
+    while side >= MIN_ROOM && !undecided.is_empty() {
+        let cell = |Xy(x, y): Xy| ((x / side).floor() as i64, (y / side).floor() as i64);
+        let mut counts: HashMap<(i64, i64), u32> = HashMap::with_capacity(points.len());
+        for &p in points {
+            *counts.entry(cell(p)).or_default() += 1;
+        }
+        undecided.retain(|&i| {
+            let (cx, cy) = cell(points[i]);
+            let alone = (-1..=1).all(|dx| {
+                (-1..=1).all(|dy| {
+                    let own = u32::from(dx == 0 && dy == 0);
+                    counts.get(&(cx + dx, cy + dy)).copied().unwrap_or(0) == own
+                })
+            });
+            if alone {
+                room[i] = side;
+            }
+            !alone
+        });
+        side /= 2.0;
+    }
+    room
+}
+
 /// The input number of every vertex, just outside the polygon along the bisector of the outward
-/// normals of its two edges.
+/// normals of its two edges, in a font that fits the room around the vertex ([`label_rooms`]):
+/// [`LABEL_FONT`] pixels at most, and small enough that the number is about as wide as the room.
 fn labels(out: &mut impl Write, view: &View<'_>) -> io::Result<()> {
     let polygon = view.polygon;
+    let points: Vec<Xy> = polygon.points().iter().map(|&p| view.of(p)).collect();
+    let rooms = label_rooms(&points);
     writeln!(
         out,
-        r##"<g font-size="11" fill="{BOUNDARY}" text-anchor="middle" stroke="#fff" stroke-width="3" stroke-linejoin="round" paint-order="stroke">"##
+        r##"<g fill="{BOUNDARY}" text-anchor="middle" stroke="#fff" stroke-linejoin="round" paint-order="stroke">"##
     )?;
     for i in 0..polygon.len() {
-        let Xy(x, y) = view.of(polygon.point(i));
+        let Xy(x, y) = points[i];
         let Xy(px, py) = view.of(polygon.point(polygon.prev(i)));
         let Xy(nx, ny) = view.of(polygon.point(polygon.next(i)));
         // In pixels (y down) the interior lies right of each edge (dx, dy), so (-dy, dx) points out.
@@ -435,9 +679,17 @@ fn labels(out: &mut impl Write, view: &View<'_>) -> io::Result<()> {
         }
         let id = polygon.id(i);
         let digits = id.to_string().len() as f64;
-        let distance = 8.0 + 3.3 * digits * ux.abs();
-        let (lx, ly) = (Num(x + distance * ux), Num(y + distance * uy));
-        writeln!(out, r#"<text x="{lx}" y="{ly}" dy="0.35em">{id}</text>"#)?;
+        // A digit is about 0.6 em wide: the number fits about its room.
+        let font = LABEL_FONT.min(rooms[i] / (0.6 * digits.max(1.5)));
+        let scale = font / LABEL_FONT;
+        let distance = scale * (8.0 + 3.3 * digits * ux.abs());
+        let (lx, ly) = (Fine(x + distance * ux), Fine(y + distance * uy));
+        writeln!(
+            out,
+            r#"<text x="{lx}" y="{ly}" font-size="{}" stroke-width="{}" dy="0.35em">{id}</text>"#,
+            Fine(font),
+            Fine(3.0 * scale)
+        )?;
     }
     writeln!(out, "</g>")
 }
@@ -449,6 +701,7 @@ enum Kind {
     Stats,
     Key,
     Error,
+    Alert,
     Note,
 }
 
@@ -494,6 +747,14 @@ fn caption(figure: &Figure<'_>) -> Vec<Line> {
             lines.push(line(Kind::Key, key.to_string()));
         }
         (None, Some(t)) => {
+            let alerts = figure.alerts.iter().flat_map(|a| wrap(a, TEXT_WRAP));
+            let mut alerts: Vec<String> = alerts.collect();
+            if alerts.len() > ERROR_LINES {
+                alerts.truncate(ERROR_LINES);
+                if let Some(last) = alerts.last_mut() {
+                    last.push_str(" …");
+                }
+            }
             stats += &format!(
                 ", d = {}, triangles = {}, algorithm = {}",
                 t.degenerate.len(),
@@ -508,6 +769,7 @@ fn caption(figure: &Figure<'_>) -> Vec<Line> {
                 };
             }
             lines.push(line(Kind::Stats, stats));
+            lines.extend(alerts.into_iter().map(|t| line(Kind::Alert, t)));
             let key = "orange: degenerate triangle a–c, dot = middle vertex b";
             lines.push(line(Kind::Key, key.to_string()));
         }
@@ -541,6 +803,11 @@ fn draw_caption(out: &mut impl Write, caption: &[Line], origin: (f64, f64)) -> i
             Kind::Error => writeln!(
                 out,
                 r#"<text x="{}" y="{y}" font-size="12.5" fill="{ERROR}">{text}</text>"#,
+                at(0.0)
+            )?,
+            Kind::Alert => writeln!(
+                out,
+                r#"<text x="{}" y="{y}" font-size="12.5" fill="{FAULT}">{text}</text>"#,
                 at(0.0)
             )?,
             Kind::Note => writeln!(
@@ -629,6 +896,19 @@ impl fmt::Display for Num {
         } else {
             write!(f, "{sign}{int}.{frac:02}")
         }
+    }
+}
+
+/// A pixel size or coordinate written with at most 4 decimals (labels may be tiny).
+#[derive(Clone, Copy)]
+struct Fine(f64);
+
+impl fmt::Display for Fine {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let v = if self.0.is_finite() { self.0 } else { 0.0 };
+        let text = format!("{v:.4}");
+        let text = text.trim_end_matches('0').trim_end_matches('.');
+        f.write_str(if text == "-0" { "0" } else { text })
     }
 }
 
@@ -751,11 +1031,8 @@ mod tests {
         triangulation: Option<&'a Triangulation>,
     ) -> Figure<'a> {
         Figure {
-            title: title.to_string(),
-            polygon,
             triangulation,
-            error: None,
-            pseudo: None,
+            ..Figure::new(title.to_string(), polygon)
         }
     }
 
@@ -1145,6 +1422,104 @@ mod tests {
         assert!(assert_inside_view_box(&svg) > 100);
         assert!(render(&[]).contains("no polygons to draw"));
         assert_well_formed(&render(&[]));
+    }
+
+    #[test]
+    fn label_rooms_bound_the_nearest_neighbour_distance() {
+        // Far from everything: the largest room. Two points 0.3 apart: cells of 0.25 put them in
+        // neighbouring columns (802 and 803), cells of 0.125 two columns apart (1604, 1606).
+        let rooms = label_rooms(&[Xy(0.5, 0.5), Xy(200.5, 200.5), Xy(200.8, 200.5)]);
+        assert_eq!(rooms, [MAX_ROOM, 0.125, 0.125]);
+        // Coincident points get the smallest room.
+        assert_eq!(label_rooms(&[Xy(3.0, 3.0), Xy(3.0, 3.0)]), [MIN_ROOM; 2]);
+        // Random clouds of every density, against the brute-force nearest neighbour.
+        let mut random = crate::test_support::xorshift(11);
+        for spread in [5, 50, 500, 5000] {
+            let points: Vec<Xy> = (0..300)
+                .map(|_| {
+                    Xy(
+                        random(spread * 100) as f64 / 100.0,
+                        random(spread * 100) as f64 / 100.0,
+                    )
+                })
+                .collect();
+            let rooms = label_rooms(&points);
+            for (i, &Xy(x, y)) in points.iter().enumerate() {
+                let nearest = points
+                    .iter()
+                    .enumerate()
+                    .filter(|&(j, _)| j != i)
+                    .map(|(_, &Xy(u, v))| (u - x).hypot(v - y))
+                    .fold(f64::INFINITY, f64::min);
+                let room = rooms[i];
+                assert!((MIN_ROOM..=MAX_ROOM).contains(&room));
+                assert!(room == MIN_ROOM || nearest >= room, "{nearest} < {room}");
+                assert!(
+                    room == MAX_ROOM || nearest <= 6.0 * room,
+                    "{nearest} > 6 x {room}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn faults_are_drawn_in_red_over_the_figure() {
+        let p = u_shape(|v| v.to_string());
+        let mut t = u_triangulation();
+        t.triangles.pop();
+        t.triangles[0] = [0, 11, 3]; // clockwise
+        let check = crate::verify::check(&p, &t);
+        assert!(!check.valid && check.faults.triangles == [0]);
+        let svg = render(&[Figure {
+            faults: Some(&check.faults),
+            alerts: vec!["disagreement: it is wrong".into()],
+            ..figure("faulty", &p, Some(&t))
+        }]);
+        assert_well_formed(&svg);
+        // The region path: the 5 triangles and the ring reversed, one subpath each.
+        let region = svg
+            .lines()
+            .find(|l| l.contains(r#"fill-rule="nonzero""#))
+            .expect("the region covered other than once");
+        assert!(region.contains(FAULT));
+        let d = attribute(region, "d").unwrap();
+        assert_eq!(d.matches('M').count(), 5 + 1);
+        let ring = path_points(&d[d.rfind('M').unwrap()..]);
+        let view = View::new(&p, (GAP, GAP));
+        let reversed: Vec<[f64; 2]> = (0..12)
+            .rev()
+            .map(|i| {
+                let Xy(x, y) = view.at(i).unwrap();
+                [x, y]
+            })
+            .collect();
+        for (a, b) in ring.iter().zip(&reversed) {
+            assert!((a[0] - b[0]).abs() < 0.01 && (a[1] - b[1]).abs() < 0.01);
+        }
+        // One stroke per uncancelled stretch; the clockwise triangle outlined.
+        let stretches = svg
+            .lines()
+            .find(|l| l.contains(&format!(r#"<path fill="none" stroke="{FAULT}""#)))
+            .unwrap();
+        assert_eq!(
+            attribute(stretches, "d").unwrap().matches('M').count(),
+            check.faults.stretches.len()
+        );
+        assert!(svg.contains(&format!(
+            r#"<path fill="{FAULT}" fill-opacity="0.4" stroke="{FAULT}""#
+        )));
+        // Red frame, red alert text.
+        assert!(svg.contains(&format!(r#"stroke="{FAULT}" stroke-width="2"/>"#)));
+        assert!(svg.contains(&format!(
+            r#"fill="{FAULT}">disagreement: it is wrong</text>"#
+        )));
+        // A valid triangulation with empty faults draws nothing red.
+        let clean = crate::verify::check(&p, &u_triangulation());
+        let svg = render(&[Figure {
+            faults: Some(&clean.faults),
+            ..figure("clean", &p, Some(&u_triangulation()))
+        }]);
+        assert!(!svg.contains(FAULT));
     }
 
     /// Writes sample drawings to the temporary directory, to look at (`--ignored`).
