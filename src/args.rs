@@ -22,6 +22,7 @@ macro_rules! examples {
   minitri -q shapes/ -o out/                       the same without summary, warnings or progress bar
   minitri --time-limit 60 holes.geojson            search polygons with holes up to 60 s each (0: no limit)
   minitri -a ear shape.geojson                     a plain triangulation (n + 2w - 2 triangles)
+  minitri -a pseudo shape.wkt                      a minimal pseudotriangulation (also pseudo-hull)
   echo 'POLYGON ((0 0, 0.1 0.3, 0.2 0.6, 0 1))' | minitri      exact decimals: 1 triangle
 
 Exit status: 0 all processed, 1 some input failed, 2 bad command line, 3 --verify found a problem."
@@ -52,7 +53,8 @@ NO_COLOR set to anything but the empty string turns colour off."
 pub struct Flags {
     /// Input files or directories (searched recursively); none or `-` reads standard input
     pub inputs: Vec<PathBuf>,
-    /// Algorithm: minitri (minimum, Chen & Chang), asano (minimum, O(n^3) DP), ear (n + 2w - 2)
+    /// Algorithm: minitri (minimum, Chen & Chang), asano (minimum, O(n^3) DP), ear (n + 2w - 2);
+    /// pseudo, pseudo-hull: pseudotriangulations (Rote, Wang, Wang & Xu)
     #[arg(short, long, value_enum, default_value = "minitri")]
     pub algorithm: AlgorithmFlag,
     /// Input format; auto decides by extension, then by content
@@ -117,6 +119,10 @@ pub enum AlgorithmFlag {
     Asano,
     /// A plain triangulation into n + 2w - 2 triangles
     Ear,
+    /// A minimal pseudotriangulation of the polygon inside a triangulation (linear greedy)
+    Pseudo,
+    /// A minimum pseudotriangulation of the convex hull containing the polygon's edges
+    PseudoHull,
 }
 
 /// `--from`.
@@ -198,6 +204,8 @@ impl Flags {
             AlgorithmFlag::Minitri => Algorithm::Minitri,
             AlgorithmFlag::Asano => Algorithm::Asano,
             AlgorithmFlag::Ear => Algorithm::Ear,
+            AlgorithmFlag::PseudoHull => Algorithm::PseudoHull,
+            AlgorithmFlag::Pseudo => Algorithm::Pseudo,
         };
         let from = match self.from {
             FromFlag::Auto => None,

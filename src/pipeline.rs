@@ -5,7 +5,10 @@
 //! or carrying an [`Error`] that names what is wrong. One bad polygon never stops the others.
 //! Complexity: that of reading and validating (O(n log n)) plus the chosen algorithm's.
 
-use crate::algo::{asano, ear, minitri, Algorithm, TriangulateError, Triangulation};
+use crate::algo::{
+    asano, ear, minitri, pseudo, pseudo_hull, Algorithm, Pseudotriangulation, TriangulateError,
+    Triangulation,
+};
 use crate::geom::polygon::{Polygon, Warning};
 use crate::geom::validate::InvalidPolygon;
 use crate::io::read::{self, Format, ParseError, RawPolygon};
@@ -70,8 +73,12 @@ impl Error {
 pub struct Verification {
     /// Every check passed and every exact algorithm gave the same count.
     pub ok: bool,
-    /// One independent check per algorithm run.
+    /// One independent check per algorithm run (none for a pseudotriangulation).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
     pub checks: Vec<AlgorithmCheck>,
+    /// For `pseudo` and `pseudo-hull`: the independent check of the pseudotriangulation.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pseudotriangulation: Option<Check>,
     /// How the exact algorithms disagree, if they do.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub disagreement: Option<String>,
@@ -100,8 +107,12 @@ pub struct AlgorithmCheck {
 /// A triangulated polygon.
 #[derive(Clone, Debug)]
 pub struct Solved {
-    /// The triangulation by the chosen algorithm.
+    /// The triangulation by the chosen algorithm; for `pseudo`, the plain triangulation it
+    /// started from; for `pseudo-hull`, the polygon's plain triangulation (not part of its
+    /// answer).
     pub triangulation: Triangulation,
+    /// For `pseudo` and `pseudo-hull`: the answer.
+    pub pseudo: Option<Pseudotriangulation>,
     /// The verification report, with `--verify`.
     pub verification: Option<Verification>,
 }
@@ -189,7 +200,7 @@ pub fn triangulate_with(
 ) -> Result<Triangulation, TriangulateError> {
     match algorithm {
         Algorithm::Asano => asano::triangulate(polygon, options.dp_limit),
-        Algorithm::Ear => ear::triangulate(polygon),
+        Algorithm::Ear | Algorithm::Pseudo | Algorithm::PseudoHull => ear::triangulate(polygon),
         Algorithm::Minitri => {
             let deadline = options
                 .time_limit
@@ -215,6 +226,9 @@ pub const CORRUPT_WITH_EAR: &str = "ear";
 /// # Errors
 /// [`Error::Triangulate`] when the chosen algorithm does not apply.
 pub fn solve(polygon: &Polygon, options: &Options) -> Result<Solved, Error> {
+    if options.algorithm.is_pseudo() {
+        return solve_pseudo(polygon, options);
+    }
     let mut triangulation = triangulate_with(polygon, options.algorithm, options)?;
     if let Some(mode) = std::env::var_os(CORRUPT_FOR_TESTS).filter(|_| options.verify) {
         // Fault injection, so that tests can see --verify catch a wrong output and exit 3.
@@ -238,6 +252,38 @@ pub fn solve(polygon: &Polygon, options: &Options) -> Result<Solved, Error> {
         .then(|| verify_all(polygon, &triangulation, options));
     Ok(Solved {
         triangulation,
+        pseudo: None,
+        verification,
+    })
+}
+
+/// `pseudo` (minimal, inside the plain triangulation) or `pseudo-hull` (minimum, of the hull).
+fn solve_pseudo(polygon: &Polygon, options: &Options) -> Result<Solved, Error> {
+    let triangulation = ear::triangulate(polygon)?;
+    let mut result = if options.algorithm == Algorithm::PseudoHull {
+        pseudo_hull::pseudotriangulate(polygon, pseudo_hull::DEFAULT_LIMIT)?
+    } else {
+        pseudo::minimal(polygon, &triangulation.triangles)
+    };
+    if options.verify && std::env::var_os(CORRUPT_FOR_TESTS).is_some() {
+        result.faces.pop();
+    }
+    let verification = options.verify.then(|| {
+        let check = verify::pseudo::check(polygon, options.algorithm, &result);
+        Verification {
+            ok: check.valid,
+            checks: Vec::new(),
+            pseudotriangulation: Some(check),
+            disagreement: None,
+            skipped: Vec::new(),
+        }
+    });
+    Ok(Solved {
+        triangulation: Triangulation {
+            algorithm: options.algorithm,
+            ..triangulation
+        },
+        pseudo: Some(result),
         verification,
     })
 }
@@ -275,6 +321,7 @@ fn verify_all(polygon: &Polygon, main: &Triangulation, options: &Options) -> Ver
     Verification {
         ok,
         checks,
+        pseudotriangulation: None,
         disagreement,
         skipped,
     }

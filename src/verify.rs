@@ -294,6 +294,12 @@ fn check_chain(polygon: &Polygon, t: &Triangulation, problems: &mut Problems) {
         }
     }
     sides.extend((0..polygon.len()).map(|i| [polygon.next(i), i]));
+    check_sides_cancel(polygon, sides, problems);
+}
+
+/// The chain of `sides` (each `[from, to]` with weight +1) is zero: on every line, the weights of
+/// the segments on it cancel on every stretch (the core of check 3, shared with [`pseudo`]).
+fn check_sides_cancel(polygon: &Polygon, mut sides: Vec<[usize; 2]>, problems: &mut Problems) {
     // Cancel segments with the same two end vertices (most of them in a valid triangulation).
     let pair = |&[u, v]: &[usize; 2]| (u.min(v), u.max(v));
     sides.sort_unstable_by_key(pair);
@@ -461,5 +467,6 @@ fn check_degenerate(polygon: &Polygon, t: &Triangulation, problems: &mut Problem
     }
 }
 
+pub mod pseudo;
 #[cfg(test)]
 mod tests;

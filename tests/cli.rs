@@ -302,6 +302,7 @@ fn help_shows_an_example_of_every_use() {
         "minitri -q shapes/",
         "minitri --time-limit 60",
         "minitri -a ear",
+        "minitri -a pseudo",
         "minitri --completions bash >",
         "minitri --man > minitri.1",
         "NO_COLOR",

@@ -8,5 +8,6 @@ mod formats;
 mod geo;
 mod holes_dp;
 mod property;
+mod pseudo;
 mod svg;
 mod util;

@@ -34,7 +34,7 @@ fn to_polygon(ring: &[(i64, i64)]) -> Option<Polygon> {
 }
 
 /// Grows a random simple polygon from a triangle.
-fn general(base: [(i64, i64); 3], ops: &[(usize, i64, i64)]) -> Option<Vec<(i64, i64)>> {
+pub(crate) fn general(base: [(i64, i64); 3], ops: &[(usize, i64, i64)]) -> Option<Vec<(i64, i64)>> {
     let mut ring = base.to_vec();
     to_polygon(&ring)?;
     for &(at, x, y) in ops {
@@ -49,7 +49,7 @@ fn general(base: [(i64, i64); 3], ops: &[(usize, i64, i64)]) -> Option<Vec<(i64,
 
 /// The boundary of a random polyomino grown from `start` by adding 4-adjacent cells; `None` if
 /// a step would pinch the boundary or enclose a hole (such steps are skipped).
-fn rectilinear(start: (i64, i64), ops: &[(i64, i64)]) -> Vec<(i64, i64)> {
+pub(crate) fn rectilinear(start: (i64, i64), ops: &[(i64, i64)]) -> Vec<(i64, i64)> {
     let mut cells: BTreeSet<(i64, i64)> = BTreeSet::from([start]);
     let mut ring = boundary(&cells).unwrap_or_default();
     for &c in ops {
@@ -98,7 +98,7 @@ fn boundary(cells: &BTreeSet<(i64, i64)>) -> Option<Vec<(i64, i64)>> {
 }
 
 /// Removes flat vertices (middle of three collinear consecutive ones).
-fn without_flat(ring: &[(i64, i64)]) -> Vec<(i64, i64)> {
+pub(crate) fn without_flat(ring: &[(i64, i64)]) -> Vec<(i64, i64)> {
     let p = |k: usize| Point::new(ring[k % ring.len()].0, ring[k % ring.len()].1);
     (0..ring.len())
         .filter(|&k| cross(p(k + ring.len() - 1), p(k), p(k + 1)) != 0)
@@ -299,7 +299,7 @@ fn check_all(ring: &[(i64, i64)]) -> Result<(), TestCaseError> {
     Ok(())
 }
 
-fn config(cases: u32, seed: u64) -> Config {
+pub(crate) fn config(cases: u32, seed: u64) -> Config {
     Config {
         cases,
         rng_seed: RngSeed::Fixed(seed),
@@ -547,7 +547,7 @@ fn gcd(a: i64, b: i64) -> i64 {
 /// flat vertices of some rings dropped (`plain`, one bit per ring). Any modification that makes
 /// the polygon invalid is undone.
 #[derive(Clone, Debug)]
-struct HoledRecipe {
+pub(crate) struct HoledRecipe {
     width: i64,
     height: i64,
     notches: Vec<(i64, i64)>,
@@ -556,7 +556,7 @@ struct HoledRecipe {
     plain: u8,
 }
 
-fn holed(recipe: &HoledRecipe) -> Option<Vec<Vec<(i64, i64)>>> {
+pub(crate) fn holed(recipe: &HoledRecipe) -> Option<Vec<Vec<(i64, i64)>>> {
     let mut outer: BTreeSet<(i64, i64)> = BTreeSet::new();
     for x in 0..recipe.width {
         for y in 0..recipe.height {
@@ -639,7 +639,7 @@ fn holed(recipe: &HoledRecipe) -> Option<Vec<Vec<(i64, i64)>>> {
     Some(rings)
 }
 
-fn holed_recipe() -> impl Strategy<Value = HoledRecipe> {
+pub(crate) fn holed_recipe() -> impl Strategy<Value = HoledRecipe> {
     (
         3i64..=10,
         3i64..=10,

@@ -7,6 +7,9 @@
 //! - [`asano`]: the exact minimum by the dynamic program of Asano, Asano & Pinter.
 //! - [`asano_holes`]: the same for polygons with 1 or 2 holes, by cutting each hole open.
 //! - [`chords`]: which vertex pairs are chords (used by the DP).
+//! - [`pseudo`]: a minimal pseudotriangulation inside a triangulation (`--algorithm pseudo`).
+//! - [`pseudo_hull`]: a minimum pseudotriangulation of the convex hull containing the polygon's
+//!   edges (`--algorithm pseudo-hull`).
 
 pub mod asano;
 pub mod asano_holes;
@@ -14,6 +17,8 @@ pub mod chords;
 pub mod ear;
 pub mod minitri;
 pub mod monotone;
+pub mod pseudo;
+pub mod pseudo_hull;
 
 use std::fmt;
 
@@ -26,6 +31,10 @@ pub enum Algorithm {
     Asano,
     /// A plain triangulation into n + 2w - 2 triangles.
     Ear,
+    /// A minimal pseudotriangulation of the polygon inside the plain triangulation.
+    Pseudo,
+    /// A minimum pseudotriangulation of the convex hull containing the polygon's edges.
+    PseudoHull,
 }
 
 impl Algorithm {
@@ -35,12 +44,19 @@ impl Algorithm {
             Algorithm::Minitri => "minitri",
             Algorithm::Asano => "asano",
             Algorithm::Ear => "ear",
+            Algorithm::Pseudo => "pseudo",
+            Algorithm::PseudoHull => "pseudo-hull",
         }
     }
 
     /// Whether the algorithm computes a minimum triangulation.
     pub fn is_minimum(self) -> bool {
-        !matches!(self, Algorithm::Ear)
+        matches!(self, Algorithm::Minitri | Algorithm::Asano)
+    }
+
+    /// Whether the algorithm computes a pseudotriangulation (not a triangulation).
+    pub fn is_pseudo(self) -> bool {
+        matches!(self, Algorithm::Pseudo | Algorithm::PseudoHull)
     }
 }
 
@@ -70,6 +86,76 @@ pub struct Triangulation {
     /// For a minimum algorithm whose search was cut short (`optimal` false): a proved lower
     /// bound on the minimum number of triangles.
     pub lower_bound: Option<usize>,
+}
+
+/// A pseudotriangulation: faces that are simple polygons with exactly three corners (vertices
+/// whose angle in the face is below pi; an angle of pi or more, flat included, is no corner).
+/// Vertex numbers are STORED indices, as in [`Triangulation`].
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Pseudotriangulation {
+    /// The faces.
+    pub faces: Vec<Pseudotriangle>,
+    /// The number of edges (each counted once; polygon edges and, for `pseudo-hull`, hull edges
+    /// included).
+    pub edge_count: usize,
+    /// For `pseudo-hull`: the counts of Corollary 1.
+    pub hull: Option<HullCounts>,
+}
+
+/// One face of a [`Pseudotriangulation`].
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Pseudotriangle {
+    /// The boundary, counter-clockwise (face on the left), starting at a corner.
+    pub cycle: Vec<usize>,
+    /// The vertices whose angle in the face is below pi, in cycle order (three in a
+    /// pseudotriangle).
+    pub corners: Vec<usize>,
+}
+
+impl Pseudotriangle {
+    /// The face of a counter-clockwise cycle of `points` indices, its corners found by exact
+    /// orientation, the cycle turned to start at its first corner.
+    pub(crate) fn from_cycle(points: &[crate::geom::kernel::Point], mut cycle: Vec<usize>) -> Self {
+        let k = cycle.len();
+        let is_corner = |i: usize| {
+            let [u, v, w] = [(i + k - 1) % k, i, (i + 1) % k].map(|j| points[cycle[j]]);
+            crate::geom::kernel::cross(u, v, w) > 0
+        };
+        if let Some(first) = (0..k).find(|&i| is_corner(i)) {
+            cycle.rotate_left(first);
+        }
+        let is_corner = |i: usize| {
+            let [u, v, w] = [(i + k - 1) % k, i, (i + 1) % k].map(|j| points[cycle[j]]);
+            crate::geom::kernel::cross(u, v, w) > 0
+        };
+        let corners = (0..k).filter(|&i| is_corner(i)).map(|i| cycle[i]).collect();
+        Pseudotriangle { cycle, corners }
+    }
+}
+
+/// The counts of Corollary 1 for `pseudo-hull` (vertex set S of n points, segments L = the
+/// polygon's edges, plus the hull edges, which every pseudotriangulation of the hull contains).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct HullCounts {
+    /// r: vertices with an angle of at least pi between neighbouring segments of L. Every vertex
+    /// of a polygon has two edges, so r = n.
+    pub reflex_vertices: usize,
+    /// N: angles of at least pi between neighbouring segments of L and the hull edges, over all
+    /// vertices (outer angles of hull vertices included). In general position N = r; a flat
+    /// vertex (its two edges collinear) has two angles of exactly pi.
+    pub big_angles: usize,
+}
+
+impl HullCounts {
+    /// Corollary 1's number of pseudotriangles, 2n - r - 2.
+    pub fn corollary(&self, n: usize) -> usize {
+        (2 * n).saturating_sub(self.reflex_vertices + 2)
+    }
+
+    /// The least number of pseudotriangles containing L, 2n - N - 2 (Corollary 1 when N = r).
+    pub fn minimum(&self, n: usize) -> usize {
+        (2 * n).saturating_sub(self.big_angles + 2)
+    }
 }
 
 /// The degenerate triangles a set of triangles uses: for every vertex lying strictly inside a
@@ -173,6 +259,22 @@ pub enum TriangulateError {
         limit: usize,
         /// Estimated time, in words.
         time: String,
+    },
+    /// The polygon is too large for the O(n^3) search of `pseudo-hull`.
+    #[error("the pseudo-hull search takes time n^3 and this polygon has {n} vertices, above its limit of {limit}")]
+    PseudoHullTooLarge {
+        /// Number of vertices (all rings).
+        n: usize,
+        /// The limit.
+        limit: usize,
+    },
+    /// The `pseudo-hull` search stopped short of a pseudotriangulation (collinear points).
+    #[error("the pseudo-hull search found no further edge keeping every angle of at least pi after {edges} edges, short of the {target} a minimum pseudotriangulation has (collinear vertices; the paper assumes general position)")]
+    PseudoHullIncomplete {
+        /// Edges found.
+        edges: usize,
+        /// Edges needed, 3n - N - 3.
+        target: usize,
     },
     /// The polygon is too large for an algorithm with polynomial memory.
     #[error("the asano dynamic program needs about {memory} and {time} for {n} vertices, above its limit of {limit} vertices; use --algorithm minitri, or raise the limit with --dp-limit")]

@@ -15,6 +15,9 @@ pub struct Tally {
     pub solved: usize,
     /// Triangles of the triangulated polygons.
     pub triangles: usize,
+    /// Pseudotriangles of the polygons pseudotriangulated (`pseudo`, `pseudo-hull`; their
+    /// triangles are not counted above).
+    pub pseudotriangles: usize,
     /// Over the triangulated polygons, the sum of (n + 2w - 2) - triangles: what the minimum
     /// saves against any plain triangulation.
     pub saved: usize,
@@ -33,11 +36,15 @@ impl Tally {
         }
         match (&outcome.result, &outcome.polygon) {
             (Ok(solved), Some(polygon)) => {
-                let count = solved.triangulation.triangles.len();
                 self.solved += 1;
-                self.triangles += count;
-                let plain = (polygon.len() + 2 * polygon.holes()).saturating_sub(2);
-                self.saved += plain.saturating_sub(count);
+                if let Some(p) = &solved.pseudo {
+                    self.pseudotriangles += p.faces.len();
+                } else {
+                    let count = solved.triangulation.triangles.len();
+                    self.triangles += count;
+                    let plain = (polygon.len() + 2 * polygon.holes()).saturating_sub(2);
+                    self.saved += plain.saturating_sub(count);
+                }
                 if solved.verification.as_ref().is_some_and(|v| !v.ok) {
                     self.verify_failures += 1;
                 }
@@ -53,6 +60,7 @@ impl Tally {
         self.polygons += other.polygons;
         self.solved += other.solved;
         self.triangles += other.triangles;
+        self.pseudotriangles += other.pseudotriangles;
         self.saved += other.saved;
         self.errors += other.errors;
         self.verify_failures += other.verify_failures;
@@ -81,13 +89,22 @@ impl fmt::Display for Summary {
         let plural = |n: usize, word: &str| format!("{n} {word}{}", if n == 1 { "" } else { "s" });
         write!(
             f,
-            "{}, {}, {} ({} saved against n + 2w - 2), {}",
+            "{}, {}, ",
             plural(t.files, "file"),
             plural(t.polygons, "polygon"),
-            plural(t.triangles, "triangle"),
-            t.saved,
-            plural(t.errors, "error"),
         )?;
+        if t.triangles > 0 || t.pseudotriangles == 0 {
+            write!(
+                f,
+                "{} ({} saved against n + 2w - 2), ",
+                plural(t.triangles, "triangle"),
+                t.saved
+            )?;
+        }
+        if t.pseudotriangles > 0 {
+            write!(f, "{}, ", plural(t.pseudotriangles, "pseudotriangle"))?;
+        }
+        write!(f, "{}", plural(t.errors, "error"))?;
         if t.verify_failures > 0 {
             write!(f, ", {}", plural(t.verify_failures, "verification failure"))?;
         }
@@ -106,6 +123,7 @@ mod tests {
             polygons: 1,
             solved: 1,
             triangles: 5,
+            pseudotriangles: 0,
             saved: 5,
             errors: 2,
             verify_failures: 0,
@@ -113,6 +131,16 @@ mod tests {
         assert_eq!(
             tally.summary(Duration::from_millis(1234)).to_string(),
             "3 files, 1 polygon, 5 triangles (5 saved against n + 2w - 2), 2 errors, 1.23 s"
+        );
+        let pseudo = Tally {
+            triangles: 0,
+            saved: 0,
+            pseudotriangles: 4,
+            ..tally
+        };
+        assert_eq!(
+            pseudo.summary(Duration::from_millis(10)).to_string(),
+            "3 files, 1 polygon, 4 pseudotriangles, 2 errors, 0.01 s"
         );
     }
 }

@@ -21,7 +21,10 @@
 //! numbers, as in the JSON output's `triangles`), `vertex_on_side` (whether a vertex of the
 //! polygon lies strictly inside a side of this triangle: a T-junction) and `on_side` (those
 //! vertices, sorted). A polygon that failed has no feature (its error goes to standard error);
-//! with no triangle at all the document is an empty FeatureCollection.
+//! with no triangle at all the document is an empty FeatureCollection. For `pseudo` and
+//! `pseudo-hull`, one Feature per pseudotriangle instead (its closed counter-clockwise ring),
+//! with properties `source`, `polygon`, `pseudotriangle` (its index), `cycle` and `corners`
+//! (input vertex numbers, as in the JSON output).
 //!
 //! Streamed like the JSON writer: each polygon's features are written when it is pushed; memory
 //! is one polygon's. Complexity: O((T + d) log(T + d)) per polygon of `T` triangles and `d`
@@ -62,13 +65,34 @@ impl<W: Write> GeoJsonWriter<W> {
             return Ok(());
         };
         let t = &solved.triangulation;
-        let on_sides = vertices_on_sides(polygon, t);
         let source = json(&outcome.source);
         let grid = polygon.grid();
         let coordinate = |i: usize| {
             let p = polygon.point(i);
             format!("[{}, {}]", grid.format(0, p.x), grid.format(1, p.y))
         };
+        if let Some(p) = &solved.pseudo {
+            for (k, face) in p.faces.iter().enumerate() {
+                let separator = if self.features == 0 { "\n" } else { ",\n" };
+                self.features += 1;
+                let mut ring: Vec<String> = face.cycle.iter().map(|&v| coordinate(v)).collect();
+                ring.extend(ring.first().cloned());
+                let cycle: Vec<usize> = face.cycle.iter().map(|&v| polygon.id(v)).collect();
+                let corners: Vec<usize> = face.corners.iter().map(|&v| polygon.id(v)).collect();
+                write!(
+                    self.out,
+                    "{separator}{{\"type\": \"Feature\", \"geometry\": {{\"type\": \"Polygon\", \
+                     \"coordinates\": [[{}]]}}, \"properties\": {{\"source\": {source}, \
+                     \"polygon\": {index}, \"pseudotriangle\": {k}, \"cycle\": {}, \
+                     \"corners\": {}}}}}",
+                    ring.join(", "),
+                    json(&cycle),
+                    json(&corners),
+                )?;
+            }
+            return Ok(());
+        }
+        let on_sides = vertices_on_sides(polygon, t);
         for (k, (tri, vertices)) in t
             .triangles
             .iter()

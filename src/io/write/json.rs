@@ -79,30 +79,10 @@ impl<W: Write> JsonWriter<W> {
         writeln!(out, "{}", if self.polygons == 0 { "" } else { "," })?;
         self.polygons += 1;
         let t = &solved.triangulation;
-        let mut fields: Vec<(&str, String)> = vec![
-            ("source", json(&outcome.source)),
-            ("index", json(&index)),
-            ("algorithm", json(t.algorithm.name())),
-            ("vertices", json(&polygon.len())),
-            ("holes", json(&polygon.holes())),
-            ("triangle_count", json(&t.triangles.len())),
-            ("degenerate_count", json(&t.degenerate.len())),
-            ("triangles", json(&ids(polygon, &t.triangles))),
-            ("degenerate_triangles", json(&ids(polygon, &t.degenerate))),
-            ("optimal", json(&t.optimal)),
-            ("input_vertices", json(&polygon.input_vertices())),
-            ("flat_vertices", json(&polygon.flat_vertices())),
-            ("bounds", {
-                let (lower, upper) = polygon.minimum_bounds();
-                format!("{{\"lower\": {lower}, \"upper\": {upper}}}")
-            }),
-        ];
-        if let Some(lower) = t.lower_bound {
-            // A search cut short: what is proved about the minimum, right after `optimal`.
-            let after = fields.iter().position(|(name, _)| *name == "optimal");
-            let at = after.map_or(fields.len(), |i| i + 1);
-            fields.insert(at, ("lower_bound", json(&lower)));
-        }
+        let fields: Vec<(&str, String)> = match &solved.pseudo {
+            Some(p) => pseudo_fields(outcome, index, polygon, t.algorithm, p),
+            None => triangle_fields(outcome, index, polygon, t),
+        };
         writeln!(out, "    {{")?;
         for (name, value) in &fields {
             writeln!(out, "      \"{name}\": {value},")?;
@@ -130,6 +110,89 @@ impl<W: Write> JsonWriter<W> {
         writeln!(out, "}}")?;
         out.flush()
     }
+}
+
+/// The fields of a triangulated polygon, in order.
+fn triangle_fields(
+    outcome: &Outcome,
+    index: usize,
+    polygon: &Polygon,
+    t: &crate::algo::Triangulation,
+) -> Vec<(&'static str, String)> {
+    let mut fields: Vec<(&str, String)> = vec![
+        ("source", json(&outcome.source)),
+        ("index", json(&index)),
+        ("algorithm", json(t.algorithm.name())),
+        ("vertices", json(&polygon.len())),
+        ("holes", json(&polygon.holes())),
+        ("triangle_count", json(&t.triangles.len())),
+        ("degenerate_count", json(&t.degenerate.len())),
+        ("triangles", json(&ids(polygon, &t.triangles))),
+        ("degenerate_triangles", json(&ids(polygon, &t.degenerate))),
+        ("optimal", json(&t.optimal)),
+        ("input_vertices", json(&polygon.input_vertices())),
+        ("flat_vertices", json(&polygon.flat_vertices())),
+        ("bounds", {
+            let (lower, upper) = polygon.minimum_bounds();
+            format!("{{\"lower\": {lower}, \"upper\": {upper}}}")
+        }),
+    ];
+    if let Some(lower) = t.lower_bound {
+        // A search cut short: what is proved about the minimum, right after `optimal`.
+        let after = fields.iter().position(|(name, _)| *name == "optimal");
+        let at = after.map_or(fields.len(), |i| i + 1);
+        fields.insert(at, ("lower_bound", json(&lower)));
+    }
+    fields
+}
+
+/// The fields of a pseudotriangulated polygon (`pseudo`, `pseudo-hull`), in order: no triangle
+/// fields, but `pseudotriangle_count`, `edge_count` and `pseudotriangles` (each `cycle`
+/// counter-clockwise from a corner, and its three `corners`); for `pseudo-hull` also
+/// `reflex_vertices` (r), `big_angles` (N), `corollary_count` (2n - r - 2) and `minimum_count`
+/// (2n - N - 2, the same in general position). `optimal` says whether the count is proved minimum (`pseudo-hull`) rather than
+/// only minimal (`pseudo`).
+fn pseudo_fields(
+    outcome: &Outcome,
+    index: usize,
+    polygon: &Polygon,
+    algorithm: crate::algo::Algorithm,
+    p: &crate::algo::Pseudotriangulation,
+) -> Vec<(&'static str, String)> {
+    let faces: Vec<String> = p
+        .faces
+        .iter()
+        .map(|f| {
+            let cycle: Vec<usize> = f.cycle.iter().map(|&v| polygon.id(v)).collect();
+            let corners: Vec<usize> = f.corners.iter().map(|&v| polygon.id(v)).collect();
+            format!(
+                "{{\"cycle\": {}, \"corners\": {}}}",
+                json(&cycle),
+                json(&corners)
+            )
+        })
+        .collect();
+    let n = polygon.len();
+    let mut fields: Vec<(&str, String)> = vec![
+        ("source", json(&outcome.source)),
+        ("index", json(&index)),
+        ("algorithm", json(algorithm.name())),
+        ("vertices", json(&n)),
+        ("holes", json(&polygon.holes())),
+        ("pseudotriangle_count", json(&p.faces.len())),
+        ("edge_count", json(&p.edge_count)),
+    ];
+    if let Some(h) = &p.hull {
+        fields.push(("reflex_vertices", json(&h.reflex_vertices)));
+        fields.push(("big_angles", json(&h.big_angles)));
+        fields.push(("corollary_count", json(&h.corollary(n))));
+        fields.push(("minimum_count", json(&h.minimum(n))));
+    }
+    fields.push(("pseudotriangles", format!("[{}]", faces.join(", "))));
+    fields.push(("optimal", json(&p.hull.is_some())));
+    fields.push(("input_vertices", json(&polygon.input_vertices())));
+    fields.push(("flat_vertices", json(&polygon.flat_vertices())));
+    fields
 }
 
 /// Triangles as input vertex numbers (shared with the GeoJSON writer).

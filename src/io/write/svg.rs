@@ -48,7 +48,7 @@
 //! triangle; labels add O(n log(MAX_ROOM / MIN_ROOM)) time and about 100 bytes per vertex; the
 //! faults of a failed check add about 45 bytes per triangle.
 
-use crate::algo::Triangulation;
+use crate::algo::{Pseudotriangulation, Triangulation};
 use crate::geom::kernel::Point;
 use crate::geom::polygon::Polygon;
 use crate::pipeline::Outcome;
@@ -91,6 +91,9 @@ const TRIANGLE_FILL: &str = "#e2ebf9";
 const TRIANGLE_STROKE: &str = "#4a78c2";
 const BOUNDARY: &str = "#1f2a3a";
 const DEGENERATE: &str = "#e8590c";
+const FACE_FILL: &str = "#dbe7fb";
+const FACE_FILL_2: &str = "#f3e3c3";
+const CORNER: &str = "#2b8a3e";
 const ERROR: &str = "#c92a2a";
 const FRAME: &str = "#d5dbe5";
 const MUTED: &str = "#555";
@@ -121,6 +124,8 @@ pub struct Figure<'a> {
     pub alerts: Vec<String>,
     /// Write the vertex numbers whatever the size.
     pub labels: bool,
+    /// Its pseudotriangulation (`pseudo`, `pseudo-hull`), drawn instead of the triangles.
+    pub pseudo: Option<&'a Pseudotriangulation>,
 }
 
 /// Writes one SVG document of every outcome that has a valid polygon (solved or not; inputs that
@@ -149,6 +154,28 @@ pub fn write_outcomes(outcomes: &[Outcome], style: Style, out: &mut impl Write) 
             }
             Ok(solved) => solved,
         };
+        if let Some(p) = &solved.pseudo {
+            // A pseudotriangulation: one figure, the checker's problems in red in the caption.
+            let check = solved
+                .verification
+                .as_ref()
+                .and_then(|v| v.pseudotriangulation.as_ref());
+            let mut alerts = Vec::new();
+            if let Some(c) = check.filter(|c| !c.valid) {
+                alerts.push(format!(
+                    "{} output invalid:",
+                    solved.triangulation.algorithm
+                ));
+                alerts.extend(c.problems.iter().cloned());
+            }
+            figures.push(Figure {
+                triangulation: Some(&solved.triangulation),
+                pseudo: Some(p),
+                alerts,
+                ..base(o.to_string())
+            });
+            continue;
+        }
         let Some(v) = solved.verification.as_ref().filter(|v| !v.ok) else {
             figures.push(Figure {
                 triangulation: Some(&solved.triangulation),
@@ -276,6 +303,7 @@ impl<'a> Figure<'a> {
             faults: None,
             alerts: Vec::new(),
             labels: false,
+            pseudo: None,
         }
     }
 }
@@ -366,7 +394,10 @@ fn draw_figure(
     writeln!(out, r#""/>"#)?;
 
     let triangulation = figure.triangulation.filter(|_| figure.error.is_none());
-    if let Some(t) = triangulation.filter(|t| !t.triangles.is_empty()) {
+    let pseudo = figure.pseudo.filter(|_| figure.error.is_none());
+    if let Some(p) = pseudo {
+        faces(out, &view, p, triangle_width)?;
+    } else if let Some(t) = triangulation.filter(|t| !t.triangles.is_empty()) {
         write!(
             out,
             r#"<path fill="{TRIANGLE_FILL}" stroke="{TRIANGLE_STROKE}" stroke-width="{triangle_width}" stroke-linejoin="round" d=""#
@@ -429,11 +460,75 @@ fn draw_figure(
         draw_faults(out, &view, t, faults)?;
     }
 
+    if let Some(p) = pseudo.filter(|_| n <= DOTS_MAX) {
+        corners(out, &view, p)?;
+    }
+
     if n <= LABELS_MAX || figure.labels {
         labels(out, &view)?;
     }
 
     draw_caption(out, caption, origin)?;
+    writeln!(out, "</g>")
+}
+
+/// The faces of a pseudotriangulation, shaded in two alternating tones.
+fn faces(
+    out: &mut impl Write,
+    view: &View<'_>,
+    p: &Pseudotriangulation,
+    width: f64,
+) -> io::Result<()> {
+    for (tone, fill) in [FACE_FILL, FACE_FILL_2].into_iter().enumerate() {
+        write!(
+            out,
+            r#"<path fill="{fill}" stroke="{TRIANGLE_STROKE}" stroke-width="{width}" stroke-linejoin="round" d=""#
+        )?;
+        for face in p.faces.iter().skip(tone).step_by(2) {
+            let points: Vec<Xy> = face.cycle.iter().filter_map(|&v| view.at(v)).collect();
+            if let Some((first, rest)) = points.split_first() {
+                write!(out, "M{first}L")?;
+                for (k, q) in rest.iter().enumerate() {
+                    write!(out, "{}{q}", if k == 0 { "" } else { " " })?;
+                }
+                write!(out, "Z")?;
+            }
+        }
+        writeln!(out, r#""/>"#)?;
+    }
+    Ok(())
+}
+
+/// A dot just inside each corner of each face, on the bisector of its angle.
+fn corners(out: &mut impl Write, view: &View<'_>, p: &Pseudotriangulation) -> io::Result<()> {
+    writeln!(out, r##"<g fill="{CORNER}" stroke="none">"##)?;
+    for face in &p.faces {
+        let k = face.cycle.len();
+        for (i, &v) in face.cycle.iter().enumerate() {
+            if !face.corners.contains(&v) {
+                continue;
+            }
+            let (Some(Xy(x, y)), Some(Xy(px, py)), Some(Xy(nx, ny))) = (
+                view.at(v),
+                view.at(face.cycle[(i + k - 1) % k]),
+                view.at(face.cycle[(i + 1) % k]),
+            ) else {
+                continue;
+            };
+            let unit = |dx: f64, dy: f64| {
+                let length = dx.hypot(dy);
+                if length > 0.0 {
+                    (dx / length, dy / length)
+                } else {
+                    (0.0, 0.0)
+                }
+            };
+            let (a, b) = (unit(px - x, py - y), unit(nx - x, ny - y));
+            let (bx, by) = unit(a.0 + b.0, a.1 + b.1);
+            let (cx, cy) = (Num(x + 7.0 * bx), Num(y + 7.0 * by));
+            writeln!(out, r#"<circle cx="{cx}" cy="{cy}" r="2.5"/>"#)?;
+        }
+    }
     writeln!(out, "</g>")
 }
 
@@ -636,6 +731,20 @@ fn caption(figure: &Figure<'_>) -> Vec<Line> {
                 }
             }
             lines.extend(wrapped.into_iter().map(|t| line(Kind::Error, t)));
+        }
+        (None, Some(t)) if figure.pseudo.is_some() => {
+            if let Some(p) = figure.pseudo {
+                stats += &format!(
+                    ", pseudotriangles = {}, edges = {}, algorithm = {}",
+                    p.faces.len(),
+                    p.edge_count,
+                    t.algorithm
+                );
+            }
+            lines.push(line(Kind::Stats, stats));
+            let key =
+                "shaded: pseudotriangles; green dot: a corner (angle < π) of the face it lies in";
+            lines.push(line(Kind::Key, key.to_string()));
         }
         (None, Some(t)) => {
             let alerts = figure.alerts.iter().flat_map(|a| wrap(a, TEXT_WRAP));

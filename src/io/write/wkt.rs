@@ -7,7 +7,8 @@
 //! Output guarantee: for each solved polygon, in input order, one line
 //! `MULTIPOLYGON (((x y, x y, x y, x y)), ...)`: its triangles in the order of the JSON output,
 //! each a closed counter-clockwise ring (first corner repeated), coordinates the input decimals
-//! exactly ([`crate::geom::polygon::Grid::format`]). A polygon that failed has no line (its
+//! exactly ([`crate::geom::polygon::Grid::format`]); for `pseudo` and `pseudo-hull`, its
+//! pseudotriangles instead, in the order of the JSON output. A polygon that failed has no line (its
 //! error goes to standard error); with nothing triangulated the output is empty.
 //!
 //! Why lines and not one `GEOMETRYCOLLECTION`: each line is a complete WKT geometry standing for
@@ -48,6 +49,16 @@ impl<W: Write> WktWriter<W> {
             format!("{} {}", grid.format(0, p.x), grid.format(1, p.y))
         };
         write!(self.out, "MULTIPOLYGON (")?;
+        if let Some(p) = &solved.pseudo {
+            // A pseudotriangulation: its faces, each a closed counter-clockwise ring.
+            for (k, face) in p.faces.iter().enumerate() {
+                let separator = if k == 0 { "" } else { ", " };
+                let ring: Vec<String> = face.cycle.iter().map(|&v| coordinate(v)).collect();
+                let first = ring.first().cloned().unwrap_or_default();
+                write!(self.out, "{separator}(({}, {first}))", ring.join(", "))?;
+            }
+            return writeln!(self.out, ")");
+        }
         for (k, tri) in solved.triangulation.triangles.iter().enumerate() {
             let [a, b, c] = tri.map(coordinate);
             let separator = if k == 0 { "" } else { ", " };

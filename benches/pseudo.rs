@@ -1,0 +1,69 @@
+//! Pseudotriangulations (issue 7), on polygons already read, validated and (for `pseudo`)
+//! triangulated:
+//!
+//! - group `pseudo_greedy`: the linear-time greedy of Section 5 (`pseudo::minimal`) alone, on
+//!   the plain triangulation, for random star-shaped polygons (general position) and rectilinear
+//!   mazes (many collinear vertices) of 10^3 to 10^6 vertices. Time per vertex should stay flat
+//!   (Theorem 5); throughput is reported in vertices.
+//! - group `pseudo_end_to_end`: the same with the O(n log n) plain triangulation included, as
+//!   `--algorithm pseudo` runs it.
+//! - group `pseudo_hull`: the O(n^3) edge search of `pseudo-hull` on star polygons of 50 to 400
+//!   vertices (time should grow about 8 times per doubling).
+//!
+//! Run: `cargo bench --bench pseudo` (about 3 minutes).
+
+mod common;
+
+use common::Shape;
+use criterion::{
+    criterion_group, criterion_main, BenchmarkId, Criterion, SamplingMode, Throughput,
+};
+use minitri::algo::{ear, pseudo, pseudo_hull};
+use std::hint::black_box;
+use std::time::Duration;
+
+fn greedy(c: &mut Criterion) {
+    for (name, end_to_end) in [("pseudo_greedy", false), ("pseudo_end_to_end", true)] {
+        let mut group = c.benchmark_group(name);
+        group.sampling_mode(SamplingMode::Flat);
+        for shape in [Shape::Star, Shape::Maze] {
+            for n in [1_000, 10_000, 100_000, 1_000_000] {
+                let polygon = common::polygon(&shape.points(n, 7));
+                let start = ear::triangulate(&polygon).expect("plain");
+                group.throughput(Throughput::Elements(polygon.len() as u64));
+                group.sample_size(if n >= 1_000_000 { 10 } else { 20 });
+                group.measurement_time(Duration::from_secs(if n >= 100_000 { 8 } else { 3 }));
+                let id = BenchmarkId::new(shape.name(), n);
+                if end_to_end {
+                    group.bench_with_input(id, &polygon, |b, p| {
+                        b.iter(|| {
+                            let t = ear::triangulate(black_box(p)).expect("plain");
+                            pseudo::minimal(p, &t.triangles)
+                        })
+                    });
+                } else {
+                    group.bench_with_input(id, &polygon, |b, p| {
+                        b.iter(|| pseudo::minimal(black_box(p), &start.triangles))
+                    });
+                }
+            }
+        }
+        group.finish();
+    }
+}
+
+fn hull(c: &mut Criterion) {
+    let mut group = c.benchmark_group("pseudo_hull");
+    group.sampling_mode(SamplingMode::Flat);
+    group.sample_size(10);
+    for n in [50, 100, 200, 400] {
+        let polygon = common::polygon(&common::star(n, 7));
+        group.bench_with_input(BenchmarkId::new("star", n), &polygon, |b, p| {
+            b.iter(|| pseudo_hull::pseudotriangulate(black_box(p), pseudo_hull::DEFAULT_LIMIT))
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, greedy, hull);
+criterion_main!(benches);

@@ -1,0 +1,279 @@
+//! `--algorithm pseudo`: a MINIMAL pseudotriangulation of a polygon (holes allowed) contained in a
+//! triangulation, by the linear-time greedy of Rote, Wang, Wang & Xu, "On constrained minimum
+//! pseudotriangulations", COCOON 2003, LNCS 2697, pp. 445-454, doi:10.1007/3-540-45071-8_45
+//! (`papers/rote-wang-wang-xu-constrained-minimum-pseudotriangulations.txt`).
+//!
+//! A pseudotriangle is a simple polygon with exactly three corners, a corner being a vertex whose
+//! interior angle is strictly less than pi; a vertex whose angle in a face is pi or more (a flat
+//! vertex included) is not a corner. The region is the polygon, not the convex hull of its
+//! vertices: polygon edges are never removed and the outside of the polygon (holes included) is
+//! no face.
+//!
+//! # Overview
+//!
+//! 0. The start: the plain triangulation of [`crate::algo::ear`] (monotone pieces, O(n log n)),
+//!    n + 2w - 2 nondegenerate triangles with no vertex inside a side. Why not MINITRI's minimum
+//!    triangulation: its degenerate triangles are T-junctions (a vertex inside a triangle side),
+//!    so it is no triangulation of the vertex set in the paper's sense (Section 2: a maximal
+//!    planar straight-line graph), MINITRI is not linear, and a minimum triangulation does not
+//!    give a smaller minimal pseudotriangulation in general (Theorem 4(b): which minimal one is
+//!    reached depends on the triangulation and on the order of removals anyway).
+//! 1. Removable edges (Section 5, Lemma 4(a)): a diagonal `ab` whose removal merges its two
+//!    faces into a pseudotriangle. With `alpha1`, `alpha2` the angles at `a` on either side of
+//!    `ab` and `beta1`, `beta2` those at `b`, that is exactly when `alpha1 < pi`, `alpha2 < pi`
+//!    and `alpha1 + alpha2 >= pi`, or the same at `b` (the merged face keeps 6 - 3 corners;
+//!    `>=` and not the paper's `>` because an angle of exactly pi is no corner). Each test is
+//!    three exact orientation signs ([`crate::geom::kernel::cross`]). A work list holds the
+//!    edges to test, initially every diagonal; removing `ab` re-queues the (at most four) edges
+//!    beside it at `a` and `b`, the only ones whose test reads a changed angle.
+//! 2. Removable triangles (Lemma 4(b)): a triangular face whose three sides are diagonals and
+//!    whose three corners each have both outer neighbouring angles below pi and their sum with
+//!    the triangle's angle at least pi; removing its three sides merges four faces into one
+//!    pseudotriangle. One scan of the faces: by the paper, and because every vertex of a removed
+//!    triangle becomes a non-corner of the merged face, no edge or triangle becomes removable.
+//!
+//! By Theorem 2 the result is minimal: no edge and no triangle can be removed. The faces are
+//! simple: a merged face of two (or four) simple faces joined along edges is simply connected,
+//! and a closed boundary walk touching itself would have to turn once clockwise around what it
+//! encloses, which three corners cannot allow (the right turns of a pseudotriangle total less
+//! than pi). [`crate::verify::pseudo::check`] checks all of it independently.
+//!
+//! Complexity: O(n) after the triangulation (Theorem 5): linear-time twin matching (two counting
+//! sorts), one work list, one face scan. With the triangulation, O(n log n) in all.
+
+use super::{Pseudotriangle, Pseudotriangulation};
+use crate::geom::kernel::{cross, Point};
+use crate::geom::polygon::Polygon;
+
+/// No twin: a polygon edge (its other side is outside the polygon).
+const NONE: usize = usize::MAX;
+
+/// A minimal pseudotriangulation of `polygon` contained in `triangles` (a triangulation of it by
+/// nondegenerate counter-clockwise triangles with no vertex inside a side, such as
+/// [`crate::algo::ear::triangulate`] gives), by the greedy of Section 5.
+///
+/// # Examples
+/// ```
+/// use minitri::{algo::{ear, pseudo}, Decimal, Polygon, RawPolygon};
+/// let ring: Result<Vec<[Decimal; 2]>, minitri::NumberError> = [(0, 0), (4, 0), (4, 4), (0, 4)]
+///     .iter()
+///     .map(|&(x, y)| Ok([Decimal::parse(&x.to_string())?, Decimal::parse(&y.to_string())?]))
+///     .collect();
+/// let (polygon, _warnings) = Polygon::from_raw(&RawPolygon { rings: vec![ring?] })?;
+/// let start = ear::triangulate(&polygon)?;
+/// let p = pseudo::minimal(&polygon, &start.triangles);
+/// assert_eq!(p.faces.len(), 2); // a square has four corners: one diagonal must stay
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn minimal(polygon: &Polygon, triangles: &[[usize; 3]]) -> Pseudotriangulation {
+    let mut mesh = Mesh::new(polygon, triangles);
+    mesh.remove_edges();
+    mesh.remove_triangles();
+    mesh.faces()
+}
+
+/// The faces as half-edges: half-edge `3k + i` of triangle `k` runs from its corner `i` to corner
+/// `i + 1`, with its face on the left; `next`/`prev` walk a face counter-clockwise.
+struct Mesh<'a> {
+    points: &'a [Point],
+    origin: Vec<usize>,
+    next: Vec<usize>,
+    prev: Vec<usize>,
+    /// The opposite half-edge, or [`NONE`] on a polygon edge.
+    twin: Vec<usize>,
+    removed: Vec<bool>,
+}
+
+impl<'a> Mesh<'a> {
+    fn new(polygon: &'a Polygon, triangles: &[[usize; 3]]) -> Mesh<'a> {
+        let h = 3 * triangles.len();
+        let origin: Vec<usize> = triangles.iter().flatten().copied().collect();
+        let next: Vec<usize> = (0..h).map(|e| e - e % 3 + (e + 1) % 3).collect();
+        let prev: Vec<usize> = (0..h).map(|e| e - e % 3 + (e + 2) % 3).collect();
+        let dest = |e: usize| origin[next[e]];
+        // Diagonals, sorted by (smaller end, larger end) with two stable counting sorts: the two
+        // half-edges of one diagonal end up side by side.
+        let n = polygon.len();
+        let diagonal: Vec<usize> = (0..h)
+            .filter(|&e| polygon.next(origin[e]) != dest(e))
+            .collect();
+        let larger = counting_sort(diagonal, n, |e| origin[e].max(dest(e)));
+        let sorted = counting_sort(larger, n, |e| origin[e].min(dest(e)));
+        let mut twin = vec![NONE; h];
+        for pair in sorted.chunks_exact(2) {
+            twin[pair[0]] = pair[1];
+            twin[pair[1]] = pair[0];
+        }
+        Mesh {
+            points: polygon.points(),
+            origin,
+            next,
+            prev,
+            twin,
+            removed: vec![false; h],
+        }
+    }
+
+    fn dest(&self, e: usize) -> usize {
+        self.origin[self.next[e]]
+    }
+
+    /// Whether the turn `u -> a -> w` leaves an angle below pi on its left (a corner there).
+    fn corner(&self, u: usize, a: usize, w: usize) -> bool {
+        cross(self.points[u], self.points[a], self.points[w]) > 0
+    }
+
+    /// Lemma 4 at the vertex where `incoming` (of one face) meets `outgoing` (of the face on the
+    /// other side of the removed edges): both faces' angles there are corners, and the merged
+    /// angle `prev(incoming) .. dest(outgoing)` is not. `first` and `last` are the angles'
+    /// other sides (the removed edges' far ends).
+    fn loses_both(&self, u: usize, a: usize, w: usize, first: usize, last: usize) -> bool {
+        self.corner(u, a, first) && self.corner(last, a, w) && !self.corner(u, a, w)
+    }
+
+    /// Lemma 4(a) for the diagonal of half-edge `e` (`a -> b`).
+    fn edge_removable(&self, e: usize) -> bool {
+        let t = self.twin[e];
+        if t == NONE || self.removed[e] || self.next[e] == t || self.next[t] == e {
+            return false;
+        }
+        let (a, b) = (self.origin[e], self.origin[t]);
+        // At a: u -> a -> b in e's face, b -> a -> w in t's face, merged u -> a -> w.
+        let u = self.origin[self.prev[e]];
+        let w = self.dest(self.next[t]);
+        // At b: x -> b -> a in t's face, a -> b -> y in e's face, merged x -> b -> y.
+        let x = self.origin[self.prev[t]];
+        let y = self.dest(self.next[e]);
+        self.loses_both(u, a, w, b, b) || self.loses_both(x, b, y, a, a)
+    }
+
+    /// Step 1: removes removable edges until none is left.
+    fn remove_edges(&mut self) {
+        let mut work: Vec<usize> = (0..self.twin.len())
+            .filter(|&e| self.twin[e] != NONE && e < self.twin[e])
+            .collect();
+        while let Some(e) = work.pop() {
+            if !self.edge_removable(e) {
+                continue;
+            }
+            let t = self.twin[e];
+            let (pe, ne, pt, nt) = (self.prev[e], self.next[e], self.prev[t], self.next[t]);
+            self.link(pe, nt);
+            self.link(pt, ne);
+            self.removed[e] = true;
+            self.removed[t] = true;
+            work.extend([pe, ne, pt, nt]);
+        }
+    }
+
+    fn link(&mut self, from: usize, to: usize) {
+        self.next[from] = to;
+        self.prev[to] = from;
+    }
+
+    /// Lemma 4(b) for the triangular face of `sides` (each `sides[i]` from corner i to i + 1).
+    fn triangle_removable(&self, sides: [usize; 3]) -> bool {
+        if sides.iter().any(|&s| self.twin[s] == NONE) {
+            return false;
+        }
+        (0..3).all(|i| {
+            let (incoming, outgoing) = (sides[(i + 2) % 3], sides[i]);
+            let a = self.origin[outgoing];
+            // The face across `incoming` (c -> a) has a -> c, after u -> a.
+            let across_in = self.twin[incoming];
+            let u = self.origin[self.prev[across_in]];
+            let c = self.dest(across_in);
+            // The face across `outgoing` (a -> b) has b -> a, before a -> w.
+            let across_out = self.twin[outgoing];
+            let b = self.origin[across_out];
+            let w = self.dest(self.next[across_out]);
+            self.loses_both(u, a, w, c, b)
+        })
+    }
+
+    /// Step 2: one scan of the faces, removing every removable triangle.
+    fn remove_triangles(&mut self) {
+        for e in 0..self.next.len() {
+            if self.removed[e] {
+                continue;
+            }
+            let sides = [e, self.next[e], self.next[self.next[e]]];
+            if self.next[sides[2]] != e || !self.triangle_removable(sides) {
+                continue;
+            }
+            // At each corner, the face across the incoming side continues into the face across
+            // the outgoing side.
+            let links: Vec<(usize, usize)> = (0..3)
+                .map(|i| {
+                    let (incoming, outgoing) = (sides[(i + 2) % 3], sides[i]);
+                    (
+                        self.prev[self.twin[incoming]],
+                        self.next[self.twin[outgoing]],
+                    )
+                })
+                .collect();
+            for (from, to) in links {
+                self.link(from, to);
+            }
+            for s in sides {
+                self.removed[s] = true;
+                self.removed[self.twin[s]] = true;
+            }
+        }
+    }
+
+    /// The faces left, each from its first corner (by vertex order of the walk).
+    fn faces(&self) -> Pseudotriangulation {
+        let mut seen = vec![false; self.next.len()];
+        let mut faces = Vec::new();
+        let mut edges = 0;
+        for start in 0..self.next.len() {
+            if self.removed[start] {
+                continue;
+            }
+            if self.twin[start] == NONE || start < self.twin[start] {
+                edges += 1;
+            }
+            if seen[start] {
+                continue;
+            }
+            let mut cycle = Vec::new();
+            let mut e = start;
+            loop {
+                seen[e] = true;
+                cycle.push(self.origin[e]);
+                e = self.next[e];
+                if e == start {
+                    break;
+                }
+            }
+            faces.push(Pseudotriangle::from_cycle(self.points, cycle));
+        }
+        Pseudotriangulation {
+            faces,
+            edge_count: edges,
+            hull: None,
+        }
+    }
+}
+
+/// `items` stably sorted by `key` (below `range`), in O(items + range).
+fn counting_sort(items: Vec<usize>, range: usize, key: impl Fn(usize) -> usize) -> Vec<usize> {
+    let mut start = vec![0usize; range + 1];
+    for &e in &items {
+        start[key(e) + 1] += 1;
+    }
+    for k in 0..range {
+        start[k + 1] += start[k];
+    }
+    let mut out = vec![0; items.len()];
+    for &e in &items {
+        let k = key(e);
+        out[start[k]] = e;
+        start[k] += 1;
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests;

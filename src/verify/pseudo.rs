@@ -1,0 +1,505 @@
+//! Independent checks of a pseudotriangulation (`--algorithm pseudo` and `pseudo-hull`), exact,
+//! sharing no code with the algorithms (kernel and polygon accessors only).
+//!
+//! Input contract: a valid [`Polygon`] and ANY [`Pseudotriangulation`] (indices may be out of
+//! range or repeated; nothing here panics on them). The region is the polygon for
+//! [`Algorithm::Pseudo`] and the convex hull of its vertices for [`Algorithm::PseudoHull`].
+//!
+//! Output guarantee: [`check`] is valid exactly when
+//! 1. every face is a cycle of at least 3 distinct vertices of the polygon, a simple polygon
+//!    (no two of its edges meet but consecutive ones at their common end, no fold-back),
+//!    counter-clockwise (positive area);
+//! 2. each face has exactly three corners (angle below pi; pi or more, flat, is no corner), and
+//!    the listed corners are those;
+//! 3. the faces partition the region: the boundary chain of the faces minus the region's is zero
+//!    (the argument of [`crate::verify`] holds for simple counter-clockwise faces as for
+//!    triangles), and the areas add up; for `pseudo-hull` every polygon edge is a face edge;
+//! 4. `edge_count` is the number of distinct face edges;
+//! 5. minimality (Theorem 2): no edge but a polygon edge (L) can be removed leaving a
+//!    pseudotriangulation, nor the three sides of a triangular face. Removing an edge merges its
+//!    two faces; the merged face's corners are those of both faces except at the edge's ends,
+//!    where the two angles become one (a corner if it is below pi). The edge is removable when
+//!    the merged face has exactly 3 corners (Lemma 4(a)); likewise for a triangle and its three
+//!    neighbours (Lemma 4(b), 12 corners down to 3);
+//! 6. for `pseudo-hull`: the number of faces is 2n - N - 2, N the number of angles of at least pi
+//!    between neighbouring segments of L and the hull edges, the least possible (see
+//!    [`crate::algo::pseudo_hull`]); in general position N = r = n and this is Corollary 1's
+//!    2n - r - 2.
+//!
+//! Complexity: O(F log F) for the chain and the adjacency (F: total face size), plus the
+//! simplicity test, O(k^2) for a face of k vertices in the worst case (edges compared only when
+//! their x ranges overlap); for `pseudo-hull`, O(n log n) for the hull.
+
+use super::{check_sides_cancel, plural, Check, Problems};
+use crate::algo::{Algorithm, Pseudotriangulation};
+use crate::geom::kernel::{cmp_angle, cross, dot, segment_contact, Point, SegmentContact, WideSum};
+use crate::geom::polygon::Polygon;
+use std::collections::BTreeMap;
+
+/// Checks, exactly, that `p` is a minimal pseudotriangulation of `polygon` (`pseudo`), or a
+/// minimum one of its vertices' convex hull containing its edges (`pseudo-hull`); see the
+/// module documentation.
+pub fn check(polygon: &Polygon, algorithm: Algorithm, p: &Pseudotriangulation) -> Check {
+    let mut problems = Problems::default();
+    let hull_region = algorithm == Algorithm::PseudoHull;
+    let n = polygon.len();
+    let mut good: Vec<usize> = Vec::new();
+    for (k, face) in p.faces.iter().enumerate() {
+        if face_ok(polygon, k, face, &mut problems) {
+            good.push(k);
+        }
+    }
+    // 3: the chain, the area, the polygon edges.
+    let hull = hull_cycle(polygon.points());
+    let mut sides: Vec<[usize; 2]> = Vec::new();
+    let mut area = WideSum::default();
+    for &k in &good {
+        let c = &p.faces[k].cycle;
+        for i in 0..c.len() {
+            sides.push([c[i], c[(i + 1) % c.len()]]);
+            area.add(cross(
+                polygon.point(c[0]),
+                polygon.point(c[i]),
+                polygon.point(c[(i + 1) % c.len()]),
+            ));
+        }
+    }
+    let mut region = WideSum::default();
+    if hull_region && !is_hull(polygon, &hull) {
+        problems.add(|| "the checker's own convex hull is wrong (a checker bug)".to_string());
+    }
+    if hull_region {
+        for i in 0..hull.len() {
+            let (a, b) = (hull[i], hull[(i + 1) % hull.len()]);
+            sides.push([b, a]);
+            region.add(cross(
+                polygon.point(hull[0]),
+                polygon.point(a),
+                polygon.point(b),
+            ));
+        }
+    } else {
+        sides.extend((0..n).map(|i| [polygon.next(i), i]));
+        region = polygon.twice_area();
+    }
+    if good.len() == p.faces.len() {
+        if area != region {
+            problems.add(|| "the faces' total area differs from the region's".to_string());
+        }
+        check_sides_cancel(polygon, sides, &mut problems);
+    }
+    // Directed face edges -> (face, position).
+    let mut half: BTreeMap<(usize, usize), (usize, usize)> = BTreeMap::new();
+    for &k in &good {
+        let c = &p.faces[k].cycle;
+        for i in 0..c.len() {
+            half.insert((c[i], c[(i + 1) % c.len()]), (k, i));
+        }
+    }
+    let is_ring_edge = |a: usize, b: usize| polygon.next(a) == b || polygon.next(b) == a;
+    if hull_region {
+        for i in 0..n {
+            let (a, b) = (i, polygon.next(i));
+            if !half.contains_key(&(a, b)) && !half.contains_key(&(b, a)) {
+                problems.add(|| {
+                    format!(
+                        "polygon edge {}-{} is no face edge",
+                        polygon.id(a),
+                        polygon.id(b)
+                    )
+                });
+            }
+        }
+    }
+    // 4: the edge count.
+    let distinct = half
+        .keys()
+        .filter(|&&(a, b)| a < b || !half.contains_key(&(b, a)))
+        .count();
+    if good.len() == p.faces.len() && distinct != p.edge_count {
+        problems.add(|| {
+            format!(
+                "edge_count is {} but the faces have {distinct} edges",
+                p.edge_count
+            )
+        });
+    }
+    // 5: Theorem 2.
+    let pt = |i: usize| polygon.point(i);
+    let corner = |u: usize, a: usize, w: usize| usize::from(cross(pt(u), pt(a), pt(w)) > 0);
+    let at = |k: usize, i: usize| {
+        let c = &p.faces[k].cycle;
+        c[i % c.len()]
+    };
+    let before = |k: usize, i: usize| {
+        let c = &p.faces[k].cycle;
+        c[(i + c.len() - 1) % c.len()]
+    };
+    // Corners lost where the angle `u a b` (one face) and `b' a w` (the next face round a, across
+    // the removed edge a b') become the single angle `u a w`.
+    let lost = |u: usize, a: usize, b: usize, b2: usize, w: usize| {
+        corner(u, a, b) + corner(b2, a, w) - corner(u, a, w)
+    };
+    if good.len() == p.faces.len() {
+        for (&(a, b), &(f, i)) in &half {
+            if a > b || is_ring_edge(a, b) {
+                continue;
+            }
+            let Some(&(g, j)) = half.get(&(b, a)) else {
+                continue;
+            };
+            if f == g {
+                continue;
+            }
+            // f: u -> a -> b -> y; g: x -> b -> a -> w.
+            let (u, y) = (before(f, i), at(f, i + 2));
+            let (x, w) = (before(g, j), at(g, j + 2));
+            let merged = 6 - lost(u, a, b, b, w) - lost(x, b, a, a, y);
+            if merged == 3 {
+                problems.add(|| {
+                    format!(
+                        "edge {}-{} can be removed (Lemma 4(a)): its two faces merge into a \
+                         pseudotriangle, so the result is not minimal",
+                        polygon.id(a),
+                        polygon.id(b)
+                    )
+                });
+            }
+        }
+        for &k in &good {
+            let c = &p.faces[k].cycle;
+            if c.len() != 3 || (0..3).any(|i| is_ring_edge(c[i], c[(i + 1) % 3])) {
+                continue;
+            }
+            let mut merged = 12;
+            for i in 0..3 {
+                let (cc, a, b) = (c[(i + 2) % 3], c[i], c[(i + 1) % 3]);
+                // The face across c -> a runs u -> a -> c; the one across a -> b runs b -> a -> w.
+                let (Some(&(g, j)), Some(&(h, l))) = (half.get(&(a, cc)), half.get(&(b, a))) else {
+                    merged = 0;
+                    break;
+                };
+                let u = before(g, j);
+                let w = at(h, l + 2);
+                merged -= corner(u, a, cc) + 1 + corner(b, a, w) - corner(u, a, w);
+            }
+            if merged == 3 {
+                let [a, b, cc] = [c[0], c[1], c[2]].map(|v| polygon.id(v));
+                problems.add(|| {
+                    format!(
+                        "triangle [{a}, {b}, {cc}] can be removed (Lemma 4(b)): it and its three \
+                         neighbours merge into a pseudotriangle, so the result is not minimal"
+                    )
+                });
+            }
+        }
+    }
+    // 6: the count of Corollary 1.
+    if hull_region {
+        let big = big_angles(polygon, &hull);
+        let want = (2 * n).saturating_sub(big + 2);
+        if p.faces.len() != want {
+            problems.add(|| {
+                format!(
+                    "{} but 2n - N - 2 = {} - {big} - 2 = {want} (N: angles of at least pi of the \
+                     polygon's and the hull's edges; Corollary 1)",
+                    plural(p.faces.len(), "pseudotriangle"),
+                    2 * n
+                )
+            });
+        }
+    }
+    problems.finish()
+}
+
+/// Checks 1 and 2 for face `k`; whether its indices are usable for the other checks.
+fn face_ok(
+    polygon: &Polygon,
+    k: usize,
+    face: &crate::algo::Pseudotriangle,
+    problems: &mut Problems,
+) -> bool {
+    let c = &face.cycle;
+    let n = polygon.len();
+    if c.len() < 3 || c.iter().any(|&v| v >= n) {
+        problems.add(|| format!("face {k} has {} vertices or an index out of range", c.len()));
+        return false;
+    }
+    let name = || {
+        let ids: Vec<String> = c.iter().map(|&v| polygon.id(v).to_string()).collect();
+        format!("face {k} [{}]", ids.join(", "))
+    };
+    let mut sorted = c.clone();
+    sorted.sort_unstable();
+    if sorted.windows(2).any(|w| w[0] == w[1]) {
+        problems.add(|| format!("{} repeats a vertex", name()));
+        return false;
+    }
+    let pt = |i: usize| polygon.point(c[i % c.len()]);
+    let m = c.len();
+    let mut area = WideSum::default();
+    for i in 0..m {
+        area.add(cross(pt(0), pt(i), pt(i + 1)));
+    }
+    if area.signum() <= 0 {
+        problems.add(|| format!("{} is not counter-clockwise", name()));
+    }
+    if !simple(&(0..m).map(pt).collect::<Vec<_>>()) {
+        problems.add(|| format!("{} is not a simple polygon", name()));
+        return false;
+    }
+    let corners: Vec<usize> = (0..m)
+        .filter(|&i| cross(pt(i + m - 1), pt(i), pt(i + 1)) > 0)
+        .map(|i| c[i])
+        .collect();
+    if corners.len() != 3 {
+        problems.add(|| {
+            format!(
+                "{} has {} (angles below pi), so it is no pseudotriangle",
+                name(),
+                plural(corners.len(), "corner")
+            )
+        });
+    }
+    let mut listed = face.corners.clone();
+    listed.sort_unstable();
+    let mut found = corners;
+    found.sort_unstable();
+    if listed != found {
+        problems.add(|| format!("{} lists corners that are not its corners", name()));
+    }
+    true
+}
+
+/// Whether the closed polyline through `pts` (distinct points) is simple: consecutive edges meet
+/// only at their common end (no fold-back), others not at all.
+fn simple(pts: &[Point]) -> bool {
+    let m = pts.len();
+    let edge = |i: usize| (pts[i], pts[(i + 1) % m]);
+    for i in 0..m {
+        let (u, v, w) = (pts[i], pts[(i + 1) % m], pts[(i + 2) % m]);
+        if cross(u, v, w) == 0 && dot(v, u, w) > 0 {
+            return false;
+        }
+    }
+    let mut order: Vec<usize> = (0..m).collect();
+    let lo = |i: usize| edge(i).0.x.min(edge(i).1.x);
+    let hi = |i: usize| edge(i).0.x.max(edge(i).1.x);
+    order.sort_unstable_by_key(|&i| lo(i));
+    for (s, &i) in order.iter().enumerate() {
+        for &j in &order[s + 1..] {
+            if lo(j) > hi(i) {
+                break;
+            }
+            let adjacent = (i + 1) % m == j || (j + 1) % m == i;
+            let (a, b) = edge(i);
+            let (c, d) = edge(j);
+            let contact = segment_contact(a, b, c, d);
+            let bad = if adjacent {
+                contact == SegmentContact::Overlap
+            } else {
+                contact != SegmentContact::Disjoint
+            };
+            if bad {
+                return false;
+            }
+        }
+    }
+    true
+}
+
+/// The convex hull's boundary, counter-clockwise, every point on it included (written again
+/// here, apart from the algorithm's).
+fn hull_cycle(points: &[Point]) -> Vec<usize> {
+    let mut order: Vec<usize> = (0..points.len()).collect();
+    order.sort_unstable_by_key(|&i| (points[i].x, points[i].y));
+    let mut lower: Vec<usize> = Vec::new();
+    let mut upper: Vec<usize> = Vec::new();
+    for (list, seq) in [
+        (&mut lower, order.clone()),
+        (&mut upper, order.into_iter().rev().collect()),
+    ] {
+        for i in seq {
+            while list.len() >= 2
+                && cross(
+                    points[list[list.len() - 2]],
+                    points[list[list.len() - 1]],
+                    points[i],
+                ) < 0
+            {
+                list.pop();
+            }
+            list.push(i);
+        }
+        list.pop();
+    }
+    lower.extend(upper);
+    lower
+}
+
+/// Whether `hull` is the convex hull's boundary with every point on it: every vertex lies on or
+/// to the left of every hull edge, and none strictly inside one (O(n h), a cross-check of the
+/// monotone chain above).
+fn is_hull(polygon: &Polygon, hull: &[usize]) -> bool {
+    let h = hull.len();
+    h >= 3
+        && (0..h).all(|k| {
+            let (a, b) = (polygon.point(hull[k]), polygon.point(hull[(k + 1) % h]));
+            polygon.points().iter().all(|&p| {
+                let side = cross(a, b, p);
+                side > 0 || (side == 0 && (p == a || p == b || dot(p, a, b) > 0))
+            })
+        })
+}
+
+/// N: the angles of at least pi between neighbouring segments among the polygon's edges and the
+/// hull's, over all vertices.
+fn big_angles(polygon: &Polygon, hull: &[usize]) -> usize {
+    let n = polygon.len();
+    let mut around: Vec<Vec<usize>> = (0..n)
+        .map(|i| vec![polygon.next(i), polygon.prev(i)])
+        .collect();
+    for k in 0..hull.len() {
+        let (a, b) = (hull[k], hull[(k + 1) % hull.len()]);
+        around[a].push(b);
+        around[b].push(a);
+    }
+    let mut total = 0;
+    for (v, list) in around.iter_mut().enumerate() {
+        let c = polygon.point(v);
+        list.sort_unstable();
+        list.dedup();
+        list.sort_by(|&a, &b| cmp_angle(c, polygon.point(a), polygon.point(b)));
+        let d = list.len();
+        total += (0..d)
+            .filter(|&k| cross(c, polygon.point(list[k]), polygon.point(list[(k + 1) % d])) <= 0)
+            .count();
+    }
+    total
+}
+
+#[cfg(test)]
+mod tests {
+    use super::check;
+    use crate::algo::{Algorithm, Pseudotriangle, Pseudotriangulation};
+    use crate::test_support::polygon;
+
+    fn faces(list: &[(&[usize], &[usize])], edge_count: usize) -> Pseudotriangulation {
+        Pseudotriangulation {
+            faces: list
+                .iter()
+                .map(|(c, k)| Pseudotriangle {
+                    cycle: c.to_vec(),
+                    corners: k.to_vec(),
+                })
+                .collect(),
+            edge_count,
+            hull: None,
+        }
+    }
+
+    fn problems(p: &crate::Polygon, a: Algorithm, t: &Pseudotriangulation) -> Vec<String> {
+        let c = check(p, a, t);
+        assert_eq!(c.valid, c.problems.is_empty());
+        c.problems
+    }
+
+    #[test]
+    fn a_removable_edge_is_reported() {
+        // The arrowhead left as two triangles: diagonal 1-3 can go (Lemma 4(a)).
+        let p = polygon(&[&[(0, 0), (2, 1), (4, 0), (2, 3)]]);
+        let two = faces(&[(&[0, 1, 3], &[0, 1, 3]), (&[1, 2, 3], &[1, 2, 3])], 5);
+        let found = problems(&p, Algorithm::Pseudo, &two);
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert!(found[0].contains("edge 1-3 can be removed"), "{found:?}");
+        let one = faces(&[(&[0, 1, 2, 3], &[0, 2, 3])], 4);
+        assert!(problems(&p, Algorithm::Pseudo, &one).is_empty());
+    }
+
+    #[test]
+    fn a_removable_triangle_is_reported() {
+        let p = polygon(&[&[(0, 0), (6, 2), (12, 0), (8, 4), (6, 10), (4, 4)]]);
+        let four = faces(
+            &[
+                (&[0, 1, 5], &[0, 1, 5]),
+                (&[1, 2, 3], &[1, 2, 3]),
+                (&[5, 3, 4], &[5, 3, 4]),
+                (&[1, 3, 5], &[1, 3, 5]),
+            ],
+            9,
+        );
+        let found = problems(&p, Algorithm::Pseudo, &four);
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert!(
+            found[0].contains("triangle [1, 3, 5] can be removed"),
+            "{found:?}"
+        );
+    }
+
+    #[test]
+    fn four_corners_a_gap_and_wrong_corners_are_reported() {
+        let p = polygon(&[&[(0, 0), (4, 0), (4, 4), (0, 4)]]);
+        let square = faces(&[(&[0, 1, 2, 3], &[0, 1, 2])], 4);
+        let found = problems(&p, Algorithm::Pseudo, &square);
+        assert!(
+            found.iter().any(|m| m.contains("has 4 corners")),
+            "{found:?}"
+        );
+        assert!(
+            found.iter().any(|m| m.contains("lists corners")),
+            "{found:?}"
+        );
+        let half = faces(&[(&[0, 1, 2], &[0, 1, 2])], 3);
+        let found = problems(&p, Algorithm::Pseudo, &half);
+        assert!(
+            found.iter().any(|m| m.contains("do not cancel")),
+            "{found:?}"
+        );
+        let miscounted = faces(&[(&[0, 1, 2], &[0, 1, 2]), (&[0, 2, 3], &[0, 2, 3])], 4);
+        let found = problems(&p, Algorithm::Pseudo, &miscounted);
+        assert_eq!(found, ["edge_count is 4 but the faces have 5 edges"]);
+    }
+
+    #[test]
+    fn a_clockwise_or_self_crossing_face_and_bad_indices_are_reported() {
+        let p = polygon(&[&[(0, 0), (4, 0), (4, 4), (0, 4)]]);
+        let clockwise = faces(&[(&[0, 2, 1], &[0, 2, 1]), (&[0, 3, 2], &[0, 3, 2])], 5);
+        let found = problems(&p, Algorithm::Pseudo, &clockwise);
+        assert!(
+            found.iter().any(|m| m.contains("not counter-clockwise")),
+            "{found:?}"
+        );
+        let bowtie = faces(&[(&[0, 1, 3, 2], &[])], 5);
+        let found = problems(&p, Algorithm::Pseudo, &bowtie);
+        assert!(
+            found.iter().any(|m| m.contains("not a simple polygon")),
+            "{found:?}"
+        );
+        let nonsense = faces(&[(&[0, 9, 1], &[]), (&[0, 0, 1], &[])], 5);
+        assert_eq!(problems(&p, Algorithm::Pseudo, &nonsense).len(), 2);
+    }
+
+    #[test]
+    fn pseudo_hull_needs_the_count_and_the_polygon_edges() {
+        // The arrowhead: the polygon and its pocket are the minimum (2 = 2n - N - 2).
+        let p = polygon(&[&[(0, 0), (4, 0), (2, 1), (2, 4)]]);
+        let good = faces(&[(&[0, 1, 2, 3], &[0, 1, 3]), (&[1, 3, 2], &[1, 3, 2])], 5);
+        assert!(problems(&p, Algorithm::PseudoHull, &good).is_empty());
+        // The hull cut by 0-... : triangles 0 1 3 and the pocket, but polygon edges 0-1... kept;
+        // leaving out edges 1-2 and 2-3 (a triangulation of the hull alone) is caught.
+        let hull_only = faces(&[(&[0, 1, 3], &[0, 1, 3])], 3);
+        let found = problems(&p, Algorithm::PseudoHull, &hull_only);
+        assert!(
+            found
+                .iter()
+                .any(|m| m.contains("polygon edge 1-2 is no face edge")),
+            "{found:?}"
+        );
+        assert!(
+            found
+                .iter()
+                .any(|m| m.contains("1 pseudotriangle but 2n - N - 2")),
+            "{found:?}"
+        );
+    }
+}
