@@ -34,7 +34,9 @@ fn raw(rings: &[Vec<(i64, i64)>]) -> RawPolygon {
 }
 
 fn valid(rings: &[Vec<(i64, i64)>]) -> Option<Polygon> {
-    Polygon::from_raw_all_errors(&raw(rings)).ok().map(|(p, _)| p)
+    Polygon::from_raw_all_errors(&raw(rings))
+        .ok()
+        .map(|(p, _)| p)
 }
 
 fuzz_target!(|input: Input| {

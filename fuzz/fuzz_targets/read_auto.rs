@@ -1,5 +1,5 @@
 //! Format detection and reading as the CLI does it on an input without a known extension:
-//! `detect_start` on every prefix must agree with `detect` on the whole text (the CLI decides on
+//! `detect_start` on prefixes must agree with `detect` on the whole text (the CLI decides on
 //! the first buffer), then the detected reader (GeoJSON Lines line by line when
 //! `looks_line_delimited`), then validation, the algorithms and the writers
 //! (`minitri_fuzz::check_polygons`). The first byte also picks a file extension, to fuzz
@@ -22,9 +22,15 @@ fuzz_target!(|data: &[u8]| {
     };
     let extension = EXTENSIONS.get(usize::from(pick)).copied();
     let format = detect(extension, text);
-    for (end, _) in text.char_indices().chain([(text.len(), ' ')]) {
+    // Prefixes ending at the first 32 characters and at the first 32 line ends, and the whole.
+    let ends = text.char_indices().map(|(i, _)| i).take(32);
+    let lines = text.match_indices('\n').map(|(i, _)| i).take(32);
+    for end in ends.chain(lines).chain([text.len()]) {
         if let Some(early) = detect_start(extension, &text[..end]) {
-            assert_eq!(early, format, "detect_start on {end} bytes disagrees with detect");
+            assert_eq!(
+                early, format,
+                "detect_start on {end} bytes disagrees with detect"
+            );
         }
     }
     let raws = if format == Format::GeoJson && looks_line_delimited(data) {

@@ -55,7 +55,10 @@ fuzz_target!(|data: &[u8]| {
         }
     }
     if all_lines_read && !lines.is_empty() && !text.contains('\u{feff}') {
-        assert!(stopped.is_ok() && failures.is_empty(), "lines read but stream fails");
+        assert!(
+            stopped.is_ok() && failures.is_empty(),
+            "lines read but stream fails"
+        );
         assert_eq!(lines, streamed, "lines and stream give different polygons");
     }
 
