@@ -15,6 +15,7 @@
 use super::atomic::AtomicFile;
 use super::discover::{Input, Unreadable};
 use super::tally::Tally;
+use crate::io::read::geojson::JSON_WHITESPACE;
 use crate::io::read::geojson_stream::{self, Event, Stop};
 use crate::io::read::{self, detect_start, Format, ParseError, RawPolygon};
 use crate::io::write::{OutputFormat, Sink};
@@ -520,7 +521,7 @@ fn read_lines(
             }
             None => String::from_utf8_lossy(&bytes).into_owned(),
         };
-        if text.trim().is_empty() {
+        if text.trim_matches(JSON_WHITESPACE).is_empty() {
             continue;
         }
         any = true;

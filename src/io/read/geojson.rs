@@ -30,6 +30,10 @@ use super::{drop_closing_vertex, locate, Location, ParseError, RawPolygon};
 use crate::geom::decimal::Decimal;
 use serde_json::{Map, Value};
 
+/// The whitespace JSON allows between tokens (RFC 8259): not form feed or other Unicode spaces,
+/// which `str::trim` would also remove.
+pub(crate) const JSON_WHITESPACE: [char; 4] = [' ', '\t', '\r', '\n'];
+
 /// Deepest nesting of `GeometryCollection`s accepted (`serde_json` also limits JSON nesting).
 const MAX_DEPTH: usize = 64;
 
@@ -65,8 +69,7 @@ pub fn read(text: &str) -> Result<Vec<RawPolygon>, ParseError> {
             None => break,
             Some(Ok(value)) => {
                 let rest = body.get(before..).unwrap_or_default();
-                let start =
-                    before + rest.len() - rest.trim_start_matches([' ', '\t', '\r', '\n']).len();
+                let start = before + rest.len() - rest.trim_start_matches(JSON_WHITESPACE).len();
                 values.push((bom + start, value));
             }
             Some(Err(error)) => return Err(json_error(text, bom, &error)),

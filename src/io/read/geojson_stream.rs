@@ -26,7 +26,7 @@
 //!
 //! Complexity: linear in the input size; memory proportional to the largest feature.
 
-use super::geojson::{collection_feature, json_message, top_level};
+use super::geojson::{collection_feature, json_message, top_level, JSON_WHITESPACE};
 use super::{locate, Location, ParseError, RawPolygon};
 use serde::de::{self, DeserializeSeed, MapAccess, SeqAccess, Visitor};
 use serde::Deserialize;
@@ -170,8 +170,8 @@ pub fn stream<R: BufRead>(
 /// ```
 pub fn read_line(line: &str, number: usize) -> Result<Vec<RawPolygon>, ParseError> {
     let line = line.strip_prefix('\u{feff}').unwrap_or(line);
-    let body = line.trim_start();
-    if body.trim_end().is_empty() {
+    let body = line.trim_start_matches(JSON_WHITESPACE);
+    if body.trim_end_matches(JSON_WHITESPACE).is_empty() {
         return Ok(Vec::new());
     }
     let at = |column: usize| Location {
@@ -205,7 +205,7 @@ pub fn read_line(line: &str, number: usize) -> Result<Vec<RawPolygon>, ParseErro
 /// whole JSON value by itself, then another line?
 pub fn looks_line_delimited(start: &[u8]) -> bool {
     let start = start.strip_prefix("\u{feff}".as_bytes()).unwrap_or(start);
-    let blank = |b: &u8| b.is_ascii_whitespace();
+    let blank = |b: &u8| JSON_WHITESPACE.contains(&char::from(*b));
     let Some(first) = start.iter().position(|b| !blank(b)) else {
         return false;
     };
@@ -673,6 +673,24 @@ mod tests {
             "pretty"
         );
         assert!(!looks_line_delimited(A.as_bytes()), "no end of line seen");
+    }
+
+    /// Found by the `read_geojson` fuzz target: a line starting with form feeds (not JSON
+    /// whitespace) was read by `read_line`, which trimmed it as Unicode whitespace, while the
+    /// streaming and whole readers rejected the same text as invalid JSON.
+    #[test]
+    fn only_json_whitespace_is_skipped_around_a_line() {
+        let line = format!("\u{c}\u{c}{A}");
+        let expected = "line 3, column 1: invalid JSON: expected value";
+        assert_eq!(read_line(&line, 3).unwrap_err().to_string(), expected);
+        assert!(events(&line).1.is_some_and(|s| s.contains("invalid JSON")));
+        assert!(geojson::read(&line).is_err());
+        assert!(
+            read_line("\u{c}", 3).is_err(),
+            "a form feed is not a blank line"
+        );
+        assert!(read_line(" \t\r", 3).unwrap().is_empty());
+        assert!(!looks_line_delimited(format!("\u{c}{A}\n{A}\n").as_bytes()));
     }
 
     #[test]
