@@ -8,7 +8,7 @@
 
 use minitri::algo::{asano, ear, minitri as chen_chang};
 use minitri::io::read::RawPolygon;
-use minitri::io::write::OutputFormat;
+use minitri::io::write::{svg::Style, OutputFormat};
 use minitri::pipeline::{self, Options, Outcome};
 use minitri::{verify, Algorithm, Decimal, Polygon, Triangulation};
 
@@ -127,11 +127,11 @@ pub fn check_polygons(raws: &[RawPolygon]) {
                 for e in &errors {
                     assert!(!e.to_string().is_empty(), "empty message");
                 }
-                outcomes.push(pipeline::process_raw("fuzz", index, raw, &options));
+                outcomes.push(pipeline::process_raw("fuzz", index, raw.clone(), &options));
             }
             Ok((polygon, _warnings)) if is_small(raw) => {
                 check_ear(&polygon);
-                let outcome = pipeline::process_raw("fuzz", index, raw, &options);
+                let outcome = pipeline::process_raw("fuzz", index, raw.clone(), &options);
                 let solved = outcome.result.as_ref().expect("a valid polygon is solved");
                 let verification = solved.verification.as_ref().expect("verified");
                 assert!(verification.ok, "--verify fails: {verification:?}");
@@ -149,7 +149,8 @@ pub fn write_all(outcomes: Vec<Outcome>) {
         OutputFormat::Json,
         OutputFormat::GeoJson,
         OutputFormat::Wkt,
-        OutputFormat::Svg,
+        OutputFormat::Svg(Style { labels: false }),
+        OutputFormat::Svg(Style { labels: true }),
     ] {
         let mut bytes = Vec::new();
         {
