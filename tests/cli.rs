@@ -482,14 +482,8 @@ fn directories_are_read_recursively_in_sorted_order() {
 #[test]
 fn verify_reports_a_wrong_output_and_exits_3() {
     // A fault injected on purpose: every output loses one triangle before it is checked.
-    let out = crate::util::minitri()
-        .args(["-a", "ear", "--verify", "fixtures/valid/u_shape.wkt"])
-        .env(minitri::pipeline::CORRUPT_FOR_TESTS, "1")
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(3));
-    let doc = json(&String::from_utf8_lossy(&out.stdout));
-    let v = &doc["polygons"][0]["verification"];
+    let (code, v) = crate::util::verify_with_fault(&["-a", "ear", "fixtures/valid/u_shape.wkt"]);
+    assert_eq!(code, Some(3));
     assert_eq!(v["ok"], false);
     assert_eq!(v["checks"][0]["algorithm"], "ear");
     assert_eq!(v["checks"][0]["valid"], false);

@@ -321,14 +321,8 @@ fn pseudo_writes_geojson_wkt_and_svg() {
 
 #[test]
 fn verify_catches_a_missing_pseudotriangle_and_exits_3() {
-    let out = crate::util::minitri()
-        .args(["-a", "pseudo", "--verify", "fixtures/valid/u_shape.wkt"])
-        .env(minitri::pipeline::CORRUPT_FOR_TESTS, "1")
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(3));
-    let doc = json(&String::from_utf8_lossy(&out.stdout));
-    let v = &doc["polygons"][0]["verification"];
+    let (code, v) = crate::util::verify_with_fault(&["-a", "pseudo", "fixtures/valid/u_shape.wkt"]);
+    assert_eq!(code, Some(3));
     assert_eq!(v["ok"], false);
     assert!(
         v["pseudotriangulation"]["problems"]

@@ -49,6 +49,23 @@ pub fn run(args: &[&str], stdin: Option<&str>) -> (i32, String, String) {
     )
 }
 
+/// Runs the binary with `--verify` and a fault injected into every output before it is checked
+/// (`MINITRI_CORRUPT_FOR_TESTS=1`: one triangle or face dropped), returning the exit code and
+/// the first polygon's `verification` object.
+pub fn verify_with_fault(args: &[&str]) -> (Option<i32>, Value) {
+    let out = minitri()
+        .args(args)
+        .arg("--verify")
+        .env(minitri::pipeline::CORRUPT_FOR_TESTS, "1")
+        .output()
+        .expect("run minitri");
+    let doc = json(&String::from_utf8_lossy(&out.stdout));
+    (
+        out.status.code(),
+        doc["polygons"][0]["verification"].clone(),
+    )
+}
+
 /// Parses the JSON document on stdout.
 pub fn json(stdout: &str) -> Value {
     serde_json::from_str(stdout).unwrap_or_else(|e| panic!("stdout is not JSON ({e}): {stdout}"))

@@ -536,15 +536,25 @@ fn corners(out: &mut impl Write, view: &View<'_>, p: &Pseudotriangulation) -> io
 fn rings(out: &mut impl Write, view: &View<'_>) -> io::Result<()> {
     let polygon = view.polygon;
     for r in 0..=polygon.holes() {
-        let mut range = polygon.ring_range(r);
-        if let Some(first) = range.next() {
-            write!(out, "M{}L", view.of(polygon.point(first)))?;
-            for (k, i) in range.enumerate() {
-                let separator = if k == 0 { "" } else { " " };
-                write!(out, "{separator}{}", view.of(polygon.point(i)))?;
-            }
-            write!(out, "Z")?;
+        subpath(out, view, polygon.ring_range(r))?;
+    }
+    Ok(())
+}
+
+/// Path data of one closed subpath through these stored vertices (nothing for none).
+fn subpath(
+    out: &mut impl Write,
+    view: &View<'_>,
+    mut vertices: impl Iterator<Item = usize>,
+) -> io::Result<()> {
+    let polygon = view.polygon;
+    if let Some(first) = vertices.next() {
+        write!(out, "M{}L", view.of(polygon.point(first)))?;
+        for (k, i) in vertices.enumerate() {
+            let separator = if k == 0 { "" } else { " " };
+            write!(out, "{separator}{}", view.of(polygon.point(i)))?;
         }
+        write!(out, "Z")?;
     }
     Ok(())
 }
@@ -570,15 +580,7 @@ fn draw_faults(
             }
         }
         for r in 0..=polygon.holes() {
-            let mut range = polygon.ring_range(r).rev();
-            if let Some(first) = range.next() {
-                write!(out, "M{}L", view.of(polygon.point(first)))?;
-                for (k, i) in range.enumerate() {
-                    let separator = if k == 0 { "" } else { " " };
-                    write!(out, "{separator}{}", view.of(polygon.point(i)))?;
-                }
-                write!(out, "Z")?;
-            }
+            subpath(out, view, polygon.ring_range(r).rev())?;
         }
         writeln!(out, r#""/>"#)?;
         write!(
