@@ -1,5 +1,7 @@
 //! Times each phase of the default path (`--algorithm minitri`, no holes) on one WKT file, for
-//! profiling: `cargo run --release --example phases -- file.wkt`.
+//! profiling: `cargo run --release --example phases -- file.wkt`. An optional second argument R
+//! runs the whole of `minitri::triangulate` R more times after the timed run, for profilers
+//! (`valgrind --tool=callgrind target/release/examples/phases file.wkt 100`).
 
 use minitri::algo::minitri::{circle, degenerate, mis, partition};
 use minitri::io::read::{read, Format};
@@ -38,5 +40,15 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         partition::triangulate_pieces(&polygon, &chosen)
     };
     lap("steps 4-5", format!("{} triangles", triangles.len()));
+    let repeats: usize = match std::env::args().nth(2) {
+        Some(r) => r.parse()?,
+        None => 0,
+    };
+    for _ in 0..repeats {
+        minitri::algo::minitri::triangulate(&polygon)?;
+    }
+    if repeats > 0 {
+        lap("repeats", format!("{repeats} more runs"));
+    }
     Ok(())
 }

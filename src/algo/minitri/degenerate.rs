@@ -35,7 +35,7 @@
 
 use super::expansion::{double_cone, Mesh, Workspace};
 use crate::algo::chords::visible_from;
-use crate::geom::kernel::{cmp_angle, cross, Dir};
+use crate::geom::kernel::{cmp_angle, cross};
 use crate::geom::polygon::Polygon;
 use rayon::prelude::*;
 use std::cmp::Ordering;
@@ -173,16 +173,14 @@ fn search_from(
     }
     let (first, second) = double_cone(polygon, mesh, b, work);
     // Opposite directions are at the same place of the two cones (both sorted by angle).
-    let c = polygon.point(b);
-    let dir = |v: usize| Dir::between(c, polygon.point(v));
     let (mut i, mut j) = (0, 0);
     while i < first.len() && j < second.len() {
-        let (d, e) = (dir(first[i]), dir(second[j]).reversed());
+        let (d, e) = (first[i].0, second[j].0.reversed());
         match d.cross(e).cmp(&0) {
             Ordering::Greater => i += 1,
             Ordering::Less => j += 1,
             Ordering::Equal => {
-                out.push(Degenerate::new(polygon, first[i], b, second[j]));
+                out.push(Degenerate::new(polygon, first[i].1, b, second[j].1));
                 i += 1;
                 j += 1;
             }

@@ -260,13 +260,17 @@ pub struct Workspace {
     /// Per cone: the parts still to expand, disjoint and sorted by angle (the highest on top),
     /// each with what to do with it.
     stacks: [Vec<(Step, Cone)>; 2],
-    /// Per cone: the vertices found, first those of the fan (by increasing angle), then those
-    /// found by walking (by decreasing angle); sorted by angle at the end.
-    found: [Vec<usize>; 2],
+    /// Per cone: the vertices found with their directions from `b`, first those of the fan (by
+    /// increasing angle), then those found by walking (by decreasing angle); merged into one
+    /// list by angle at the end.
+    found: [Vec<(Dir, usize)>; 2],
+    /// The merged list of one cone.
+    merged: Vec<(Dir, usize)>,
 }
 
 /// The vertices seen from reflex vertex `b` that are nearest in their direction, in the two
-/// cones of its double wedge: `(cone [next, -prev], cone [-next, prev])`, each sorted by angle.
+/// cones of its double wedge: `(cone [next, -prev], cone [-next, prev])`, each sorted by angle,
+/// with their directions from `b`.
 ///
 /// Only directions `d` whose opposite `-d` is found in the other cone matter to the caller, so
 /// the lists may omit other vertices: the two cones are expanded in turns, one state each, and as
@@ -279,7 +283,7 @@ pub fn double_cone<'w>(
     mesh: &Mesh,
     b: usize,
     work: &'w mut Workspace,
-) -> (&'w [usize], &'w [usize]) {
+) -> (&'w [(Dir, usize)], &'w [(Dir, usize)]) {
     let c = polygon.point(b);
     let dir = |v: usize| Dir::between(c, polygon.point(v));
     let (to_next, to_prev) = (dir(polygon.next(b)), dir(polygon.prev(b)));
@@ -299,7 +303,12 @@ pub fn double_cone<'w>(
             hi_in: false,
         },
     ];
-    let Workspace { fan, stacks, found } = work;
+    let Workspace {
+        fan,
+        stacks,
+        found,
+        merged,
+    } = work;
     // The fan around b, counter-clockwise from the edge to next(b) to the edge from prev(b).
     fan.clear();
     let mut h = mesh.first[b] as usize;
@@ -322,7 +331,7 @@ pub fn double_cone<'w>(
             let (du, dw) = (dir(u), dir(w));
             for (v, d) in [(u, du), (w, dw)] {
                 if cmp(cone.lo, d) != Ordering::Greater && cmp(d, cone.hi) != Ordering::Greater {
-                    found[side].push(v);
+                    found[side].push((d, v));
                 }
             }
             // The part of the cone inside this fan triangle's angle; a bound taken from u or w
@@ -358,12 +367,12 @@ pub fn double_cone<'w>(
     // orders directions by angle; the fan's vertices come first, by increasing angle, then the
     // others, by decreasing angle (recorded by markers, see below).
     let fan_found = [found[0].len(), found[1].len()];
-    let any_found = |found: &[Vec<usize>; 2], side: usize, lo: Dir, hi: Dir| {
+    let any_found = |found: &[Vec<(Dir, usize)>; 2], side: usize, lo: Dir, hi: Dir| {
         let (fan_part, walk_part) = found[side].split_at(fan_found[side]);
-        let i = fan_part.partition_point(|&v| lo.cross(dir(v)) < 0);
-        let j = walk_part.partition_point(|&v| dir(v).cross(hi) < 0);
-        (i < fan_part.len() && dir(fan_part[i]).cross(hi) >= 0)
-            || (j < walk_part.len() && lo.cross(dir(walk_part[j])) >= 0)
+        let i = fan_part.partition_point(|&(d, _)| lo.cross(d) < 0);
+        let j = walk_part.partition_point(|&(d, _)| d.cross(hi) < 0);
+        (i < fan_part.len() && fan_part[i].0.cross(hi) >= 0)
+            || (j < walk_part.len() && lo.cross(walk_part[j].0) >= 0)
     };
     loop {
         // Both stacks hold disjoint parts sorted by angle, the highest on top, and only parts
@@ -402,7 +411,7 @@ pub fn double_cone<'w>(
         }
         let g = match step {
             Step::Found(x) => {
-                found[side].push(x);
+                found[side].push((cone.lo, x));
                 continue;
             }
             Step::Enter(g) => g,
@@ -454,12 +463,35 @@ pub fn double_cone<'w>(
             enter(stack, mesh, k_ux, cone); // through u -> x
         }
     }
-    for list in found.iter_mut() {
-        list.sort_unstable_by(|&x, &y| cmp(dir(x), dir(y)).then(x.cmp(&y)));
-        list.dedup();
+    for (list, fan_count) in found.iter_mut().zip(fan_found) {
+        merge_by_angle(list, fan_count, merged);
     }
     let [first, second] = found;
     (first, second)
+}
+
+/// Sorts one cone's `list` by angle, given that its first `fan_count` entries are sorted by
+/// increasing angle and the rest by decreasing angle, in linear time (a merge); entries for the
+/// same vertex met twice (the fan's triangles share their sides) are kept once. Inside a cone,
+/// narrower than a half-turn, `d` comes before `e` exactly when `d x e > 0`.
+fn merge_by_angle(list: &mut Vec<(Dir, usize)>, fan_count: usize, merged: &mut Vec<(Dir, usize)>) {
+    list[fan_count..].reverse();
+    let (fan, walk) = list.split_at(fan_count);
+    merged.clear();
+    let (mut i, mut j) = (0, 0);
+    while i < fan.len() || j < walk.len() {
+        let take_fan = j == walk.len() || (i < fan.len() && fan[i].0.cross(walk[j].0) >= 0);
+        let next = if take_fan { fan[i] } else { walk[j] };
+        if take_fan {
+            i += 1;
+        } else {
+            j += 1;
+        }
+        if merged.last().map(|&(_, v)| v) != Some(next.1) {
+            merged.push(next);
+        }
+    }
+    std::mem::swap(list, merged);
 }
 
 /// Pushes the part of a cone that leaves a triangle through its half-edge `k`, unless that is a
