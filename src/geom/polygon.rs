@@ -155,11 +155,14 @@ impl Polygon {
         }
         let grid_values = to_grid(raw)?;
         let grid = grid_values.1;
+        // Room for every vertex read (duplicates dropped below only leave a little unused), so
+        // that the largest arrays never grow by doubling.
+        let total: usize = raw.rings.iter().map(Vec::len).sum();
         let mut polygon = Polygon {
-            points: Vec::new(),
-            ids: Vec::new(),
-            ring_starts: Vec::new(),
-            ring_of: Vec::new(),
+            points: Vec::with_capacity(total),
+            ids: Vec::with_capacity(total),
+            ring_starts: Vec::with_capacity(raw.rings.len() + 1),
+            ring_of: Vec::with_capacity(total),
             input_vertices: 0,
             grid,
         };

@@ -53,16 +53,21 @@ pub fn triangulate_within(
         return Ok(triangulate_general(polygon, deadline));
     }
     let (mdts, base) = degenerate::minimally_degenerate_and_mesh(polygon);
-    let circle = circle::circle(polygon, &mdts);
-    let chains = mis::chains(polygon, &mdts);
-    let chosen: Vec<degenerate::Degenerate> = mis::maximum_independent_set(&circle, &chains)
-        .into_iter()
-        .map(|t| mdts[t])
-        .collect();
-    // With nothing chosen the only piece is P itself, and step 1's plain triangulation is one.
+    let chosen: Vec<degenerate::Degenerate> = {
+        let circle = circle::circle(polygon, &mdts);
+        let chains = mis::chains(polygon, &mdts);
+        mis::maximum_independent_set(&circle, &chains)
+            .into_iter()
+            .map(|t| mdts[t])
+            .collect()
+    };
+    drop(mdts);
+    // With nothing chosen the only piece is P itself, and step 1's plain triangulation is one;
+    // otherwise it is dropped before the pieces are made (peak memory).
     let triangles = if chosen.is_empty() {
         base
     } else {
+        drop(base);
         partition::triangulate_pieces(polygon, &chosen)
     };
     let degenerate = chosen.iter().map(|m| [m.a, m.b, m.c]).collect();

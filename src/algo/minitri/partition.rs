@@ -15,14 +15,15 @@
 
 use super::degenerate::Degenerate;
 use crate::algo::plain;
-use crate::geom::kernel::{cmp_angle, cross, Point};
+use crate::geom::kernel::{cmp_angle, cross, Point, WideSum};
 use crate::geom::polygon::Polygon;
 
 /// The triangles of all pieces, in stored vertex indices, counter-clockwise.
 pub fn triangulate_pieces(polygon: &Polygon, chosen: &[Degenerate]) -> Vec<[usize; 3]> {
     let n = polygon.len();
     // Undirected edges, deduplicated.
-    let mut edges: Vec<(usize, usize)> = (0..n).map(|i| ordered(i, polygon.next(i))).collect();
+    let mut edges: Vec<(usize, usize)> = Vec::with_capacity(n + 2 * chosen.len());
+    edges.extend((0..n).map(|i| ordered(i, polygon.next(i))));
     for m in chosen {
         edges.push(ordered(m.a, m.b));
         edges.push(ordered(m.b, m.c));
@@ -30,6 +31,7 @@ pub fn triangulate_pieces(polygon: &Polygon, chosen: &[Degenerate]) -> Vec<[usiz
     edges.sort_unstable();
     edges.dedup();
     let graph = Graph::new(polygon, &edges);
+    drop(edges);
     let straight_middle = {
         let mut middle = vec![false; n];
         for m in chosen {
@@ -53,16 +55,23 @@ pub fn triangulate_pieces(polygon: &Polygon, chosen: &[Degenerate]) -> Vec<[usiz
             face.push(graph.from[slot]);
             slot = graph.turn(slot);
         }
-        let points: Vec<Point> = face.iter().map(|&i| polygon.point(i)).collect();
-        if twice_area(&points) <= 0 {
-            continue; // the outer face
+        let point = |i: usize| polygon.point(face[i]);
+        let k = face.len();
+        let mut area = WideSum::default();
+        for i in 0..k {
+            area.add(cross(point(0), point(i), point((i + 1) % k)));
+        }
+        if area.signum() <= 0 {
+            // The outer face (clockwise; the area sum cannot overflow): it runs along the whole
+            // boundary, the longest list of all, so its room is given back right away.
+            face = Vec::new();
+            continue;
         }
         // Drop chosen middles where they are straight (their 180-degree side).
-        let k = face.len();
         let keep: Vec<usize> = (0..k)
             .filter(|&i| {
-                let (p, q) = (points[(i + k - 1) % k], points[(i + 1) % k]);
-                !(straight_middle[face[i]] && cross(p, points[i], q) == 0)
+                let (p, q) = (point((i + k - 1) % k), point((i + 1) % k));
+                !(straight_middle[face[i]] && cross(p, point(i), q) == 0)
             })
             .map(|i| face[i])
             .collect();
@@ -128,10 +137,4 @@ impl Graph {
 
 fn ordered(u: usize, v: usize) -> (usize, usize) {
     (u.min(v), u.max(v))
-}
-
-fn twice_area(points: &[Point]) -> i128 {
-    (0..points.len())
-        .map(|i| cross(points[0], points[i], points[(i + 1) % points.len()]))
-        .sum()
 }
