@@ -142,19 +142,34 @@ pub fn minimally_degenerate_and_mesh(polygon: &Polygon) -> (Vec<Degenerate>, Vec
     mesh.flip_towards_delaunay(polygon, FLIPS_PER_VERTEX * polygon.len());
     // The vertices are independent searches over a shared mesh: in parallel (on the current
     // rayon pool) by blocks of vertices, concatenated in vertex order, so the result does not
-    // depend on the number of threads.
+    // depend on the number of threads. A polygon of one block skips the pool altogether.
     let n = polygon.len();
+    if n <= PARALLEL_BLOCK {
+        let found = search_range(polygon, &mesh, 0..n, &mut Workspace::default());
+        return (found, mesh.into_triangles());
+    }
     let blocks: Vec<Vec<Degenerate>> = (0..n.div_ceil(PARALLEL_BLOCK))
         .into_par_iter()
         .map_init(Workspace::default, |work, block| {
-            let mut out = Vec::new();
-            for b in block * PARALLEL_BLOCK..((block + 1) * PARALLEL_BLOCK).min(n) {
-                search_from(polygon, &mesh, b, work, &mut out);
-            }
-            out
+            let range = block * PARALLEL_BLOCK..((block + 1) * PARALLEL_BLOCK).min(n);
+            search_range(polygon, &mesh, range, work)
         })
         .collect();
     (blocks.concat(), mesh.into_triangles())
+}
+
+/// The triangles found from the vertices of `range`, in vertex order.
+fn search_range(
+    polygon: &Polygon,
+    mesh: &Mesh,
+    range: std::ops::Range<usize>,
+    work: &mut Workspace,
+) -> Vec<Degenerate> {
+    let mut out = Vec::new();
+    for b in range {
+        search_from(polygon, mesh, b, work, &mut out);
+    }
+    out
 }
 
 /// How many vertices one parallel task searches from (small polygons stay on one thread).

@@ -243,6 +243,9 @@ impl Mesh {
     }
 }
 
+/// A vertex seen from the searching vertex `b`, with its direction from `b`.
+pub type Sighting = (Dir, usize);
+
 /// What a part of a cone on the stack stands for.
 #[derive(Clone, Copy, Debug)]
 enum Step {
@@ -263,9 +266,9 @@ pub struct Workspace {
     /// Per cone: the vertices found with their directions from `b`, first those of the fan (by
     /// increasing angle), then those found by walking (by decreasing angle); merged into one
     /// list by angle at the end.
-    found: [Vec<(Dir, usize)>; 2],
+    found: [Vec<Sighting>; 2],
     /// The merged list of one cone.
-    merged: Vec<(Dir, usize)>,
+    merged: Vec<Sighting>,
 }
 
 /// The vertices seen from reflex vertex `b` that are nearest in their direction, in the two
@@ -283,7 +286,7 @@ pub fn double_cone<'w>(
     mesh: &Mesh,
     b: usize,
     work: &'w mut Workspace,
-) -> (&'w [(Dir, usize)], &'w [(Dir, usize)]) {
+) -> (&'w [Sighting], &'w [Sighting]) {
     let c = polygon.point(b);
     let dir = |v: usize| Dir::between(c, polygon.point(v));
     let (to_next, to_prev) = (dir(polygon.next(b)), dir(polygon.prev(b)));
@@ -367,7 +370,7 @@ pub fn double_cone<'w>(
     // orders directions by angle; the fan's vertices come first, by increasing angle, then the
     // others, by decreasing angle (recorded by markers, see below).
     let fan_found = [found[0].len(), found[1].len()];
-    let any_found = |found: &[Vec<(Dir, usize)>; 2], side: usize, lo: Dir, hi: Dir| {
+    let any_found = |found: &[Vec<Sighting>; 2], side: usize, lo: Dir, hi: Dir| {
         let (fan_part, walk_part) = found[side].split_at(fan_found[side]);
         let i = fan_part.partition_point(|&(d, _)| lo.cross(d) < 0);
         let j = walk_part.partition_point(|&(d, _)| d.cross(hi) < 0);
@@ -474,7 +477,7 @@ pub fn double_cone<'w>(
 /// increasing angle and the rest by decreasing angle, in linear time (a merge); entries for the
 /// same vertex met twice (the fan's triangles share their sides) are kept once. Inside a cone,
 /// narrower than a half-turn, `d` comes before `e` exactly when `d x e > 0`.
-fn merge_by_angle(list: &mut Vec<(Dir, usize)>, fan_count: usize, merged: &mut Vec<(Dir, usize)>) {
+fn merge_by_angle(list: &mut Vec<Sighting>, fan_count: usize, merged: &mut Vec<Sighting>) {
     list[fan_count..].reverse();
     let (fan, walk) = list.split_at(fan_count);
     merged.clear();

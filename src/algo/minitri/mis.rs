@@ -174,7 +174,8 @@ pub(crate) fn maximum_independent_set_with(
     let mut used = 0;
     let mut chosen = Vec::new();
     let mut local = vec![u32::MAX; circle.owner.len()];
-    for component in crossing_components(circle) {
+    let mut chain_seen = vec![u32::MAX; chains.paths.len()];
+    for (number, component) in crossing_components(circle).into_iter().enumerate() {
         if component.len() == 1 {
             chosen.push(component[0]);
             continue;
@@ -194,7 +195,7 @@ pub(crate) fn maximum_independent_set_with(
             local: &local,
             staircases,
         };
-        let (set, stairs) = sub.solve();
+        let (set, stairs) = sub.solve(&mut chain_seen, number as u32);
         chosen.extend(set);
         used += stairs;
     }
@@ -441,7 +442,7 @@ impl Sub<'_> {
     /// `M(l) = max(M(l - 1) + inner[l - 1], start(f = l - 2))`, with `start(f)` the best before
     /// `s_f` plus `left[f] - f`. So a staircase of length L costs O(L) units and gaps, not the
     /// O(L^2) of listing its pieces.
-    fn solve(&self) -> (Vec<usize>, usize) {
+    fn solve(&self, chain_seen: &mut [u32], component: u32) -> (Vec<usize>, usize) {
         let p = self.positions.len();
         let mut table = Table {
             units: Vec::new(),
@@ -450,12 +451,14 @@ impl Sub<'_> {
             stair_of: vec![NOT_IN_STAIRCASE; p],
         };
         let mut jobs: Vec<(usize, u8, Job)> = Vec::new(); // (span, units first, job)
-        let mut seen_chain = std::collections::HashSet::new();
         for &g in self.positions {
             let (chain, _) = self.chains.place[self.circle.owner[g]];
-            if !seen_chain.insert(chain) {
+            // Each chain once: `chain_seen` is shared by all components, marked with this one's
+            // number (cheaper than a hash set per component).
+            if chain_seen[chain] == component {
                 continue;
             }
+            chain_seen[chain] = component;
             let path = &self.chains.paths[chain];
             let stair = if self.staircases {
                 Staircase::new(path, |t| self.chord(t))
