@@ -17,6 +17,9 @@
 //! The status is a [`Status`] (a treap with neighbour links): an edge is compared with others
 //! only when inserted; its neighbours, and its removal, take no comparison.
 //! Complexity: O(n log n) time (expected; about log2 n orientation tests per edge), O(n) memory.
+//! Small polygons without holes (at most `SMALL_RING` vertices, the bulk of a batch of building
+//! footprints) are first checked pair by pair, which costs less than the sweep's set there; the
+//! sweep runs only if some pair meets, so the reported contact is the same either way.
 
 use super::kernel::{segment_contact, Point, SegmentContact};
 use super::polygon::{Polygon, Ring};
@@ -160,6 +163,15 @@ pub fn check(polygon: &Polygon) -> Result<(), InvalidPolygon> {
 /// then, only if there are none, the leftmost contact between edges; then, only if there is none,
 /// every misplaced hole.
 pub fn errors(polygon: &Polygon) -> Vec<InvalidPolygon> {
+    errors_with(polygon, true)
+}
+
+/// Polygons without holes up to this many vertices are first checked pair by pair: cheaper than
+/// the sweep's set for the small polygons of batches (building footprints).
+const SMALL_RING: usize = 32;
+
+/// [`errors`], with the pair-by-pair check of small rings on or off (the tests compare both).
+pub(crate) fn errors_with(polygon: &Polygon, small_rings_by_pairs: bool) -> Vec<InvalidPolygon> {
     let mut errors = spikes(polygon);
     let mut order: Vec<usize> = (0..polygon.len()).collect();
     order.sort_unstable_by_key(|&i| (polygon.point(i), i));
@@ -178,10 +190,48 @@ pub fn errors(polygon: &Polygon) -> Vec<InvalidPolygon> {
     if !errors.is_empty() {
         return errors;
     }
+    // One ring: valid exactly when no two non-adjacent edges meet (nothing can be misplaced).
+    // If some do, the sweep below finds and reports the leftmost contact, as for any polygon.
+    if small_rings_by_pairs
+        && polygon.holes() == 0
+        && polygon.len() <= SMALL_RING
+        && no_two_edges_meet(polygon)
+    {
+        return errors;
+    }
     match sweep(polygon, &order) {
         Err(e) => vec![e],
         Ok(parents) => nesting_errors(&parents),
     }
+}
+
+/// Whether no two non-adjacent edges of `polygon` share a point, testing every pair: O(n^2).
+fn no_two_edges_meet(polygon: &Polygon) -> bool {
+    let n = polygon.len();
+    // Each edge with its bounding box, so that most pairs are told apart by comparisons alone.
+    let edges: Vec<(Point, Point, [i64; 4])> = (0..n)
+        .map(|e| {
+            let (a, b) = (polygon.point(e), polygon.point(polygon.next(e)));
+            (
+                a,
+                b,
+                [a.x.min(b.x), a.x.max(b.x), a.y.min(b.y), a.y.max(b.y)],
+            )
+        })
+        .collect();
+    (0..n).all(|e| {
+        let (a, b, r) = edges[e];
+        (e + 1..n)
+            .filter(|&f| polygon.next(e) != f && polygon.next(f) != e)
+            .all(|f| {
+                let (c, d, s) = edges[f];
+                r[1] < s[0]
+                    || s[1] < r[0]
+                    || r[3] < s[2]
+                    || s[3] < r[2]
+                    || segment_contact(a, b, c, d) == SegmentContact::Disjoint
+            })
+    })
 }
 
 fn spikes(polygon: &Polygon) -> Vec<InvalidPolygon> {

@@ -249,6 +249,13 @@ fn sweep_agrees_with_brute_force_on_random_rings() {
         let fast = errors(&polygon).is_empty();
         let slow = brute_force_valid(&polygon);
         assert_eq!(fast, slow, "case {case}: {rings:?}: {:?}", errors(&polygon));
+        // The sweep alone (small rings are otherwise checked pair by pair) agrees too, with the
+        // same messages.
+        assert_eq!(
+            errors_with(&polygon, false),
+            errors(&polygon),
+            "case {case}: {rings:?}"
+        );
         if fast {
             valid += 1;
         } else {
