@@ -388,6 +388,15 @@ struct Table {
     stair_of: Vec<(u32, u32)>,
 }
 
+/// Scratch for [`Sub::gaps`], reused so that valuing a unit allocates nothing.
+#[derive(Default)]
+struct GapBuffers {
+    /// The sorted endpoints of the chords asked about.
+    ends: Vec<usize>,
+    /// The gaps found, as inclusive ranges of local positions.
+    gaps: Vec<(usize, usize)>,
+}
+
 /// Scratch for the scans.
 #[derive(Default)]
 struct Scan {
@@ -411,17 +420,23 @@ impl Sub<'_> {
         (self.local[l] as usize, self.local[r] as usize)
     }
 
-    /// The gaps between consecutive endpoints of some chords (inside their span).
-    fn gaps(&self, chords: &[usize]) -> Vec<(usize, usize)> {
-        let mut ends: Vec<usize> = chords
-            .iter()
-            .flat_map(|&t| <[usize; 2]>::from(self.chord(t)))
-            .collect();
+    /// The gaps between consecutive endpoints of some chords (inside their span), into
+    /// `buffers.gaps`.
+    fn gaps(&self, chords: &[usize], buffers: &mut GapBuffers) {
+        let GapBuffers { ends, gaps } = buffers;
+        ends.clear();
+        ends.extend(
+            chords
+                .iter()
+                .flat_map(|&t| <[usize; 2]>::from(self.chord(t))),
+        );
         ends.sort_unstable();
-        ends.windows(2)
-            .filter(|w| w[1] > w[0] + 1)
-            .map(|w| (w[0] + 1, w[1] - 1))
-            .collect()
+        gaps.clear();
+        gaps.extend(
+            ends.windows(2)
+                .filter(|w| w[1] > w[0] + 1)
+                .map(|w| (w[0] + 1, w[1] - 1)),
+        );
     }
 
     /// A maximum independent set of this component.
@@ -512,16 +527,18 @@ impl Sub<'_> {
             ..Scan::default()
         };
         jobs.sort_by_key(|&(span, kind, _)| (span, kind));
+        let mut buffers = GapBuffers::default();
         for &(_, _, job) in &jobs {
             match job {
                 Job::Unit(k) => {
                     let u = &table.units[k];
                     let piece = &self.chains.paths[u.chain][u.first..=u.last];
                     let count = piece.len() as u32;
-                    let inside: u32 = self
-                        .gaps(piece)
-                        .into_iter()
-                        .map(|(a, b)| self.best_value(&table, &mut scan, a, b))
+                    self.gaps(piece, &mut buffers);
+                    let inside: u32 = buffers
+                        .gaps
+                        .iter()
+                        .map(|&(a, b)| self.best_value(&table, &mut scan, a, b))
                         .sum();
                     table.units[k].value = count + inside;
                     let u = &table.units[k];
@@ -565,7 +582,8 @@ impl Sub<'_> {
                     Pick::None => continue,
                 };
                 chosen.extend(piece);
-                ranges.extend(self.gaps(piece));
+                self.gaps(piece, &mut buffers);
+                ranges.extend_from_slice(&buffers.gaps);
             }
         }
         (chosen, table.stairs.len())
