@@ -64,9 +64,11 @@ impl Decimal {
         let invalid = || NumberError::Invalid(literal(text));
         // Only a short text can name a non-finite value (no copy of a long literal is made).
         if text.len() <= "-infinity".len() {
-            let lower = text.to_ascii_lowercase();
-            let unsigned = lower.trim_start_matches(['+', '-']);
-            if matches!(unsigned, "nan" | "inf" | "infinity") {
+            let unsigned = text.trim_start_matches(['+', '-']);
+            if ["nan", "inf", "infinity"]
+                .iter()
+                .any(|name| unsigned.eq_ignore_ascii_case(name))
+            {
                 return Err(NumberError::NonFinite(literal(text)));
             }
         }
