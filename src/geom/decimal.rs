@@ -300,11 +300,29 @@ mod tests {
 
     #[test]
     fn integers_convert_as_their_decimal_notation_parses() {
-        for value in [0, 1, -1, 7, 10, -100, 120, 1_000_000, -305_000, i64::MAX, i64::MIN] {
-            assert_eq!(Decimal::from(value), Decimal::parse(&value.to_string()).unwrap());
+        for value in [
+            0,
+            1,
+            -1,
+            7,
+            10,
+            -100,
+            120,
+            1_000_000,
+            -305_000,
+            i64::MAX,
+            i64::MIN,
+        ] {
+            assert_eq!(
+                Decimal::from(value),
+                Decimal::parse(&value.to_string()).unwrap()
+            );
         }
         for value in [0, 9, 90, 18_000_000_000_000_000_000, u64::MAX] {
-            assert_eq!(Decimal::from(value), Decimal::parse(&value.to_string()).unwrap());
+            assert_eq!(
+                Decimal::from(value),
+                Decimal::parse(&value.to_string()).unwrap()
+            );
         }
         assert_eq!(Decimal::from(-2500i64).to_string(), "-2500");
         assert_eq!(Decimal::from(-2500i64).exponent(), 2);

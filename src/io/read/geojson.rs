@@ -605,6 +605,125 @@ mod tests {
     }
 
     #[test]
+    fn reads_coordinates_that_come_before_the_type() {
+        let rings = "[[[0, 0], [4, 0.5], [4, 4], [0, 0]], [[1, 1], [2, 1], [1, 2]]]";
+        let first =
+            format!(r#"{{"coordinates": {rings}, "bbox": [0, 0, 4, 4], "type": "Polygon"}}"#);
+        let expected = vec![
+            ring(&[("0", "0"), ("4", "0.5"), ("4", "4")]),
+            ring(&[("1", "1"), ("2", "1"), ("1", "2")]),
+        ];
+        assert_eq!(read(&first).unwrap()[0].rings, expected);
+        let multi = format!(r#"{{"coordinates": [{rings}, [], {rings}], "type": "MultiPolygon"}}"#);
+        let polygons = read(&multi).unwrap();
+        assert_eq!(polygons.len(), 2);
+        assert_eq!(polygons[1].rings, expected);
+        // The messages are those of the usual order.
+        let bad = r#"[[[0, 0], [1, 0], [0, 1]], [[0, 0], [1, 0], [0, "y"]]]"#;
+        assert_eq!(
+            error(&format!(r#"{{"coordinates": {bad}, "type": "Polygon"}}"#)),
+            "ring 1, position 2: expected a number for y, found \"y\""
+        );
+        assert_eq!(
+            error(&format!(
+                r#"{{"coordinates": [{bad}], "type": "MultiPolygon"}}"#
+            )),
+            "polygon 0, ring 1, position 2: expected a number for y, found \"y\""
+        );
+        assert_eq!(
+            error(&format!(r#"{{"coordinates": {rings}, "type": "Point"}}"#)),
+            "expected a Polygon or MultiPolygon geometry, found \"Point\""
+        );
+        // Kept as text, they are read without `serde_json`'s recursion limit, then with it.
+        let deep = format!(
+            r#"{{"coordinates": [[{}0{}]], "type": "Polygon"}}"#,
+            "[".repeat(200),
+            "]".repeat(200)
+        );
+        assert_eq!(error(&deep), "invalid JSON: recursion limit exceeded");
+    }
+
+    #[test]
+    fn rejects_a_member_named_twice() {
+        let twice = |member: &str| {
+            error(&format!(
+                r#"{{"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 1]]], {member}}}"#
+            ))
+        };
+        // A second "type" could change how "coordinates" before it should have been read.
+        assert_eq!(
+            twice(r#""type": "MultiPolygon""#),
+            "duplicate \"type\" member: each may appear once in an object"
+        );
+        assert_eq!(
+            twice(r#""coordinates": [[[0, 0], [2, 0], [0, 2]]]"#),
+            "duplicate \"coordinates\" member: each may appear once in an object"
+        );
+        let features = r#"{"type": "FeatureCollection", "features": [
+            {"type": "Feature", "geometry": null, "geometry": null}]}"#;
+        assert_eq!(
+            error(features),
+            "feature 0: duplicate \"geometry\" member: each may appear once in an object"
+        );
+        // Other members may repeat.
+        let other =
+            r#"{"type": "Polygon", "id": 1, "id": 2, "coordinates": [[[0, 0], [1, 0], [0, 1]]]}"#;
+        assert_eq!(read(other).unwrap().len(), 1);
+    }
+
+    /// A ring of 200,000 positions on one line: integers (negative too), decimals and
+    /// exponents, the closing position repeated, then a hole.
+    #[test]
+    fn reads_a_large_single_line_polygon_exactly() {
+        const N: i64 = 200_000;
+        let x = |k: i64| k - N / 2;
+        let y = |k: i64| match k % 3 {
+            0 => format!("{}.{:03}", k / 7, k % 1000),
+            1 => format!("-{}e-2", k),
+            _ => format!("{}", k * k),
+        };
+        let mut text = String::from(r#"{"type":"Polygon","coordinates":[["#);
+        for k in 0..N {
+            text.push_str(&format!("[{},{}],", x(k), y(k)));
+        }
+        text.push_str(&format!("[{},{}]],[[1,1],[2,1],[1,2]]]}}", x(0), y(0)));
+        assert!(!text.contains('\n'));
+        let polygons = read(&text).unwrap();
+        assert_eq!(polygons.len(), 1);
+        let rings = &polygons[0].rings;
+        assert_eq!(rings.len(), 2);
+        assert_eq!(rings[0].len(), N as usize, "the closing position dropped");
+        assert_eq!(rings[1].len(), 3);
+        for k in (0..N).step_by(997).chain([1, 2, N - 1]) {
+            assert_eq!(
+                rings[0][k as usize],
+                [d(&x(k).to_string()), d(&y(k))],
+                "{k}"
+            );
+        }
+        assert_eq!(rings[0][3][1], d("0.003"));
+        assert_eq!(rings[0][4][1], d("-0.04"));
+        assert_eq!(rings[0][5][1], d("25"));
+        // The streaming and line readers give the same polygon.
+        let mut streamed = Vec::new();
+        crate::io::read::geojson_stream::stream(
+            std::io::BufReader::with_capacity(4096, text.as_bytes()),
+            &mut |event| {
+                streamed.push(event);
+                Ok(())
+            },
+        )
+        .unwrap();
+        assert!(
+            matches!(streamed.as_slice(), [crate::io::read::geojson_stream::Event::Polygon(p)] if *p == polygons[0])
+        );
+        assert_eq!(
+            crate::io::read::geojson_stream::read_line(&text, 1).unwrap(),
+            polygons
+        );
+    }
+
+    #[test]
     fn rejects_empty_input_and_inputs_without_polygons() {
         for text in ["", "  \n\r\n", "\u{feff}"] {
             assert_eq!(error(text), "empty input: no polygon found");
@@ -633,7 +752,11 @@ mod tests {
             "{}",
             error(&deep)
         );
-        let deep = format!("{}{}", r#"{"geometry": "#.repeat(100_000), "}".repeat(100_000));
+        let deep = format!(
+            "{}{}",
+            r#"{"geometry": "#.repeat(100_000),
+            "}".repeat(100_000)
+        );
         assert!(
             error(&deep).contains("recursion limit exceeded"),
             "{}",

@@ -20,7 +20,7 @@
 //! Memory: 64 bytes per position while its polygon is held (two decimals), plus the text of
 //! `coordinates` that come before `"type"`. Complexity: linear in the input size.
 
-use super::geojson::Failure;
+use super::geojson::{json_message, Failure};
 use super::vertices::{excerpt, parse_number, quote};
 use super::{drop_closing_vertex, RawPolygon};
 use crate::geom::decimal::Decimal;
@@ -112,8 +112,8 @@ impl Object {
             return;
         };
         let mut de = serde_json::Deserializer::from_str(text.get());
-        // The text was read as JSON once already: a failure here cannot be a syntax error.
-        let failed = |e: serde_json::Error| Failure::new(format!("invalid JSON: {e}"));
+        // The text was read as JSON once already, but without the recursion limit.
+        let failed = |e: serde_json::Error| Failure::new(json_message(&e, None));
         self.coordinates = Some(match self.kind() {
             Some("Polygon") => Coordinates::Polygon(
                 LevelSeed(PolygonLevel)
@@ -321,7 +321,7 @@ fn read_object<'de, A: MapAccess<'de>>(
             }
             "geometry" => object.geometry = Some(map.next_value_seed(NodeSeed::skip())?),
             "geometries" => object.geometries = Some(map.next_value_seed(NodeSeed::list())?),
-            _ => {
+            _ /* "features" */ => {
                 let stream = object.kind() == Some("FeatureCollection")
                     && object.features.is_none()
                     && sink.is_some();
@@ -778,7 +778,7 @@ impl Item {
         }
     }
 
-    /// The element as JSON text (an array as `[...]`).
+    /// The element as JSON text; an array, which no message quotes, as `[...]`.
     fn json(&self) -> String {
         match self {
             Item::Number(Number::Unsigned(v)) => v.to_string(),
@@ -867,7 +867,9 @@ mod tests {
         for good in ["0", "-0", "12", "-3.25", "1e5", "1E+5", "2.5e-3", "0.0"] {
             assert!(is_json_number(good), "{good}");
         }
-        for bad in ["", "-", "01", "1.", ".5", "+1", "1e", "1e+", "NaN", "1 ", "0x1", "abc"] {
+        for bad in [
+            "", "-", "01", "1.", ".5", "+1", "1e", "1e+", "NaN", "1 ", "0x1", "abc",
+        ] {
             assert!(!is_json_number(bad), "{bad}");
         }
     }

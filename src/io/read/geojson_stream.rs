@@ -369,9 +369,9 @@ impl Sink<'_> {
             Ok(()) => polygons
                 .into_iter()
                 .try_for_each(|polygon| self.polygon(polygon)),
-            Err(failure) => {
-                self.fail(ParseError::new(failure.within("feature", index).to_string()))
-            }
+            Err(failure) => self.fail(ParseError::new(
+                failure.within("feature", index).to_string(),
+            )),
         }
     }
 
@@ -499,13 +499,44 @@ mod tests {
             events(one).0[0].as_ref().unwrap_err(),
             &geojson::read(one).unwrap_err().to_string()
         );
-        for scalar in ["12.50", "\"x\"", "true", "null"] {
+        // Integers too (they once stopped the stream with "invalid type: integer").
+        for scalar in ["12.50", "7", "-3", "\"x\"", "true", "null", "[]"] {
             assert_eq!(
                 events(scalar).0[0].as_ref().unwrap_err(),
                 &geojson::read(scalar).unwrap_err().to_string(),
                 "{scalar}"
             );
         }
+    }
+
+    #[test]
+    fn a_collection_is_judged_as_the_whole_reader_judges_it() {
+        // "features" that are not an array: the whole reader's message, not a syntax error.
+        for features in ["7", "{}", "null"] {
+            let text = format!(r#"{{"type": "FeatureCollection", "features": {features}}}"#);
+            let (got, stop) = events(&text);
+            assert_eq!(stop, None, "{text}");
+            assert_eq!(
+                got[0].as_ref().unwrap_err(),
+                &geojson::read(&text).unwrap_err().to_string()
+            );
+        }
+        // A member named twice after the features were streamed: they stand, the object fails.
+        let text = format!(
+            r#"{{"type": "FeatureCollection", "features": [{{"type": "Feature", "geometry": {A}}}], "features": []}}"#
+        );
+        let (got, stop) = events(&text);
+        assert_eq!(stop, None);
+        assert_eq!(got.len(), 2);
+        assert!(got[0].is_ok());
+        assert_eq!(
+            got[1].as_ref().unwrap_err(),
+            "duplicate \"features\" member: each may appear once in an object"
+        );
+        assert_eq!(
+            geojson::read(&text).unwrap_err().to_string(),
+            "duplicate \"features\" member: each may appear once in an object"
+        );
     }
 
     #[test]
