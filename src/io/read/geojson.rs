@@ -13,15 +13,21 @@
 //!
 //! A position is `[x, y]`, `[x, y, z]` or `[x, y, z, m]`; z and m must be numbers and are ignored.
 //! An empty `coordinates` array is an empty geometry and yields no polygon; an empty ring is an
-//! error. Other members (`bbox`, `properties`, `id`, foreign members) are ignored.
+//! error. Other members (`bbox`, `properties`, `id`, foreign members) are ignored. Members come in
+//! any order, but `type`, `coordinates`, `geometry`, `geometries` and `features` may each appear
+//! once in an object (a second `type` could change how `coordinates` before it should be read).
 //!
-//! Output guarantee: the polygons in input order, coordinates as exact [`Decimal`]s parsed from
-//! the literal text of each JSON number (`serde_json`'s `arbitrary_precision`, never through
-//! `f64`; it keeps the digits and only spells the exponent as `e+5`, so error messages quote
-//! `1E5` as `1e+5`), each ring without its repeated closing vertex. JSON syntax errors carry line and
-//! column; errors in a well-formed document name the path to the offending value
-//! (`feature 3, ring 1, position 5: expected [x, y], found "abc"`), and, when the input holds
-//! several JSON values, the line and column where the offending value starts.
+//! Output guarantee: the polygons in input order, coordinates as exact decimals
+//! ([`Decimal`](crate::Decimal)) parsed from the literal text of each JSON number
+//! (`serde_json`'s `arbitrary_precision`, never through `f64`; it keeps the digits and only
+//! spells the exponent as `e+5`, so error messages quote `1E5` as `1e+5`), each ring without
+//! its repeated closing vertex. JSON syntax errors carry line and column; errors in a
+//! well-formed document name the path to the offending value (`feature 3, ring 1, position 5:
+//! expected [x, y], found "abc"`), and, when the input holds several JSON values, the line and
+//! column where the offending value starts.
+//!
+//! Each JSON value is read by the `serde` seeds of `geojson_seed.rs` (positions straight into
+//! decimals, 64 bytes per vertex; never a `serde_json::Value` for coordinates), then judged here.
 //!
 //! Complexity: linear in the input size.
 
