@@ -4,7 +4,7 @@
 //! Input contract: any JSON value, from a `serde_json` deserializer with `arbitrary_precision`
 //! (a number that is not a 64-bit integer arrives as its literal text). Output guarantee: a
 //! [`Node`]: a JSON object as an [`Object`] (its `type`, `coordinates`, `geometry`, `geometries`
-//! and `features` members as read; other members are skipped unread), a Polygon's or
+//! and `features` members as read; other members are read and dropped), a Polygon's or
 //! MultiPolygon's `coordinates` as polygons of exact [`Decimal`] rings (without the closing
 //! position), anything else only as far as a message names it. What is wrong inside
 //! `coordinates` is not a `serde` error: the first failure, with its path (`ring 1, position
@@ -31,7 +31,7 @@ use std::fmt;
 
 /// The key under which `serde_json` (`arbitrary_precision`) hands a number that is not a 64-bit
 /// integer to `visit_map`, its text as the value.
-pub(super) const NUMBER_TOKEN: &str = "$serde_json::private::Number";
+const NUMBER_TOKEN: &str = "$serde_json::private::Number";
 
 /// The members of a GeoJSON object that an [`Object`] keeps.
 const MEMBERS: [&str; 5] = ["type", "coordinates", "geometry", "geometries", "features"];
