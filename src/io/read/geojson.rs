@@ -647,6 +647,9 @@ mod tests {
             "]".repeat(200)
         );
         assert_eq!(error(&deep), "invalid JSON: recursion limit exceeded");
+        // A syntax error in them is one, worded by `serde_json`'s skipping parser.
+        let cut = r#"{"coordinates": [[[0, 0], [1, 0], [5,]]], "type": "Polygon"}"#;
+        assert_eq!(error(cut), "line 1, column 38: invalid JSON: expected value");
     }
 
     #[test]

@@ -14,8 +14,12 @@
 //!
 //! The nesting of `coordinates` depends on the object's `type`: when `"coordinates"` comes
 //! before `"type"`, its text is kept ([`RawValue`], a few bytes per position) and read once the
-//! type is known. A GeoJSON member named twice in one object is recorded (and then reported),
-//! since the second could change how the first was read.
+//! type is known. `serde_json` checks such text with its skipping parser, so a JSON syntax error
+//! inside it is worded as that parser words it (`expected value` where `trailing comma` would be
+//! said otherwise, a control character in a string one column earlier) and the recursion limit
+//! is only met when the text is read (`invalid JSON: recursion limit exceeded`, without a
+//! location). A GeoJSON member named twice in one object is recorded (and then reported), since
+//! the second could change how the first was read.
 //!
 //! Memory: 64 bytes per position while its polygon is held (two decimals), plus the text of
 //! `coordinates` that come before `"type"`. Complexity: linear in the input size.
