@@ -649,7 +649,10 @@ mod tests {
         assert_eq!(error(&deep), "invalid JSON: recursion limit exceeded");
         // A syntax error in them is one, worded by `serde_json`'s skipping parser.
         let cut = r#"{"coordinates": [[[0, 0], [1, 0], [5,]]], "type": "Polygon"}"#;
-        assert_eq!(error(cut), "line 1, column 38: invalid JSON: expected value");
+        assert_eq!(
+            error(cut),
+            "line 1, column 38: invalid JSON: expected value"
+        );
     }
 
     #[test]
