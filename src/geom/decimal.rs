@@ -225,6 +225,40 @@ fn literal(text: &str) -> String {
     }
 }
 
+impl From<u64> for Decimal {
+    /// The integer exactly (as [`Decimal::parse`] of its decimal notation).
+    fn from(value: u64) -> Decimal {
+        Decimal::integer(false, value)
+    }
+}
+
+impl From<i64> for Decimal {
+    /// The integer exactly (as [`Decimal::parse`] of its decimal notation).
+    fn from(value: i64) -> Decimal {
+        Decimal::integer(value < 0, value.unsigned_abs())
+    }
+}
+
+impl Decimal {
+    /// `-magnitude` or `magnitude`, normalised (trailing zeros into the exponent).
+    fn integer(negative: bool, magnitude: u64) -> Decimal {
+        if magnitude == 0 {
+            return Decimal::ZERO;
+        }
+        let mut mantissa = u128::from(magnitude);
+        let mut exponent = 0;
+        while mantissa % 10 == 0 {
+            mantissa /= 10;
+            exponent += 1;
+        }
+        Decimal {
+            negative,
+            mantissa,
+            exponent,
+        }
+    }
+}
+
 impl std::str::FromStr for Decimal {
     type Err = NumberError;
     fn from_str(s: &str) -> Result<Self, Self::Err> {
@@ -264,6 +298,36 @@ mod tests {
         assert_eq!(d("1200"), d("1.2e3"));
         assert_eq!(d("+5."), d("5"));
         assert_ne!(d("0.1"), d("0.1000000000000000001"));
+    }
+
+    #[test]
+    fn integers_convert_as_their_decimal_notation_parses() {
+        for value in [
+            0,
+            1,
+            -1,
+            7,
+            10,
+            -100,
+            120,
+            1_000_000,
+            -305_000,
+            i64::MAX,
+            i64::MIN,
+        ] {
+            assert_eq!(
+                Decimal::from(value),
+                Decimal::parse(&value.to_string()).unwrap()
+            );
+        }
+        for value in [0, 9, 90, 18_000_000_000_000_000_000, u64::MAX] {
+            assert_eq!(
+                Decimal::from(value),
+                Decimal::parse(&value.to_string()).unwrap()
+            );
+        }
+        assert_eq!(Decimal::from(-2500i64).to_string(), "-2500");
+        assert_eq!(Decimal::from(-2500i64).exponent(), 2);
     }
 
     #[test]

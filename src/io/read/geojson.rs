@@ -13,22 +13,28 @@
 //!
 //! A position is `[x, y]`, `[x, y, z]` or `[x, y, z, m]`; z and m must be numbers and are ignored.
 //! An empty `coordinates` array is an empty geometry and yields no polygon; an empty ring is an
-//! error. Other members (`bbox`, `properties`, `id`, foreign members) are ignored.
+//! error. Other members (`bbox`, `properties`, `id`, foreign members) are ignored. Members come in
+//! any order, but `type`, `coordinates`, `geometry`, `geometries` and `features` may each appear
+//! once in an object (a second `type` could change how `coordinates` before it should be read).
 //!
-//! Output guarantee: the polygons in input order, coordinates as exact [`Decimal`]s parsed from
-//! the literal text of each JSON number (`serde_json`'s `arbitrary_precision`, never through
-//! `f64`; it keeps the digits and only spells the exponent as `e+5`, so error messages quote
-//! `1E5` as `1e+5`), each ring without its repeated closing vertex. JSON syntax errors carry line and
-//! column; errors in a well-formed document name the path to the offending value
-//! (`feature 3, ring 1, position 5: expected [x, y], found "abc"`), and, when the input holds
-//! several JSON values, the line and column where the offending value starts.
+//! Output guarantee: the polygons in input order, coordinates as exact decimals
+//! ([`Decimal`](crate::Decimal)) parsed from the literal text of each JSON number
+//! (`serde_json`'s `arbitrary_precision`, never through `f64`; it keeps the digits and only
+//! spells the exponent as `e+5`, so error messages quote `1E5` as `1e+5`), each ring without
+//! its repeated closing vertex. JSON syntax errors carry line and column; errors in a
+//! well-formed document name the path to the offending value (`feature 3, ring 1, position 5:
+//! expected [x, y], found "abc"`), and, when the input holds several JSON values, the line and
+//! column where the offending value starts.
+//!
+//! Each JSON value is read by the `serde` seeds of `geojson_seed.rs` (positions straight into
+//! decimals, 64 bytes per vertex; never a `serde_json::Value` for coordinates), then judged here.
 //!
 //! Complexity: linear in the input size.
 
-use super::vertices::{excerpt, parse_number, quote};
-use super::{drop_closing_vertex, locate, Location, ParseError, RawPolygon};
-use crate::geom::decimal::Decimal;
-use serde_json::{Map, Value};
+use super::geojson_seed::{Coordinates, Node, Object};
+use super::vertices::quote;
+use super::{locate, Location, ParseError};
+use crate::io::read::RawPolygon;
 
 /// The whitespace JSON allows between tokens (RFC 8259): not form feed or other Unicode spaces,
 /// which `str::trim` would also remove.
@@ -62,7 +68,7 @@ pub fn read(text: &str) -> Result<Vec<RawPolygon>, ParseError> {
     };
     let body = text.get(bom..).unwrap_or_default();
     let mut values = Vec::new();
-    let mut stream = serde_json::Deserializer::from_str(body).into_iter::<Value>();
+    let mut stream = serde_json::Deserializer::from_str(body).into_iter::<Node>();
     loop {
         let before = stream.byte_offset();
         match stream.next() {
@@ -80,9 +86,9 @@ pub fn read(text: &str) -> Result<Vec<RawPolygon>, ParseError> {
     }
     let several = values.len() > 1;
     let mut polygons = Vec::new();
-    for (start, value) in &values {
+    for (start, value) in values {
         top_level(value, &mut polygons).map_err(|failure| ParseError {
-            location: several.then(|| locate(text, *start)),
+            location: several.then(|| locate(text, start)),
             message: failure.to_string(),
         })?;
     }
@@ -150,7 +156,7 @@ pub(super) struct Failure {
 }
 
 impl Failure {
-    fn new(message: impl Into<String>) -> Failure {
+    pub(super) fn new(message: impl Into<String>) -> Failure {
         Failure {
             path: Vec::new(),
             message: message.into(),
@@ -179,46 +185,41 @@ impl std::fmt::Display for Failure {
     }
 }
 
-/// A JSON value as named in an error message.
-fn describe(value: &Value) -> String {
-    match value {
-        Value::Null => "null".into(),
-        Value::Bool(b) => b.to_string(),
-        Value::Number(n) => excerpt(n.as_str()),
-        Value::String(s) => quote(s),
-        Value::Array(a) if a.is_empty() => "an empty array".into(),
-        Value::Array(_) => "an array".into(),
-        Value::Object(_) => "an object".into(),
-    }
-}
-
 /// A top-level JSON value: a GeoJSON object or a bare array of rings.
-pub(super) fn top_level(value: &Value, out: &mut Vec<RawPolygon>) -> Result<(), Failure> {
-    match value {
-        Value::Object(object) => match type_of(object)? {
-            "Feature" => feature(object, out),
-            "FeatureCollection" => feature_collection(object, out),
-            kind => geometry(object, kind, 0, out),
+pub(super) fn top_level(node: Node, out: &mut Vec<RawPolygon>) -> Result<(), Failure> {
+    match node {
+        Node::Object(object) => match type_of(&object)?.as_str() {
+            "Feature" => feature(*object, out),
+            "FeatureCollection" => feature_collection(*object, out),
+            kind => geometry(*object, kind, 0, out),
         },
-        Value::Array(rings) if rings.is_empty() => Err(Failure::new(
+        Node::Rings(Ok(None)) => Err(Failure::new(
             "expected an array of rings [[[x, y], ...], ...], found an empty array",
         )),
-        Value::Array(_) => {
-            out.extend(polygon(value)?);
+        Node::Rings(polygon) => {
+            out.extend(polygon?);
             Ok(())
         }
         other => Err(Failure::new(format!(
             "expected a GeoJSON object or an array of rings [[[x, y], ...], ...], found {}",
-            describe(other)
+            other.describe()
         ))),
     }
 }
 
-/// The `type` member of a GeoJSON object.
-fn type_of(object: &Map<String, Value>) -> Result<&str, Failure> {
-    match object.get("type") {
-        Some(Value::String(kind)) => Ok(kind),
-        Some(other) => Err(Failure::new(format!("\"type\" must be a string, found {}", describe(other)))),
+/// The `type` member of a GeoJSON object (whose GeoJSON members must each appear once).
+pub(super) fn type_of(object: &Object) -> Result<String, Failure> {
+    if let Some(name) = object.duplicate {
+        return Err(Failure::new(format!(
+            "duplicate \"{name}\" member: each may appear once in an object"
+        )));
+    }
+    match &object.kind {
+        Some(Node::String(kind)) => Ok(kind.clone()),
+        Some(other) => Err(Failure::new(format!(
+            "\"type\" must be a string, found {}",
+            other.describe()
+        ))),
         None => Err(Failure::new(
             "missing \"type\": expected a GeoJSON object such as {\"type\": \"Polygon\", \"coordinates\": ...}",
         )),
@@ -226,49 +227,36 @@ fn type_of(object: &Map<String, Value>) -> Result<&str, Failure> {
 }
 
 /// A member that must be present.
-fn member<'v>(
-    object: &'v Map<String, Value>,
-    name: &str,
-    kind: &str,
-) -> Result<&'v Value, Failure> {
-    object
-        .get(name)
-        .ok_or_else(|| Failure::new(format!("missing \"{name}\" member in a {kind}")))
+fn member<T>(value: Option<T>, name: &str, kind: &str) -> Result<T, Failure> {
+    value.ok_or_else(|| Failure::new(format!("missing \"{name}\" member in a {kind}")))
 }
 
-/// A member that must be an array.
-fn array_member<'v>(
-    object: &'v Map<String, Value>,
-    name: &str,
-    kind: &str,
-) -> Result<&'v [Value], Failure> {
-    match member(object, name, kind)? {
-        Value::Array(items) => Ok(items),
+/// A member that must be an array, read element by element.
+fn list_member(value: Option<Node>, name: &str, kind: &str) -> Result<Vec<Node>, Failure> {
+    match member(value, name, kind)? {
+        Node::List(items) => Ok(items),
+        // Sent elsewhere as they were read.
+        Node::Streamed => Ok(Vec::new()),
         other => Err(Failure::new(format!(
             "\"{name}\" of a {kind} must be an array, found {}",
-            describe(other)
+            other.describe()
         ))),
     }
 }
 
 /// A FeatureCollection: each feature in order.
-fn feature_collection(
-    object: &Map<String, Value>,
-    out: &mut Vec<RawPolygon>,
-) -> Result<(), Failure> {
-    for (index, item) in array_member(object, "features", "FeatureCollection")?
-        .iter()
-        .enumerate()
-    {
+fn feature_collection(object: Object, out: &mut Vec<RawPolygon>) -> Result<(), Failure> {
+    let features = list_member(object.features, "features", "FeatureCollection")?;
+    for (index, item) in features.into_iter().enumerate() {
         collection_feature(item, out).map_err(|failure| failure.within("feature", index))?;
     }
     Ok(())
 }
 
 /// An element of a FeatureCollection's `features`: a Feature.
-pub(super) fn collection_feature(item: &Value, out: &mut Vec<RawPolygon>) -> Result<(), Failure> {
+pub(super) fn collection_feature(item: Node, out: &mut Vec<RawPolygon>) -> Result<(), Failure> {
     let object = object_of(item, "a Feature object")?;
-    match type_of(object)? {
+    match type_of(&object)?.as_str() {
         "Feature" => feature(object, out),
         kind => Err(Failure::new(format!(
             "expected a Feature, found {}",
@@ -278,73 +266,64 @@ pub(super) fn collection_feature(item: &Value, out: &mut Vec<RawPolygon>) -> Res
 }
 
 /// An element of a GeometryCollection's `geometries`, `depth` collections deep.
-fn collection_geometry(
-    item: &Value,
-    depth: usize,
-    out: &mut Vec<RawPolygon>,
-) -> Result<(), Failure> {
+fn collection_geometry(item: Node, depth: usize, out: &mut Vec<RawPolygon>) -> Result<(), Failure> {
     let object = object_of(item, "a geometry object")?;
-    geometry(object, type_of(object)?, depth, out)
+    let kind = type_of(&object)?;
+    geometry(object, &kind, depth, out)
 }
 
 /// A value that must be a JSON object; `what` names it in the error.
-fn object_of<'v>(value: &'v Value, what: &str) -> Result<&'v Map<String, Value>, Failure> {
-    match value {
-        Value::Object(object) => Ok(object),
+fn object_of(node: Node, what: &str) -> Result<Object, Failure> {
+    match node {
+        Node::Object(object) => Ok(*object),
         other => Err(Failure::new(format!(
             "expected {what}, found {}",
-            describe(other)
+            other.describe()
         ))),
     }
 }
 
 /// A Feature: its geometry, if not `null`.
-fn feature(object: &Map<String, Value>, out: &mut Vec<RawPolygon>) -> Result<(), Failure> {
-    match member(object, "geometry", "Feature")? {
-        Value::Null => Ok(()),
-        Value::Object(geometry_object) => {
-            geometry(geometry_object, type_of(geometry_object)?, 0, out)
+fn feature(object: Object, out: &mut Vec<RawPolygon>) -> Result<(), Failure> {
+    match member(object.geometry, "geometry", "Feature")? {
+        Node::Null => Ok(()),
+        Node::Object(geometry_object) => {
+            let kind = type_of(&geometry_object)?;
+            geometry(*geometry_object, &kind, 0, out)
         }
         other => Err(Failure::new(format!(
             "\"geometry\" must be an object or null, found {}",
-            describe(other)
+            other.describe()
         ))),
     }
 }
 
 /// A geometry object of type `kind`, `depth` collections deep.
 fn geometry(
-    object: &Map<String, Value>,
+    object: Object,
     kind: &str,
     depth: usize,
     out: &mut Vec<RawPolygon>,
 ) -> Result<(), Failure> {
     match kind {
-        "Polygon" => out.extend(polygon(member(object, "coordinates", "Polygon")?)?),
-        "MultiPolygon" => {
-            let parts = match member(object, "coordinates", "MultiPolygon")? {
-                Value::Array(parts) => parts,
-                other => {
-                    return Err(Failure::new(format!(
-                        "expected an array of polygons [[[[x, y], ...], ...], ...], found {}",
-                        describe(other)
-                    )))
-                }
-            };
-            for (index, part) in parts.iter().enumerate() {
-                out.extend(polygon(part).map_err(|failure| failure.within("polygon", index))?);
+        "Polygon" | "MultiPolygon" => match member(object.coordinates, "coordinates", kind)? {
+            Coordinates::Polygon(polygon) => out.extend(polygon?),
+            Coordinates::MultiPolygon(polygons) => out.extend(polygons?),
+            // Read for another `type`: only when "type" was named twice, reported before this.
+            Coordinates::Text(_) | Coordinates::Skipped => {
+                return Err(Failure::new(format!(
+                    "\"coordinates\" were not read as those of a {kind}"
+                )))
             }
-        }
+        },
         "GeometryCollection" => {
             if depth >= MAX_DEPTH {
                 return Err(Failure::new(format!(
                     "geometry collections nested deeper than {MAX_DEPTH} levels"
                 )));
             }
-            for (index, item) in array_member(object, "geometries", "GeometryCollection")?
-                .iter()
-                .enumerate()
-            {
+            let geometries = list_member(object.geometries, "geometries", "GeometryCollection")?;
+            for (index, item) in geometries.into_iter().enumerate() {
                 collection_geometry(item, depth + 1, out)
                     .map_err(|failure| failure.within("geometry", index))?;
             }
@@ -359,95 +338,6 @@ fn geometry(
     Ok(())
 }
 
-/// A Polygon's coordinates: `None` for an empty array (an empty polygon).
-fn polygon(value: &Value) -> Result<Option<RawPolygon>, Failure> {
-    let Value::Array(items) = value else {
-        return Err(Failure::new(format!(
-            "expected an array of rings [[[x, y], ...], ...], found {}",
-            describe(value)
-        )));
-    };
-    if items.is_empty() {
-        return Ok(None);
-    }
-    let rings = items
-        .iter()
-        .enumerate()
-        .map(|(index, item)| ring(item).map_err(|failure| failure.within("ring", index)))
-        .collect::<Result<_, _>>()?;
-    Ok(Some(RawPolygon { rings }))
-}
-
-/// A ring, without its repeated closing position.
-fn ring(value: &Value) -> Result<Vec<[Decimal; 2]>, Failure> {
-    let Value::Array(items) = value else {
-        return Err(Failure::new(format!(
-            "expected a ring [[x, y], ...], found {}",
-            describe(value)
-        )));
-    };
-    if items.is_empty() {
-        return Err(Failure::new("empty ring: expected positions [x, y]"));
-    }
-    let mut ring = items
-        .iter()
-        .enumerate()
-        .map(|(index, item)| position(item).map_err(|failure| failure.within("position", index)))
-        .collect::<Result<Vec<_>, _>>()?;
-    drop_closing_vertex(&mut ring);
-    Ok(ring)
-}
-
-/// A position `[x, y]`, `[x, y, z]` or `[x, y, z, m]`, keeping `x` and `y`.
-fn position(value: &Value) -> Result<[Decimal; 2], Failure> {
-    let Value::Array(items) = value else {
-        let hint = if value.is_number() {
-            " (the coordinates are nested one level too shallow)"
-        } else {
-            ""
-        };
-        return Err(Failure::new(format!(
-            "expected [x, y], found {}{hint}",
-            describe(value)
-        )));
-    };
-    if items.first().is_some_and(Value::is_array) {
-        return Err(Failure::new(
-            "expected [x, y], found an array of arrays (the coordinates are nested one level too deep)",
-        ));
-    }
-    let [x, y, rest @ ..] = items.as_slice() else {
-        return Err(Failure::new(format!(
-            "expected [x, y], found {}",
-            excerpt(&value.to_string())
-        )));
-    };
-    if rest.len() > 2 {
-        return Err(Failure::new(format!(
-            "a position has at most 4 numbers [x, y, z, m], found {}",
-            items.len()
-        )));
-    }
-    let number = |value: &Value, axis: &str| match value {
-        Value::Number(n) => parse_number(n.as_str()).map_err(Failure::new),
-        other => Err(Failure::new(format!(
-            "expected a number for {axis}, found {}",
-            describe(other)
-        ))),
-    };
-    let x = number(x, "x")?;
-    let y = number(y, "y")?;
-    for (extra, axis) in rest.iter().zip(["z", "m"]) {
-        if !extra.is_number() {
-            return Err(Failure::new(format!(
-                "expected a number for {axis}, found {}",
-                describe(extra)
-            )));
-        }
-    }
-    Ok([x, y])
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -455,6 +345,7 @@ mod tests {
     use serde::de::value::{Error as DeError, MapDeserializer, SeqDeserializer};
     use serde::de::{Deserializer, Error as _, IntoDeserializer, Visitor};
     use serde::Deserialize;
+    use serde_json::Value;
 
     fn error(text: &str) -> String {
         read(text).expect_err(text).to_string()
@@ -720,6 +611,131 @@ mod tests {
     }
 
     #[test]
+    fn reads_coordinates_that_come_before_the_type() {
+        let rings = "[[[0, 0], [4, 0.5], [4, 4], [0, 0]], [[1, 1], [2, 1], [1, 2]]]";
+        let first =
+            format!(r#"{{"coordinates": {rings}, "bbox": [0, 0, 4, 4], "type": "Polygon"}}"#);
+        let expected = vec![
+            ring(&[("0", "0"), ("4", "0.5"), ("4", "4")]),
+            ring(&[("1", "1"), ("2", "1"), ("1", "2")]),
+        ];
+        assert_eq!(read(&first).unwrap()[0].rings, expected);
+        let multi = format!(r#"{{"coordinates": [{rings}, [], {rings}], "type": "MultiPolygon"}}"#);
+        let polygons = read(&multi).unwrap();
+        assert_eq!(polygons.len(), 2);
+        assert_eq!(polygons[1].rings, expected);
+        // The messages are those of the usual order.
+        let bad = r#"[[[0, 0], [1, 0], [0, 1]], [[0, 0], [1, 0], [0, "y"]]]"#;
+        assert_eq!(
+            error(&format!(r#"{{"coordinates": {bad}, "type": "Polygon"}}"#)),
+            "ring 1, position 2: expected a number for y, found \"y\""
+        );
+        assert_eq!(
+            error(&format!(
+                r#"{{"coordinates": [{bad}], "type": "MultiPolygon"}}"#
+            )),
+            "polygon 0, ring 1, position 2: expected a number for y, found \"y\""
+        );
+        assert_eq!(
+            error(&format!(r#"{{"coordinates": {rings}, "type": "Point"}}"#)),
+            "expected a Polygon or MultiPolygon geometry, found \"Point\""
+        );
+        // Kept as text, they are read without `serde_json`'s recursion limit, then with it.
+        let deep = format!(
+            r#"{{"coordinates": [[{}0{}]], "type": "Polygon"}}"#,
+            "[".repeat(200),
+            "]".repeat(200)
+        );
+        assert_eq!(error(&deep), "invalid JSON: recursion limit exceeded");
+        // A syntax error in them is one, worded by `serde_json`'s skipping parser.
+        let cut = r#"{"coordinates": [[[0, 0], [1, 0], [5,]]], "type": "Polygon"}"#;
+        assert_eq!(
+            error(cut),
+            "line 1, column 38: invalid JSON: expected value"
+        );
+    }
+
+    #[test]
+    fn rejects_a_member_named_twice() {
+        let twice = |member: &str| {
+            error(&format!(
+                r#"{{"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 1]]], {member}}}"#
+            ))
+        };
+        // A second "type" could change how "coordinates" before it should have been read.
+        assert_eq!(
+            twice(r#""type": "MultiPolygon""#),
+            "duplicate \"type\" member: each may appear once in an object"
+        );
+        assert_eq!(
+            twice(r#""coordinates": [[[0, 0], [2, 0], [0, 2]]]"#),
+            "duplicate \"coordinates\" member: each may appear once in an object"
+        );
+        let features = r#"{"type": "FeatureCollection", "features": [
+            {"type": "Feature", "geometry": null, "geometry": null}]}"#;
+        assert_eq!(
+            error(features),
+            "feature 0: duplicate \"geometry\" member: each may appear once in an object"
+        );
+        // Other members may repeat.
+        let other =
+            r#"{"type": "Polygon", "id": 1, "id": 2, "coordinates": [[[0, 0], [1, 0], [0, 1]]]}"#;
+        assert_eq!(read(other).unwrap().len(), 1);
+    }
+
+    /// A ring of 200,000 positions on one line: integers (negative too), decimals and
+    /// exponents, the closing position repeated, then a hole.
+    #[test]
+    fn reads_a_large_single_line_polygon_exactly() {
+        const N: i64 = 200_000;
+        let x = |k: i64| k - N / 2;
+        let y = |k: i64| match k % 3 {
+            0 => format!("{}.{:03}", k / 7, k % 1000),
+            1 => format!("-{}e-2", k),
+            _ => format!("{}", k * k),
+        };
+        let mut text = String::from(r#"{"type":"Polygon","coordinates":[["#);
+        for k in 0..N {
+            text.push_str(&format!("[{},{}],", x(k), y(k)));
+        }
+        text.push_str(&format!("[{},{}]],[[1,1],[2,1],[1,2]]]}}", x(0), y(0)));
+        assert!(!text.contains('\n'));
+        let polygons = read(&text).unwrap();
+        assert_eq!(polygons.len(), 1);
+        let rings = &polygons[0].rings;
+        assert_eq!(rings.len(), 2);
+        assert_eq!(rings[0].len(), N as usize, "the closing position dropped");
+        assert_eq!(rings[1].len(), 3);
+        for k in (0..N).step_by(997).chain([1, 2, N - 1]) {
+            assert_eq!(
+                rings[0][k as usize],
+                [d(&x(k).to_string()), d(&y(k))],
+                "{k}"
+            );
+        }
+        assert_eq!(rings[0][3][1], d("0.003"));
+        assert_eq!(rings[0][4][1], d("-0.04"));
+        assert_eq!(rings[0][5][1], d("25"));
+        // The streaming and line readers give the same polygon.
+        let mut streamed = Vec::new();
+        crate::io::read::geojson_stream::stream(
+            std::io::BufReader::with_capacity(4096, text.as_bytes()),
+            &mut |event| {
+                streamed.push(event);
+                Ok(())
+            },
+        )
+        .unwrap();
+        assert!(
+            matches!(streamed.as_slice(), [crate::io::read::geojson_stream::Event::Polygon(p)] if *p == polygons[0])
+        );
+        assert_eq!(
+            crate::io::read::geojson_stream::read_line(&text, 1).unwrap(),
+            polygons
+        );
+    }
+
+    #[test]
     fn rejects_empty_input_and_inputs_without_polygons() {
         for text in ["", "  \n\r\n", "\u{feff}"] {
             assert_eq!(error(text), "empty input: no polygon found");
@@ -743,6 +759,16 @@ mod tests {
     #[test]
     fn never_panics_on_hostile_input() {
         let deep = format!("{}{}", "[".repeat(100_000), "]".repeat(100_000));
+        assert!(
+            error(&deep).contains("recursion limit exceeded"),
+            "{}",
+            error(&deep)
+        );
+        let deep = format!(
+            "{}{}",
+            r#"{"geometry": "#.repeat(100_000),
+            "}".repeat(100_000)
+        );
         assert!(
             error(&deep).contains("recursion limit exceeded"),
             "{}",

@@ -26,14 +26,12 @@
 //!
 //! Complexity: linear in the input size; memory proportional to the largest feature.
 
-use super::geojson::{collection_feature, json_message, top_level, JSON_WHITESPACE};
+use super::geojson::{collection_feature, json_message, top_level, type_of, JSON_WHITESPACE};
+use super::geojson_seed::{FeatureSink, Node, NodeSeed, Object};
 use super::{locate, Location, ParseError, RawPolygon};
-use serde::de::{self, DeserializeSeed, MapAccess, SeqAccess, Visitor};
-use serde::Deserialize;
-use serde_json::{Map, Value};
+use serde::de::{self, DeserializeSeed};
 use std::cell::RefCell;
 use std::collections::VecDeque;
-use std::fmt;
 use std::io::{self, BufRead, Read};
 use std::rc::Rc;
 
@@ -121,12 +119,14 @@ pub fn stream<R: BufRead>(
             sink.fail(ParseError::at(location, message))
                 .map_err(Stop::Output)?;
         }
-        match (TopLevel { sink: &mut sink }).deserialize(&mut de) {
-            Ok(None) => {}
-            Ok(Some(message)) if values == 0 => held = Some((start, message)),
-            Ok(Some(message)) => sink
-                .fail(ParseError::at(start, message))
-                .map_err(Stop::Output)?,
+        match NodeSeed::top(Some(&mut sink)).deserialize(&mut de) {
+            Ok(node) => match sink.value(node).map_err(Stop::Output)? {
+                None => {}
+                Some(message) if values == 0 => held = Some((start, message)),
+                Some(message) => sink
+                    .fail(ParseError::at(start, message))
+                    .map_err(Stop::Output)?,
+            },
             Err(e) => {
                 return Err(match sink.output_error.take() {
                     Some(output) => Stop::Output(output),
@@ -178,7 +178,9 @@ pub fn read_line(line: &str, number: usize) -> Result<Vec<RawPolygon>, ParseErro
         line: number,
         column: column.max(1),
     };
-    let value: Value = serde_json::from_str(body).map_err(|e| {
+    let mut de = serde_json::Deserializer::from_str(body);
+    let read = NodeSeed::top(None).deserialize(&mut de);
+    let node = read.and_then(|node| de.end().map(|()| node)).map_err(|e| {
         if e.is_eof() {
             // The line ends too soon: the column just after its last character.
             let end = line.trim_end_matches(['\n', '\r']).chars().count() + 1;
@@ -194,7 +196,7 @@ pub fn read_line(line: &str, number: usize) -> Result<Vec<RawPolygon>, ParseErro
         ParseError::at(at(column), json_message(&e, found))
     })?;
     let mut polygons = Vec::new();
-    top_level(&value, &mut polygons).map_err(|failure| {
+    top_level(node, &mut polygons).map_err(|failure| {
         let column = line.chars().count() - body.chars().count() + 1;
         ParseError::at(at(column), failure.to_string())
     })?;
@@ -360,156 +362,63 @@ impl Sink<'_> {
         (self.emit)(Event::Failed(error))
     }
 
-    /// Pushes a callback error through the deserializer, keeping the error itself.
-    fn keep<E: de::Error>(&mut self, result: io::Result<()>) -> Result<(), E> {
-        result.map_err(|e| {
-            self.output_error = Some(e);
-            E::custom("the output failed")
-        })
-    }
-
     /// Element `index` of a FeatureCollection's `features`: its polygons, or why not.
-    fn feature<E: de::Error>(&mut self, index: usize, value: &Value) -> Result<(), E> {
+    fn feature(&mut self, index: usize, node: Node) -> io::Result<()> {
         let mut polygons = Vec::new();
-        match collection_feature(value, &mut polygons) {
-            Ok(()) => {
-                for polygon in polygons {
-                    let result = self.polygon(polygon);
-                    self.keep(result)?;
-                }
-                Ok(())
-            }
-            Err(failure) => {
-                let error = ParseError::new(failure.within("feature", index).to_string());
-                let result = self.fail(error);
-                self.keep(result)
-            }
+        match collection_feature(node, &mut polygons) {
+            Ok(()) => polygons
+                .into_iter()
+                .try_for_each(|polygon| self.polygon(polygon)),
+            Err(failure) => self.fail(ParseError::new(
+                failure.within("feature", index).to_string(),
+            )),
         }
     }
 
-    /// A whole top-level value: its polygons are pushed; `Some(message)` when it has none.
-    fn value<E: de::Error>(&mut self, value: &Value) -> Result<Option<String>, E> {
-        let mut polygons = Vec::new();
-        match top_level(value, &mut polygons) {
-            Ok(()) => {
-                for polygon in polygons {
-                    let result = self.polygon(polygon);
-                    self.keep(result)?;
-                }
-                Ok(None)
+    /// A whole top-level value (its features already pushed if it streamed them): its polygons
+    /// are pushed; `Some(message)` when it has none.
+    fn value(&mut self, node: Node) -> io::Result<Option<String>> {
+        let collection = |object: &Object| {
+            type_of(object).is_ok_and(|kind| kind == "FeatureCollection")
+                && matches!(object.features, Some(Node::List(_)))
+        };
+        match node {
+            // Only a member named twice can be wrong with the object itself.
+            Node::Object(object) if matches!(object.features, Some(Node::Streamed)) => {
+                Ok(type_of(&object).err().map(|failure| failure.to_string()))
             }
-            Err(failure) => Ok(Some(failure.to_string())),
-        }
-    }
-}
-
-/// One top-level value; yields the message of its failure, if it is not a polygon at all.
-struct TopLevel<'s, 'e> {
-    sink: &'s mut Sink<'e>,
-}
-
-impl<'de> DeserializeSeed<'de> for TopLevel<'_, '_> {
-    type Value = Option<String>;
-
-    fn deserialize<D: de::Deserializer<'de>>(self, d: D) -> Result<Self::Value, D::Error> {
-        d.deserialize_any(self)
-    }
-}
-
-/// The key under which `serde_json` (`arbitrary_precision`) hands a number to `visit_map`.
-const NUMBER_TOKEN: &str = "$serde_json::private::Number";
-
-impl<'de> Visitor<'de> for TopLevel<'_, '_> {
-    type Value = Option<String>;
-
-    fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str("a GeoJSON object or an array of rings")
-    }
-
-    fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Self::Value, A::Error> {
-        let mut object = Map::new();
-        let mut streamed = false;
-        while let Some(key) = map.next_key::<String>()? {
-            if key == NUMBER_TOKEN {
-                // Not an object: a bare number at the top level.
-                let digits: String = map.next_value()?;
-                let number = digits.parse().map_err(de::Error::custom)?;
-                return self.sink.value(&Value::Number(number));
-            }
-            let collection =
-                matches!(object.get("type"), Some(Value::String(t)) if t == "FeatureCollection");
-            if key == "features" && collection && !streamed {
-                map.next_value_seed(Features {
-                    sink: &mut *self.sink,
-                })?;
-                streamed = true;
-            } else {
-                let value: Value = map.next_value()?;
-                object.insert(key, value);
-            }
-        }
-        if streamed {
-            return Ok(None);
-        }
-        let collection =
-            matches!(object.get("type"), Some(Value::String(t)) if t == "FeatureCollection");
-        match object.get("features") {
             // `"features"` came before `"type"`: read whole, but judged feature by feature too.
-            Some(Value::Array(features)) if collection => {
-                for (index, feature) in features.iter().enumerate() {
-                    self.sink.feature(index, feature)?;
+            Node::Object(object) if collection(&object) => {
+                if let Some(Node::List(features)) = object.features {
+                    for (index, feature) in features.into_iter().enumerate() {
+                        self.feature(index, feature)?;
+                    }
                 }
                 Ok(None)
             }
-            _ => self.sink.value(&Value::Object(object)),
+            node => {
+                let mut polygons = Vec::new();
+                match top_level(node, &mut polygons) {
+                    Ok(()) => {
+                        for polygon in polygons {
+                            self.polygon(polygon)?;
+                        }
+                        Ok(None)
+                    }
+                    Err(failure) => Ok(Some(failure.to_string())),
+                }
+            }
         }
     }
-
-    fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<Self::Value, A::Error> {
-        let value = Value::deserialize(de::value::SeqAccessDeserializer::new(seq))?;
-        self.sink.value(&value)
-    }
-
-    fn visit_bool<E: de::Error>(self, v: bool) -> Result<Self::Value, E> {
-        self.sink.value(&Value::Bool(v))
-    }
-
-    fn visit_str<E: de::Error>(self, v: &str) -> Result<Self::Value, E> {
-        self.sink.value(&Value::String(v.to_string()))
-    }
-
-    fn visit_unit<E: de::Error>(self) -> Result<Self::Value, E> {
-        self.sink.value(&Value::Null)
-    }
 }
 
-/// A FeatureCollection's `features`, one at a time.
-struct Features<'s, 'e> {
-    sink: &'s mut Sink<'e>,
-}
-
-impl<'de> DeserializeSeed<'de> for Features<'_, '_> {
-    type Value = ();
-
-    fn deserialize<D: de::Deserializer<'de>>(self, d: D) -> Result<(), D::Error> {
-        d.deserialize_seq(self)
-    }
-}
-
-impl<'de> Visitor<'de> for Features<'_, '_> {
-    type Value = ();
-
-    fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str("\"features\" of a FeatureCollection to be an array")
-    }
-
-    fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<(), A::Error> {
-        let mut index = 0;
-        while let Some(feature) = seq.next_element::<Value>()? {
-            self.sink.feature(index, &feature)?;
-            index += 1;
-        }
-        Ok(())
+impl FeatureSink for Sink<'_> {
+    /// Pushes the feature's polygons (or failure); a callback error is kept, and stops reading.
+    fn feature(&mut self, index: usize, feature: Node) -> Result<(), String> {
+        Sink::feature(self, index, feature).map_err(|e| {
+            self.output_error = Some(e);
+            "the output failed".to_string()
+        })
     }
 }
 
@@ -590,13 +499,44 @@ mod tests {
             events(one).0[0].as_ref().unwrap_err(),
             &geojson::read(one).unwrap_err().to_string()
         );
-        for scalar in ["12.50", "\"x\"", "true", "null"] {
+        // Integers too (they once stopped the stream with "invalid type: integer").
+        for scalar in ["12.50", "7", "-3", "\"x\"", "true", "null", "[]"] {
             assert_eq!(
                 events(scalar).0[0].as_ref().unwrap_err(),
                 &geojson::read(scalar).unwrap_err().to_string(),
                 "{scalar}"
             );
         }
+    }
+
+    #[test]
+    fn a_collection_is_judged_as_the_whole_reader_judges_it() {
+        // "features" that are not an array: the whole reader's message, not a syntax error.
+        for features in ["7", "{}", "null"] {
+            let text = format!(r#"{{"type": "FeatureCollection", "features": {features}}}"#);
+            let (got, stop) = events(&text);
+            assert_eq!(stop, None, "{text}");
+            assert_eq!(
+                got[0].as_ref().unwrap_err(),
+                &geojson::read(&text).unwrap_err().to_string()
+            );
+        }
+        // A member named twice after the features were streamed: they stand, the object fails.
+        let text = format!(
+            r#"{{"type": "FeatureCollection", "features": [{{"type": "Feature", "geometry": {A}}}], "features": []}}"#
+        );
+        let (got, stop) = events(&text);
+        assert_eq!(stop, None);
+        assert_eq!(got.len(), 2);
+        assert!(got[0].is_ok());
+        assert_eq!(
+            got[1].as_ref().unwrap_err(),
+            "duplicate \"features\" member: each may appear once in an object"
+        );
+        assert_eq!(
+            geojson::read(&text).unwrap_err().to_string(),
+            "duplicate \"features\" member: each may appear once in an object"
+        );
     }
 
     #[test]

@@ -18,6 +18,7 @@ use crate::geom::decimal::Decimal;
 use std::fmt;
 
 pub mod geojson;
+mod geojson_seed;
 pub mod geojson_stream;
 pub mod vertices;
 pub mod wkt;
