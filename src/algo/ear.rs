@@ -116,6 +116,9 @@ fn is_ear(pts: &[Point], grid: &Grid, p: usize, v: usize, q: usize) -> bool {
     })
 }
 
+/// Up to this many vertices, the grid is a single cell.
+const SMALL: usize = 16;
+
 /// Remaining vertices bucketed in a uniform grid of about n cells.
 struct Grid {
     cells: Vec<Vec<usize>>,
@@ -127,7 +130,12 @@ struct Grid {
 
 impl Grid {
     fn new(pts: &[Point]) -> Grid {
-        let side = (pts.len() as f64).sqrt().ceil().max(1.0) as usize;
+        // A small polygon is one cell: testing its few vertices costs less than bucketing them.
+        let side = if pts.len() <= SMALL {
+            1
+        } else {
+            (pts.len() as f64).sqrt().ceil() as usize
+        };
         let min = Point::new(
             pts.iter().map(|p| p.x).min().unwrap_or(0),
             pts.iter().map(|p| p.y).min().unwrap_or(0),

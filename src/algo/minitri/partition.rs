@@ -75,6 +75,10 @@ pub fn triangulate_pieces(polygon: &Polygon, chosen: &[Degenerate]) -> Vec<[usiz
             })
             .map(|i| face[i])
             .collect();
+        if let [a, b, c] = keep[..] {
+            triangles.push([a, b, c]); // already a triangle (of positive area: a piece)
+            continue;
+        }
         let piece: Vec<Point> = keep.iter().map(|&i| polygon.point(i)).collect();
         triangles.extend(plain(&piece).into_iter().map(|t| t.map(|i| keep[i])));
     }
