@@ -59,7 +59,7 @@ fn hull(c: &mut Criterion) {
     for n in [50, 100, 200, 400] {
         let polygon = common::polygon(&common::star(n, 7));
         group.bench_with_input(BenchmarkId::new("star", n), &polygon, |b, p| {
-            b.iter(|| pseudo_hull::pseudotriangulate(black_box(p), pseudo_hull::DEFAULT_LIMIT))
+            b.iter(|| pseudo_hull::pseudotriangulate(black_box(p)))
         });
     }
     group.finish();

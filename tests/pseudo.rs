@@ -36,7 +36,7 @@ fn check_pseudo(poly: &Polygon, rings: &[Vec<(i64, i64)>]) -> Result<(), TestCas
 }
 
 fn check_hull(poly: &Polygon, rings: &[Vec<(i64, i64)>]) -> Result<(), TestCaseError> {
-    let result = pseudo_hull::pseudotriangulate(poly, pseudo_hull::DEFAULT_LIMIT)
+    let result = pseudo_hull::pseudotriangulate(poly)
         .map_err(|e| TestCaseError::fail(format!("{e} on {rings:?}")))?;
     let report = check(poly, Algorithm::PseudoHull, &result);
     prop_assert!(
@@ -171,8 +171,7 @@ fn the_cases_are_varied() {
         let Some(poly) = polygon_from_rings(&[ring]) else {
             continue;
         };
-        let result =
-            pseudo_hull::pseudotriangulate(&poly, pseudo_hull::DEFAULT_LIMIT).expect("hull");
+        let result = pseudo_hull::pseudotriangulate(&poly).expect("hull");
         let counts = result.hull.expect("counts");
         collinear_hull += usize::from(counts.big_angles > poly.len());
     }

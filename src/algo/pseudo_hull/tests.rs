@@ -1,13 +1,13 @@
 //! Hand-made cases for `pseudo-hull`: counts worked out by hand from Corollary 1 and Euler.
 
-use super::{hull_cycle, pseudotriangulate, DEFAULT_LIMIT};
-use crate::algo::{Algorithm, Pseudotriangulation, TriangulateError};
+use super::{hull_cycle, pseudotriangulate};
+use crate::algo::{Algorithm, Pseudotriangulation};
 use crate::test_support::polygon;
 use crate::verify::pseudo::check;
 use crate::Polygon;
 
 fn solve(p: &Polygon) -> Pseudotriangulation {
-    let result = pseudotriangulate(p, DEFAULT_LIMIT).expect("pseudo-hull");
+    let result = pseudotriangulate(p).expect("pseudo-hull");
     let c = check(p, Algorithm::PseudoHull, &result);
     assert!(c.valid, "{:?}", c.problems);
     result
@@ -68,10 +68,41 @@ fn the_hull_keeps_collinear_points() {
 }
 
 #[test]
-fn too_large_is_an_error() {
-    let p = polygon(&[&[(0, 0), (4, 0), (4, 4), (0, 4)]]);
-    assert_eq!(
-        pseudotriangulate(&p, 3),
-        Err(TriangulateError::PseudoHullTooLarge { n: 4, limit: 3 })
-    );
+fn debug_case() {
+    let p = polygon(&[
+        &[
+            (0, 4),
+            (2, 4),
+            (2, 2),
+            (2, 0),
+            (3, 0),
+            (5, 0),
+            (7, 0),
+            (9, 0),
+            (11, 0),
+            (12, 0),
+            (12, 1),
+            (12, 3),
+            (12, 5),
+            (12, 6),
+            (12, 9),
+            (12, 10),
+            (12, 11),
+            (12, 12),
+            (12, 14),
+            (12, 15),
+            (12, 16),
+            (12, 17),
+            (11, 20),
+            (9, 20),
+            (7, 20),
+            (6, 20),
+            (4, 20),
+            (0, 18),
+            (0, 11),
+        ],
+        &[(3, 16), (4, 16), (4, 18), (2, 18)],
+        &[(9, 14), (10, 15), (8, 15)],
+    ]);
+    solve(&p);
 }
