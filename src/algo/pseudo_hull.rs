@@ -171,6 +171,7 @@ fn construct(
         }
     }
     let mut mesh = Mesh::new(points, &triangles, &fixed);
+    mesh.fatten(None, 10 * triangles.len());
     #[cfg(test)]
     mesh.consistent().expect("initial mesh");
     let mut faces = Vec::new();

@@ -14,7 +14,7 @@
 //! otherwise). Every decision is an exact orientation test; a segment that would pass through a
 //! vertex or cross a fixed edge is refused ([`Broken`]), never drawn.
 
-use crate::geom::kernel::{cross, dot, Point};
+use crate::geom::kernel::{cross, dot, incircle_approx, Point};
 use std::collections::VecDeque;
 
 const NONE: u32 = u32::MAX;
@@ -305,6 +305,49 @@ impl<'a> Mesh<'a> {
         let h = self.half_from(s, e).ok_or(Broken)?;
         self.fix(h);
         Ok(())
+    }
+
+    /// Fattens the triangles, which only makes walks shorter: Lawson's flips of diagonals
+    /// towards the constrained Delaunay triangulation, starting from the diagonals of `start`
+    /// (all triangles when `None`), at most `max_flips`. Whether a flip is ALLOWED is exact (the
+    /// quadrilateral strictly convex, so the result is again a triangulation with the same
+    /// fixed edges); whether it is DESIRABLE is [`incircle_approx`], a heuristic that never
+    /// decides a fact of the answer (hence the bound on the flips, should rounding make them
+    /// cycle).
+    pub(super) fn fatten(&mut self, start: Option<&[usize]>, max_flips: usize) {
+        let mut stack: Vec<Half> = match start {
+            None => (0..self.tv.len() as u32)
+                .flat_map(|t| (0..3u8).map(move |k| Half { t, k }))
+                .collect(),
+            Some(vertices) => vertices
+                .iter()
+                .flat_map(|&v| self.around(v))
+                .flat_map(|h| [h, h.next()])
+                .collect(),
+        };
+        let mut flips = 0;
+        while let Some(h) = stack.pop() {
+            if flips == max_flips {
+                break;
+            }
+            if self.is_fixed(h) {
+                continue;
+            }
+            let Some(g) = self.twin(h) else { continue };
+            let (a, b) = (self.origin(h), self.dest(h));
+            let (c, d) = (self.dest(h.next()), self.dest(g.next()));
+            let [pa, pb, pc, pd] = [a, b, c, d].map(|v| self.point(v));
+            if cross(pc, pa, pd) <= 0 || cross(pd, pb, pc) <= 0 {
+                continue;
+            }
+            if incircle_approx(pa, pb, pc, pd) <= 0.0 {
+                continue;
+            }
+            self.flip(h, g);
+            flips += 1;
+            let (t1, t2) = (h.t, g.t);
+            stack.extend([(t1, 0), (t1, 1), (t2, 0), (t2, 1)].map(|(t, k)| Half { t, k }));
+        }
     }
 
     /// Flips the diagonal of `h` (`a -> b`, triangle `a b c`) and its twin `g` (`b a d`) to
