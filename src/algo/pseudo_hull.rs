@@ -140,6 +140,35 @@ fn construct(
     hull: &[usize],
 ) -> (Option<usize>, Result<Vec<Vec<usize>>, Broken>) {
     let n = polygon.len();
+    let (mut mesh, mut work, guard) = setup(polygon, hull);
+    let mut faces = Vec::new();
+    let mut steps = 0;
+    while let Some((u, v)) = work.pop() {
+        let result = mesh
+            .half_from(u, v)
+            .filter(|&h| mesh.is_fixed(h))
+            .ok_or(Broken)
+            .and_then(|h| {
+                if mesh.is_done(h) {
+                    return Ok(());
+                }
+                steps += 1;
+                if steps > 2 * n + 2 {
+                    return Err(Broken);
+                }
+                step(&mut mesh, h, guard, &mut faces, &mut work)
+            });
+        if let Err(e) = result {
+            return (Some(mesh.fixed_edges), Err(e));
+        }
+    }
+    (Some(mesh.fixed_edges), Ok(faces))
+}
+
+/// Step 1: the triangulated hull with L and the hull edges fixed, a half-edge `(u, v)` of the
+/// outer boundary of each face (the face on its left), and a bound on any walk.
+fn setup<'a>(polygon: &'a Polygon, hull: &[usize]) -> (Mesh<'a>, Vec<(usize, usize)>, usize) {
+    let n = polygon.len();
     let points = polygon.points();
     let mut triangles = plain_polygon(polygon);
     let mut fixed: Vec<(usize, usize)> = (0..n).map(|i| (i, polygon.next(i))).collect();
@@ -174,29 +203,8 @@ fn construct(
     mesh.fatten(None, 10 * triangles.len());
     #[cfg(test)]
     mesh.consistent().expect("initial mesh");
-    let mut faces = Vec::new();
     let guard = 8 * triangles.len() + 16;
-    let mut steps = 0;
-    while let Some((u, v)) = work.pop() {
-        let result = mesh
-            .half_from(u, v)
-            .filter(|&h| mesh.is_fixed(h))
-            .ok_or(Broken)
-            .and_then(|h| {
-                if mesh.is_done(h) {
-                    return Ok(());
-                }
-                steps += 1;
-                if steps > 2 * n + 2 {
-                    return Err(Broken);
-                }
-                step(&mut mesh, h, guard, &mut faces, &mut work)
-            });
-        if let Err(e) = result {
-            return (Some(mesh.fixed_edges), Err(e));
-        }
-    }
-    (Some(mesh.fixed_edges), Ok(faces))
+    (mesh, work, guard)
 }
 
 /// Whether the boundary turns at a corner (an angle below pi in the face on the left) between
