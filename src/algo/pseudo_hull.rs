@@ -26,16 +26,18 @@
 //!
 //! How S is found: the hull is triangulated once (the polygon with its holes by
 //! [`crate::algo::plain_polygon`], each hole and pocket by [`crate::algo::plain`]; O(n log n)),
-//! with the edges of L and of the hull marked fixed ([`mesh`]). Walking along A1 just inside F
-//! crosses, at each inner vertex of A1, the diagonals inside F's angle there, clockwise; with
-//! immediate back-and-forth crossings of one diagonal cancelled, this is the sleeve of
-//! Hershberger & Snoeyink, in which the funnel algorithm ([`funnel`]) gives S, a taut string in
-//! the universal cover of F (so a triangle met twice, after going round an obstacle, is two
-//! triangles there). S's new edges are then inserted into the triangulation as fixed edges (the
-//! crossed triangles removed, the two sides triangulated again), R's boundary is walked and
-//! marked finished, and each new edge of S, with the rest of F on its left, becomes a place to
-//! continue from. A step starts at such an edge, walks forward along B to the next corner (x2)
-//! and from there to x1 and x3.
+//! with the edges of L and of the hull marked fixed ([`mesh`]), and its triangles fattened by
+//! Lawson flips (a heuristic for speed only: fat triangles make short sleeves). Walking along A1
+//! just inside F crosses, at each inner vertex of A1, the diagonals inside F's angle there,
+//! clockwise; with immediate back-and-forth crossings of one diagonal cancelled, this is the
+//! sleeve of Hershberger & Snoeyink, in which the funnel algorithm ([`funnel`]) gives S, a taut
+//! string in the universal cover of F (so a triangle met twice, after going round an obstacle,
+//! is two triangles there). S's new edges are then made edges of the triangulation by flipping
+//! the diagonals they cross (Sloan's insertion; removing the crossed triangles and filling the
+//! two sides would not do: with holes, a side can surround a hole and touch itself at a vertex)
+//! and fixed, R's boundary is walked and marked finished, and each new edge of S, with the rest
+//! of F on its left, becomes a place to continue from. A step starts at such an edge, walks
+//! forward along B to the next corner (x2) and from there to x1 and x3.
 //!
 //! Why the count is minimum: with N the number of angles of at least pi between neighbouring
 //! fixed edges (the outer angles at hull vertices included), Euler's formula and three corners
@@ -66,14 +68,16 @@
 //!
 //! # Complexity
 //!
-//! O(n log n) for the hull and the first triangulation. A step costs the triangles of F met at
-//! the vertices of A1 (walk and sleeve), O(1) per diagonal in the funnel, and for each new edge
-//! of S the triangles it crosses plus their retriangulation (O(k log k) for k of them). A step
-//! is O(n log n) at worst and there are at most 2n steps, so O(n^2 log n) in the worst case,
-//! reached only when long reflex chains stay on B step after step (a big convex hole, say, whose
-//! side is walked again each time a corner next to it is used). On typical polygons the chains
-//! between corners are short and a step touches few triangles: near-linear, see the README's
-//! benchmarks (random stars and mazes, 10^3 to 10^5 vertices and more). O(n) memory; no size
+//! O(n log n) for the hull and the first triangulation, O(n) expected flips to fatten it. A step
+//! costs the triangles of F met at the vertices of A1 (walk and sleeve, O(n) at worst), O(1) per
+//! diagonal in the funnel, and for each new edge of S the flips that insert it (O(k^2) at worst
+//! for k crossed diagonals, Sloan's bound; about k in practice). There are at most 2n steps, so
+//! the bounds multiply to O(n^3) in the worst case (flips) and O(n^2) without the flips; neither
+//! is approached on typical polygons, where chains between corners are short, degrees small and
+//! a step touches a few dozen triangles: on random stars and mazes the time per vertex grows
+//! only slowly from 10^3 to 10^6 vertices (README, Benchmarks; 10^5 vertices in about 1 s).
+//! Inputs that do repeat work: a long reflex chain staying on B step after step (the side of a
+//! big convex hole, walked again whenever a corner next to it is used). O(n) memory; no size
 //! limit.
 
 mod funnel;

@@ -8,11 +8,16 @@
 //! diagonals; [`Mesh::next_boundary`] walks a face's boundary (face on the left), turning
 //! clockwise around each vertex through the face's triangles, and reports the diagonals crossed.
 //!
-//! Segment insertion ([`Mesh::insert`]) is the classic insertion of a constraint (de Berg et al.,
-//! *Computational Geometry*, §9.3): the triangles the segment crosses are removed and the two
-//! polygons on its sides triangulated again (`plain`: ear clipping when small, monotone pieces
-//! otherwise). Every decision is an exact orientation test; a segment that would pass through a
-//! vertex or cross a fixed edge is refused ([`Broken`]), never drawn.
+//! Segment insertion ([`Mesh::insert`]): the diagonals the segment crosses are found by walking
+//! along it, then flipped while their quadrilateral is strictly convex until the segment is an
+//! edge (Sloan 1993; O(k^2) flips at worst for k crossed diagonals). Removing the crossed
+//! triangles and triangulating the two sides again would be quicker but is wrong here: with
+//! holes, the triangles crossed on one side can surround a hole and touch at a vertex (seen in the
+//! property tests), which no triangulator of simple polygons accepts. Every decision is an exact
+//! orientation test; a segment that would pass through a vertex or cross a fixed edge, or flips
+//! that get stuck, are refused ([`Broken`]), never drawn. [`Mesh::fatten`] flips diagonals
+//! towards the Delaunay triangulation with the kernel's floating-point in-circle heuristic,
+//! which only steers speed (the allowed flips are decided exactly).
 
 use crate::geom::kernel::{cross, dot, incircle_approx, Point};
 use std::collections::VecDeque;
