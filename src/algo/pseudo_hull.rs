@@ -204,7 +204,7 @@ fn setup<'a>(polygon: &'a Polygon, hull: &[usize]) -> (Mesh<'a>, Vec<(usize, usi
         }
     }
     let mut mesh = Mesh::new(points, &triangles, &fixed);
-    mesh.fatten(None, 10 * triangles.len());
+    mesh.fatten(10 * triangles.len());
     #[cfg(test)]
     mesh.consistent().expect("initial mesh");
     let guard = 8 * triangles.len() + 16;

@@ -20,7 +20,8 @@
 //! which only steers speed (the allowed flips are decided exactly).
 
 use crate::geom::kernel::{cross, dot, incircle_approx, Point};
-use std::collections::VecDeque;
+use std::collections::{HashMap, VecDeque};
+use std::hash::{BuildHasherDefault, Hasher};
 
 const NONE: u32 = u32::MAX;
 
@@ -51,6 +52,33 @@ impl Half {
     }
 }
 
+fn key(from: usize, to: usize) -> u64 {
+    ((from as u64) << 32) | to as u64
+}
+
+/// A multiplicative hash for the `u64` keys of half-edges (vertex numbers are not adversarial
+/// input: they are positions in the polygon).
+#[derive(Default)]
+struct KeyHasher(u64);
+
+impl Hasher for KeyHasher {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.0 = (self.0 ^ u64::from(b)).wrapping_mul(0x100_0000_01b3);
+        }
+    }
+
+    fn write_u64(&mut self, x: u64) {
+        self.0 = (x ^ (x >> 29)).wrapping_mul(0x9e37_79b9_7f4a_7c15);
+    }
+}
+
+type Halves = HashMap<u64, Half, BuildHasherDefault<KeyHasher>>;
+
 /// Flag bits per triangle: bit `k` edge `k` fixed, bit `3 + k` the face on the left of edge `k`
 /// finished (a pseudotriangle already reported).
 const DONE: u8 = 8;
@@ -62,6 +90,8 @@ pub(super) struct Mesh<'a> {
     flags: Vec<u8>,
     /// A live triangle at each vertex.
     vt: Vec<u32>,
+    /// Every half-edge by its ends (`from << 32 | to`).
+    halves: Halves,
     /// The number of fixed edges.
     pub(super) fixed_edges: usize,
 }
@@ -81,14 +111,21 @@ impl<'a> Mesh<'a> {
             tn: vec![[NONE; 3]; m],
             flags: vec![0; m],
             vt: vec![NONE; pts.len()],
+            halves: Halves::with_capacity_and_hasher(3 * m, Default::default()),
             fixed_edges: 0,
         };
+        for t in 0..m as u32 {
+            mesh.index(t);
+        }
         // Link twins by sorting the half-edges by their undirected edge.
-        let key = |a: u32, b: u32| (u64::from(a.min(b)) << 32) | u64::from(a.max(b));
+        let undirected = |a: u32, b: u32| (u64::from(a.min(b)) << 32) | u64::from(a.max(b));
         let mut halves: Vec<(u64, u32)> = Vec::with_capacity(3 * m);
         for (t, tri) in mesh.tv.iter().enumerate() {
             for k in 0..3 {
-                halves.push((key(tri[k], tri[(k + 1) % 3]), (t as u32) << 2 | k as u32));
+                halves.push((
+                    undirected(tri[k], tri[(k + 1) % 3]),
+                    (t as u32) << 2 | k as u32,
+                ));
             }
         }
         halves.sort_unstable();
@@ -194,15 +231,29 @@ impl<'a> Mesh<'a> {
 
     /// The half-edge `u -> v`, if it is an edge with a triangle on its left.
     pub(super) fn half_from(&self, u: usize, v: usize) -> Option<Half> {
-        self.around(u).into_iter().find(|&h| self.dest(h) == v)
+        self.halves.get(&key(u, v)).copied()
     }
 
     /// Whether `u v` is a fixed edge.
     pub(super) fn is_fixed_edge(&self, u: usize, v: usize) -> bool {
-        self.around(u).into_iter().any(|h| {
-            (self.dest(h) == v && self.is_fixed(h))
-                || (self.dest(h.next()) == v && self.is_fixed(h.prev()))
-        })
+        self.half_from(u, v)
+            .or_else(|| self.half_from(v, u))
+            .is_some_and(|h| self.is_fixed(h))
+    }
+
+    /// Lists the half-edges of triangle `t` by their ends.
+    fn index(&mut self, t: u32) {
+        for k in 0..3u8 {
+            let h = Half { t, k };
+            self.halves.insert(key(self.origin(h), self.dest(h)), h);
+        }
+    }
+
+    fn unindex(&mut self, t: u32) {
+        for k in 0..3u8 {
+            let h = Half { t, k };
+            self.halves.remove(&key(self.origin(h), self.dest(h)));
+        }
     }
 
     /// The next fixed half-edge along the boundary of the face on the left of the fixed
@@ -237,6 +288,10 @@ impl<'a> Mesh<'a> {
     /// Refused if it passes through a vertex or crosses a fixed edge.
     pub(super) fn insert(&mut self, s: usize, e: usize) -> Result<(), Broken> {
         let (ps, pe) = (self.point(s), self.point(e));
+        if let Some(h) = self.half_from(s, e).or_else(|| self.half_from(e, s)) {
+            self.fix(h);
+            return Ok(());
+        }
         let mut start = None;
         for h in self.around(s) {
             let (q, r) = (self.dest(h), self.dest(h.next()));
@@ -313,23 +368,15 @@ impl<'a> Mesh<'a> {
     }
 
     /// Fattens the triangles, which only makes walks shorter: Lawson's flips of diagonals
-    /// towards the constrained Delaunay triangulation, starting from the diagonals of `start`
-    /// (all triangles when `None`), at most `max_flips`. Whether a flip is ALLOWED is exact (the
+    /// towards the constrained Delaunay triangulation, at most `max_flips`. Whether a flip is ALLOWED is exact (the
     /// quadrilateral strictly convex, so the result is again a triangulation with the same
     /// fixed edges); whether it is DESIRABLE is [`incircle_approx`], a heuristic that never
     /// decides a fact of the answer (hence the bound on the flips, should rounding make them
     /// cycle).
-    pub(super) fn fatten(&mut self, start: Option<&[usize]>, max_flips: usize) {
-        let mut stack: Vec<Half> = match start {
-            None => (0..self.tv.len() as u32)
-                .flat_map(|t| (0..3u8).map(move |k| Half { t, k }))
-                .collect(),
-            Some(vertices) => vertices
-                .iter()
-                .flat_map(|&v| self.around(v))
-                .flat_map(|h| [h, h.next()])
-                .collect(),
-        };
+    pub(super) fn fatten(&mut self, max_flips: usize) {
+        let mut stack: Vec<Half> = (0..self.tv.len() as u32)
+            .flat_map(|t| (0..3u8).map(move |k| Half { t, k }))
+            .collect();
         let mut flips = 0;
         while let Some(h) = stack.pop() {
             if flips == max_flips {
@@ -373,8 +420,12 @@ impl<'a> Mesh<'a> {
         let ad = side(self, g.next());
         let db = side(self, g.prev());
         let bc = side(self, h.next());
+        self.unindex(t1);
+        self.unindex(t2);
         self.tv[t1 as usize] = [c as u32, a as u32, d as u32];
         self.tv[t2 as usize] = [d as u32, b as u32, c as u32];
+        self.index(t1);
+        self.index(t2);
         self.tn[t1 as usize] = [ca.0, ad.0, t2];
         self.tn[t2 as usize] = [db.0, bc.0, t1];
         let bits = |x: (u32, bool, bool), k: u8| (u8::from(x.1) << k) | (u8::from(x.2) * DONE << k);
