@@ -428,7 +428,8 @@ impl<'a> Mesh<'a> {
         self.index(t2);
         self.tn[t1 as usize] = [ca.0, ad.0, t2];
         self.tn[t2 as usize] = [db.0, bc.0, t1];
-        let bits = |x: (u32, bool, bool), k: u8| (u8::from(x.1) << k) | (u8::from(x.2) * DONE << k);
+        let bits =
+            |x: (u32, bool, bool), k: u8| (u8::from(x.1) << k) | ((u8::from(x.2) * DONE) << k);
         self.flags[t1 as usize] = bits(ca, 0) | bits(ad, 1);
         self.flags[t2 as usize] = bits(db, 0) | bits(bc, 1);
         // The neighbours across a -> d and b -> c changed triangle.
