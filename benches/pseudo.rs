@@ -7,10 +7,11 @@
 //!   (Theorem 5); throughput is reported in vertices.
 //! - group `pseudo_end_to_end`: the same with the O(n log n) plain triangulation included, as
 //!   `--algorithm pseudo` runs it.
-//! - group `pseudo_hull`: the O(n^3) edge search of `pseudo-hull` on star polygons of 50 to 400
-//!   vertices (time should grow about 8 times per doubling).
+//! - group `pseudo_hull`: Theorem 6's construction (`pseudo_hull::pseudotriangulate`, hull,
+//!   first triangulation and all steps) on random stars and mazes of 10^3 to 3 * 10^5 vertices
+//!   (about 1 s at 10^5, 3 s at 3 * 10^5; see the module docs of `pseudo_hull`).
 //!
-//! Run: `cargo bench --bench pseudo` (about 3 minutes).
+//! Run: `cargo bench --bench pseudo` (about 6 minutes; `-- pseudo_hull` for the last group).
 
 mod common;
 
@@ -56,11 +57,19 @@ fn hull(c: &mut Criterion) {
     let mut group = c.benchmark_group("pseudo_hull");
     group.sampling_mode(SamplingMode::Flat);
     group.sample_size(10);
-    for n in [50, 100, 200, 400] {
-        let polygon = common::polygon(&common::star(n, 7));
-        group.bench_with_input(BenchmarkId::new("star", n), &polygon, |b, p| {
-            b.iter(|| pseudo_hull::pseudotriangulate(black_box(p), pseudo_hull::DEFAULT_LIMIT))
-        });
+    for shape in [Shape::Star, Shape::Maze] {
+        for n in [1_000, 10_000, 100_000, 300_000] {
+            let polygon = common::polygon(&shape.points(n, 7));
+            group.throughput(Throughput::Elements(polygon.len() as u64));
+            group.measurement_time(Duration::from_secs(match n {
+                300_000 => 40,
+                100_000 => 12,
+                _ => 3,
+            }));
+            group.bench_with_input(BenchmarkId::new(shape.name(), n), &polygon, |b, p| {
+                b.iter(|| pseudo_hull::pseudotriangulate(black_box(p)).expect("pseudo-hull"))
+            });
+        }
     }
     group.finish();
 }

@@ -261,7 +261,7 @@ pub fn solve(polygon: &Polygon, options: &Options) -> Result<Solved, Error> {
 fn solve_pseudo(polygon: &Polygon, options: &Options) -> Result<Solved, Error> {
     let triangulation = ear::triangulate(polygon)?;
     let mut result = if options.algorithm == Algorithm::PseudoHull {
-        pseudo_hull::pseudotriangulate(polygon, pseudo_hull::DEFAULT_LIMIT)?
+        pseudo_hull::pseudotriangulate(polygon)?
     } else {
         pseudo::minimal(polygon, &triangulation.triangles)
     };

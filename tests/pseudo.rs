@@ -6,9 +6,10 @@
 //!   a simple counter-clockwise polygon with exactly three corners, no removable edge or triangle
 //!   by Theorem 2, the edge count); Euler's formula for a region with w holes,
 //!   faces = edges - n + 1 - w; at most as many faces as the n + 2w - 2 triangles started from;
-//! - `pseudo-hull`: the checker accepts every result (partition of the hull, three corners per
-//!   face, every polygon edge kept, 2n - N - 2 faces); in general position exactly Corollary 1's
-//!   2n - r - 2 = n - 2 faces and 3n - r - 3 = 2n - 3 edges, with r = N = n;
+//! - `pseudo-hull` (Theorem 6's construction): the checker accepts every result (partition of the
+//!   hull, three corners per face, every polygon edge kept, 2n - N - 2 faces); in general
+//!   position exactly Corollary 1's 2n - r - 2 = n - 2 faces and 3n - r - 3 = 2n - 3 edges, with
+//!   r = N = n; also on random stars with 1-3 triangular holes (strings wrapping holes);
 //! - Lemma 3: a random pseudotriangle under a random triangulation comes back as one face.
 
 use crate::property::{config, general, holed, holed_recipe, rectilinear, without_flat};
@@ -36,7 +37,7 @@ fn check_pseudo(poly: &Polygon, rings: &[Vec<(i64, i64)>]) -> Result<(), TestCas
 }
 
 fn check_hull(poly: &Polygon, rings: &[Vec<(i64, i64)>]) -> Result<(), TestCaseError> {
-    let result = pseudo_hull::pseudotriangulate(poly, pseudo_hull::DEFAULT_LIMIT)
+    let result = pseudo_hull::pseudotriangulate(poly)
         .map_err(|e| TestCaseError::fail(format!("{e} on {rings:?}")))?;
     let report = check(poly, Algorithm::PseudoHull, &result);
     prop_assert!(
@@ -132,6 +133,49 @@ proptest! {
     }
 }
 
+/// A random star around (1000, 1000) (radii 600..1000, angles sorted exactly by the cross
+/// product within each half-turn) with 1-3 random triangular holes in boxes near the centre: wide
+/// coordinates, so mostly in general position, and holes for the strings to wrap.
+fn star_with_holes(seed: u64) -> Vec<Vec<(i64, i64)>> {
+    let mut rnd = crate::util::xorshift(seed | 1);
+    let k = 8 + rnd(24) as usize;
+    let mut outer: Vec<(i64, i64)> = (0..k)
+        .map(|_| {
+            let (a, r) = (rnd(360_000) as f64 / 1000.0, 600.0 + rnd(400) as f64);
+            let t = a.to_radians();
+            (1000 + (r * t.cos()) as i64, 1000 + (r * t.sin()) as i64)
+        })
+        .collect();
+    let c = Point::new(1000, 1000);
+    outer.sort_by(|&(ax, ay), &(bx, by)| {
+        minitri::geom::kernel::cmp_angle(c, Point::new(ax, ay), Point::new(bx, by))
+    });
+    outer.dedup();
+    let mut rings = vec![outer];
+    for _ in 0..1 + rnd(3) {
+        let (x, y) = (700 + rnd(500), 700 + rnd(500));
+        let mut t: Vec<(i64, i64)> = (0..3).map(|_| (x + rnd(120), y + rnd(120))).collect();
+        let [a, b, d] = [t[0], t[1], t[2]].map(|(x, y)| Point::new(x, y));
+        if cross(a, b, d) < 0 {
+            t.reverse();
+        }
+        rings.push(t);
+    }
+    rings
+}
+
+proptest! {
+    #![proptest_config(config(1_000, 0x5eed_0706))]
+    #[test]
+    fn stars_with_holes(seed in any::<u64>()) {
+        let rings = star_with_holes(seed);
+        // Invalid draws (a hole crossing the ring or another hole) are skipped.
+        if let Some(poly) = polygon_from_rings(&rings) {
+            check_hull(&poly, &rings)?;
+        }
+    }
+}
+
 /// The random cases are not trivial: general-position polygons of many sizes, `pseudo` merges
 /// faces (faces with more than three vertices), and `pseudo-hull` meets collinear input (more
 /// angles of at least pi than vertices).
@@ -171,15 +215,19 @@ fn the_cases_are_varied() {
         let Some(poly) = polygon_from_rings(&[ring]) else {
             continue;
         };
-        let result =
-            pseudo_hull::pseudotriangulate(&poly, pseudo_hull::DEFAULT_LIMIT).expect("hull");
+        let result = pseudo_hull::pseudotriangulate(&poly).expect("hull");
         let counts = result.hull.expect("counts");
         collinear_hull += usize::from(counts.big_angles > poly.len());
     }
-    eprintln!("general {general_count}, n >= 12: {big}, merged faces {merged}, collinear hull {collinear_hull}");
+    let holed_stars = (1..=200u64)
+        .filter_map(|seed| polygon_from_rings(&star_with_holes(seed)))
+        .filter(|p| p.holes() >= 1 && general_position(p))
+        .count();
+    eprintln!("general {general_count}, n >= 12: {big}, merged faces {merged}, collinear hull {collinear_hull}, holed stars {holed_stars}");
     assert!(general_count >= 200 && big >= 50, "{general_count} {big}");
     assert!(merged >= 100, "{merged}");
     assert!(collinear_hull >= 100, "{collinear_hull}");
+    assert!(holed_stars >= 100, "{holed_stars}");
 }
 
 // ---------- the command line ----------

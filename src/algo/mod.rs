@@ -260,16 +260,9 @@ pub enum TriangulateError {
         /// Estimated time, in words.
         time: String,
     },
-    /// The polygon is too large for the O(n^3) search of `pseudo-hull`.
-    #[error("the pseudo-hull search takes time n^3 and this polygon has {n} vertices, above its limit of {limit}")]
-    PseudoHullTooLarge {
-        /// Number of vertices (all rings).
-        n: usize,
-        /// The limit.
-        limit: usize,
-    },
-    /// The `pseudo-hull` search stopped short of a pseudotriangulation (collinear points).
-    #[error("the pseudo-hull search found no further edge keeping every angle of at least pi after {edges} edges, short of the {target} a minimum pseudotriangulation has (collinear vertices; the paper assumes general position)")]
+    /// A self-check of the `pseudo-hull` construction failed (see `algo::pseudo_hull`; not
+    /// seen in the tests).
+    #[error("the pseudo-hull construction (Theorem 6) failed a self-check after {edges} edges, short of the {target} a minimum pseudotriangulation has; no answer is given rather than a wrong one")]
     PseudoHullIncomplete {
         /// Edges found.
         edges: usize,

@@ -145,6 +145,20 @@ impl Polygon {
         }
     }
 
+    /// One ring of grid points as they are (no validation, no winding change; ids 0, 1, ..), for
+    /// checking a cycle with [`crate::geom::validate::errors`] (`verify::pseudo`'s faces).
+    pub(crate) fn ring_of_points(points: Vec<Point>, grid: Grid) -> Polygon {
+        let k = points.len();
+        Polygon {
+            points,
+            ids: (0..k).collect(),
+            ring_starts: vec![0, k],
+            ring_of: vec![0; k],
+            input_vertices: k,
+            grid,
+        }
+    }
+
     /// Grid conversion, numbering, duplicate removal and winding, without the sweep.
     pub(crate) fn build(raw: &RawPolygon) -> Result<(Polygon, Vec<Warning>), InvalidPolygon> {
         if raw.rings.is_empty() {

@@ -1,5 +1,6 @@
 //! Independent checks of a pseudotriangulation (`--algorithm pseudo` and `pseudo-hull`), exact,
-//! sharing no code with the algorithms (kernel and polygon accessors only).
+//! sharing no code with the algorithms (kernel, polygon accessors and, for big faces, the
+//! validation sweep of the input only).
 //!
 //! Input contract: a valid [`Polygon`] and ANY [`Pseudotriangulation`] (indices may be out of
 //! range or repeated; nothing here panics on them). The region is the polygon for
@@ -26,9 +27,9 @@
 //!    [`crate::algo::pseudo_hull`]); in general position N = r = n and this is Corollary 1's
 //!    2n - r - 2.
 //!
-//! Complexity: O(F log F) for the chain and the adjacency (F: total face size), plus the
-//! simplicity test, O(k^2) for a face of k vertices in the worst case (edges compared only when
-//! their x ranges overlap); for `pseudo-hull`, O(n log n) for the hull.
+//! Complexity: O(F log F) for the chain and the adjacency (F: total face size), including the
+//! simplicity test (pair by pair for faces of at most 32 vertices, by the exact sweep of
+//! `geom::validate` above); for `pseudo-hull`, O(n log n) for the hull.
 
 use super::{check_sides_cancel, plural, Check, Problems};
 use crate::algo::{Algorithm, Pseudotriangulation};
@@ -244,7 +245,7 @@ fn face_ok(
     if area.signum() <= 0 {
         problems.add(|| format!("{} is not counter-clockwise", name()));
     }
-    if !simple(&(0..m).map(pt).collect::<Vec<_>>()) {
+    if !simple(polygon, (0..m).map(pt).collect()) {
         problems.add(|| format!("{} is not a simple polygon", name()));
         return false;
     }
@@ -272,8 +273,15 @@ fn face_ok(
 }
 
 /// Whether the closed polyline through `pts` (distinct points) is simple: consecutive edges meet
-/// only at their common end (no fold-back), others not at all.
-fn simple(pts: &[Point]) -> bool {
+/// only at their common end (no fold-back), others not at all. Up to [`SMALL_FACE`] points by
+/// comparing edges whose x ranges overlap (O(k^2) at worst, quickest for small faces); above, by
+/// the exact sweep of [`crate::geom::validate`] on the cycle as one ring (O(k log k)).
+fn simple(polygon: &Polygon, pts: Vec<Point>) -> bool {
+    if pts.len() > SMALL_FACE {
+        let ring = Polygon::ring_of_points(pts, *polygon.grid());
+        return crate::geom::validate::errors(&ring).is_empty();
+    }
+    let pts = &pts[..];
     let m = pts.len();
     let edge = |i: usize| (pts[i], pts[(i + 1) % m]);
     for i in 0..m {
@@ -307,6 +315,9 @@ fn simple(pts: &[Point]) -> bool {
     }
     true
 }
+
+/// The largest face whose simplicity is tested pair by pair.
+const SMALL_FACE: usize = 32;
 
 /// The convex hull's boundary, counter-clockwise, every point on it included (written again
 /// here, apart from the algorithm's).
@@ -477,6 +488,31 @@ mod tests {
         );
         let nonsense = faces(&[(&[0, 9, 1], &[]), (&[0, 0, 1], &[])], 5);
         assert_eq!(problems(&p, Algorithm::Pseudo, &nonsense).len(), 2);
+    }
+
+    #[test]
+    fn a_big_face_is_tested_by_the_sweep() {
+        // A pseudotriangle of 42 vertices (above the pair-by-pair limit): corners (0, 0),
+        // (1000, 0), (500, 2000); the bottom side bends inwards along y = i (40 - i) at
+        // x = 25 i, a constant second difference of -2, so every vertex on it is reflex.
+        let mut ring: Vec<(i64, i64)> = vec![(0, 0)];
+        ring.extend((1..40).map(|i| (25 * i, i * (40 - i))));
+        ring.extend([(1000, 0), (500, 2000)]);
+        let p = polygon(&[&ring]);
+        let n = p.len();
+        assert_eq!(n, 42);
+        let whole: Vec<usize> = (0..n).collect();
+        let one = faces(&[(&whole, &[0, 40, 41])], n);
+        assert!(problems(&p, Algorithm::Pseudo, &one).is_empty());
+        // The same vertices with two neighbours swapped: the cycle crosses itself.
+        let mut crossed = whole.clone();
+        crossed.swap(5, 6);
+        let bad = faces(&[(&crossed, &[0, 40, 41])], n);
+        let found = problems(&p, Algorithm::Pseudo, &bad);
+        assert!(
+            found.iter().any(|m| m.contains("not a simple polygon")),
+            "{found:?}"
+        );
     }
 
     #[test]

@@ -1,0 +1,474 @@
+//! A triangulation of the convex hull under edits, for the construction of Theorem 6: triangles
+//! with neighbour links, some edges **fixed** (the segments of L, the hull edges and every edge
+//! of a shortest path added so far: the edges of the pseudotriangulation being built), the others
+//! plain diagonals that only serve to walk the faces.
+//!
+//! A half-edge is edge `k` of triangle `t`, from its vertex `k` to its vertex `k + 1`, with `t`
+//! on its left. The faces of the pseudotriangulation are the unions of triangles joined across
+//! diagonals; [`Mesh::next_boundary`] walks a face's boundary (face on the left), turning
+//! clockwise around each vertex through the face's triangles, and reports the diagonals crossed.
+//!
+//! Segment insertion ([`Mesh::insert`]): the diagonals the segment crosses are found by walking
+//! along it, then flipped while their quadrilateral is strictly convex until the segment is an
+//! edge (Sloan 1993; O(k^2) flips at worst for k crossed diagonals). Removing the crossed
+//! triangles and triangulating the two sides again would be quicker but is wrong here: with
+//! holes, the triangles crossed on one side can surround a hole and touch at a vertex (seen in the
+//! property tests), which no triangulator of simple polygons accepts. Every decision is an exact
+//! orientation test; a segment that would pass through a vertex or cross a fixed edge, or flips
+//! that get stuck, are refused ([`Broken`]), never drawn. [`Mesh::fatten`] flips diagonals
+//! towards the Delaunay triangulation with the kernel's floating-point in-circle heuristic,
+//! which only steers speed (the allowed flips are decided exactly).
+
+use crate::geom::kernel::{cross, dot, incircle_approx, Point};
+use std::collections::{HashMap, VecDeque};
+use std::hash::{BuildHasherDefault, Hasher};
+
+const NONE: u32 = u32::MAX;
+
+/// An inconsistency the construction must not meet (see the module docs of `pseudo_hull`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) struct Broken;
+
+/// Edge `k` of triangle `t` (its vertex `k` to its vertex `k + 1`, the triangle on its left).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) struct Half {
+    t: u32,
+    k: u8,
+}
+
+impl Half {
+    fn next(self) -> Half {
+        Half {
+            t: self.t,
+            k: (self.k + 1) % 3,
+        }
+    }
+
+    fn prev(self) -> Half {
+        Half {
+            t: self.t,
+            k: (self.k + 2) % 3,
+        }
+    }
+}
+
+fn key(from: usize, to: usize) -> u64 {
+    ((from as u64) << 32) | to as u64
+}
+
+/// A multiplicative hash for the `u64` keys of half-edges (vertex numbers are not adversarial
+/// input: they are positions in the polygon).
+#[derive(Default)]
+struct KeyHasher(u64);
+
+impl Hasher for KeyHasher {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.0 = (self.0 ^ u64::from(b)).wrapping_mul(0x100_0000_01b3);
+        }
+    }
+
+    fn write_u64(&mut self, x: u64) {
+        self.0 = (x ^ (x >> 29)).wrapping_mul(0x9e37_79b9_7f4a_7c15);
+    }
+}
+
+type Halves = HashMap<u64, Half, BuildHasherDefault<KeyHasher>>;
+
+/// Flag bits per triangle: bit `k` edge `k` fixed, bit `3 + k` the face on the left of edge `k`
+/// finished (a pseudotriangle already reported).
+const DONE: u8 = 8;
+
+pub(super) struct Mesh<'a> {
+    pts: &'a [Point],
+    tv: Vec<[u32; 3]>,
+    tn: Vec<[u32; 3]>,
+    flags: Vec<u8>,
+    /// A live triangle at each vertex.
+    vt: Vec<u32>,
+    /// Every half-edge by its ends (`from << 32 | to`).
+    halves: Halves,
+    /// The number of fixed edges.
+    pub(super) fixed_edges: usize,
+}
+
+impl<'a> Mesh<'a> {
+    /// The mesh of `triangles` (counter-clockwise, covering the hull of `pts` exactly), with the
+    /// undirected edges `fixed` fixed (each an edge of some triangle).
+    pub(super) fn new(
+        pts: &'a [Point],
+        triangles: &[[usize; 3]],
+        fixed: &[(usize, usize)],
+    ) -> Self {
+        let m = triangles.len();
+        let mut mesh = Mesh {
+            pts,
+            tv: triangles.iter().map(|t| t.map(|v| v as u32)).collect(),
+            tn: vec![[NONE; 3]; m],
+            flags: vec![0; m],
+            vt: vec![NONE; pts.len()],
+            halves: Halves::with_capacity_and_hasher(3 * m, Default::default()),
+            fixed_edges: 0,
+        };
+        for t in 0..m as u32 {
+            mesh.index(t);
+        }
+        // Link twins by sorting the half-edges by their undirected edge.
+        let undirected = |a: u32, b: u32| (u64::from(a.min(b)) << 32) | u64::from(a.max(b));
+        let mut halves: Vec<(u64, u32)> = Vec::with_capacity(3 * m);
+        for (t, tri) in mesh.tv.iter().enumerate() {
+            for k in 0..3 {
+                halves.push((
+                    undirected(tri[k], tri[(k + 1) % 3]),
+                    (t as u32) << 2 | k as u32,
+                ));
+            }
+        }
+        halves.sort_unstable();
+        for pair in halves.windows(2) {
+            if pair[0].0 == pair[1].0 {
+                let (a, b) = (pair[0].1, pair[1].1);
+                mesh.tn[(a >> 2) as usize][(a & 3) as usize] = b >> 2;
+                mesh.tn[(b >> 2) as usize][(b & 3) as usize] = a >> 2;
+            }
+        }
+        for (t, tri) in mesh.tv.iter().enumerate() {
+            for &v in tri {
+                mesh.vt[v as usize] = t as u32;
+            }
+        }
+        for &(a, b) in fixed {
+            if let Some(h) = mesh.half_from(a, b) {
+                mesh.fix(h);
+            }
+        }
+        mesh
+    }
+
+    pub(super) fn origin(&self, h: Half) -> usize {
+        self.tv[h.t as usize][h.k as usize] as usize
+    }
+
+    pub(super) fn dest(&self, h: Half) -> usize {
+        self.tv[h.t as usize][(h.k as usize + 1) % 3] as usize
+    }
+
+    pub(super) fn point(&self, v: usize) -> Point {
+        self.pts[v]
+    }
+
+    pub(super) fn points(&self) -> &'a [Point] {
+        self.pts
+    }
+
+    /// The same edge the other way, in the triangle on its right (none outside the hull).
+    fn twin(&self, h: Half) -> Option<Half> {
+        let t = self.tn[h.t as usize][h.k as usize];
+        if t == NONE {
+            return None;
+        }
+        let from = self.tv[h.t as usize][(h.k as usize + 1) % 3];
+        let k = self.tv[t as usize].iter().position(|&v| v == from)?;
+        Some(Half { t, k: k as u8 })
+    }
+
+    pub(super) fn is_fixed(&self, h: Half) -> bool {
+        self.flags[h.t as usize] & (1 << h.k) != 0
+    }
+
+    pub(super) fn is_done(&self, h: Half) -> bool {
+        self.flags[h.t as usize] & (DONE << h.k) != 0
+    }
+
+    pub(super) fn set_done(&mut self, h: Half) {
+        self.flags[h.t as usize] |= DONE << h.k;
+    }
+
+    /// Makes the edge of `h` fixed (both sides).
+    fn fix(&mut self, h: Half) {
+        if self.is_fixed(h) {
+            return;
+        }
+        self.fixed_edges += 1;
+        self.flags[h.t as usize] |= 1 << h.k;
+        if let Some(g) = self.twin(h) {
+            self.flags[g.t as usize] |= 1 << g.k;
+        }
+    }
+
+    /// The half-edges leaving `u`, in rotation order (counter-clockwise, starting after a hull
+    /// edge if `u` is on the hull).
+    fn around(&self, u: usize) -> Vec<Half> {
+        let t = self.vt[u];
+        let Some(k) = self.tv[t as usize].iter().position(|&v| v as usize == u) else {
+            return Vec::new();
+        };
+        let start = Half { t, k: k as u8 };
+        // Clockwise to the first half-edge (or all the way round).
+        let mut first = start;
+        while let Some(g) = self.twin(first) {
+            let cw = g.next();
+            if cw == start {
+                break;
+            }
+            first = cw;
+        }
+        let mut out = vec![first];
+        let mut h = first;
+        while let Some(g) = self.twin(h.prev()) {
+            if g == first {
+                break;
+            }
+            out.push(g);
+            h = g;
+        }
+        out
+    }
+
+    /// The half-edge `u -> v`, if it is an edge with a triangle on its left.
+    pub(super) fn half_from(&self, u: usize, v: usize) -> Option<Half> {
+        self.halves.get(&key(u, v)).copied()
+    }
+
+    /// Whether `u v` is a fixed edge.
+    pub(super) fn is_fixed_edge(&self, u: usize, v: usize) -> bool {
+        self.half_from(u, v)
+            .or_else(|| self.half_from(v, u))
+            .is_some_and(|h| self.is_fixed(h))
+    }
+
+    /// Lists the half-edges of triangle `t` by their ends.
+    fn index(&mut self, t: u32) {
+        for k in 0..3u8 {
+            let h = Half { t, k };
+            self.halves.insert(key(self.origin(h), self.dest(h)), h);
+        }
+    }
+
+    fn unindex(&mut self, t: u32) {
+        for k in 0..3u8 {
+            let h = Half { t, k };
+            self.halves.remove(&key(self.origin(h), self.dest(h)));
+        }
+    }
+
+    /// The next fixed half-edge along the boundary of the face on the left of the fixed
+    /// half-edge `h` (turning clockwise round its head); the diagonals crossed on the way are
+    /// passed to `crossed` as `(right, left)` = (the head of `h`, the diagonal's other end).
+    pub(super) fn next_boundary(&self, h: Half, mut crossed: impl FnMut(usize, usize)) -> Half {
+        let mut g = h.next();
+        while !self.is_fixed(g) {
+            crossed(self.origin(g), self.dest(g));
+            // A diagonal always has a triangle on both sides.
+            g = match self.twin(g) {
+                Some(t) => t.next(),
+                None => return g,
+            };
+        }
+        g
+    }
+
+    /// The fixed half-edge before `h` along the boundary of the face on its left.
+    pub(super) fn prev_boundary(&self, h: Half) -> Half {
+        let mut g = h.prev();
+        while !self.is_fixed(g) {
+            g = match self.twin(g) {
+                Some(t) => t.prev(),
+                None => return g,
+            };
+        }
+        g
+    }
+
+    /// Makes segment `s e` a fixed edge: fixes it if it is an edge, inserts it otherwise.
+    /// Refused if it passes through a vertex or crosses a fixed edge.
+    pub(super) fn insert(&mut self, s: usize, e: usize) -> Result<(), Broken> {
+        let (ps, pe) = (self.point(s), self.point(e));
+        if let Some(h) = self.half_from(s, e).or_else(|| self.half_from(e, s)) {
+            self.fix(h);
+            return Ok(());
+        }
+        let mut start = None;
+        for h in self.around(s) {
+            let (q, r) = (self.dest(h), self.dest(h.next()));
+            if q == e {
+                self.fix(h);
+                return Ok(());
+            }
+            if r == e {
+                self.fix(h.prev());
+                return Ok(());
+            }
+            let (pq, pr) = (self.point(q), self.point(r));
+            if cross(ps, pq, pe) == 0 && dot(ps, pq, pe) > 0 {
+                return Err(Broken); // along an edge to another vertex: a vertex on the segment
+            }
+            if cross(ps, pq, pe) > 0 && cross(ps, pe, pr) > 0 {
+                start = Some(h);
+            }
+        }
+        let h = start.ok_or(Broken)?;
+        // Walk along s -> e, listing the crossed edges (each from its right end to its left end).
+        let mut crossed: VecDeque<(usize, usize)> = VecDeque::new();
+        let mut crossing = h.next();
+        loop {
+            if self.is_fixed(crossing) {
+                return Err(Broken);
+            }
+            crossed.push_back((self.origin(crossing), self.dest(crossing)));
+            let g = self.twin(crossing).ok_or(Broken)?;
+            let z = self.dest(g.next());
+            if z == e {
+                break;
+            }
+            let side = cross(ps, pe, self.point(z));
+            if side > 0 {
+                crossing = g.next(); // from the right end to z
+            } else if side < 0 {
+                crossing = g.prev(); // from z to the left end
+            } else {
+                return Err(Broken);
+            }
+        }
+        // Flip crossed edges whose quadrilateral is strictly convex until none is left (Sloan,
+        // "A fast algorithm for generating constrained Delaunay triangulations", Comput.
+        // Struct. 47 (1993)): a crossed edge with a convex quadrilateral always exists.
+        let mut stuck = 0;
+        while let Some((a, b)) = crossed.pop_front() {
+            let h = self.half_from(a, b).ok_or(Broken)?;
+            let g = self.twin(h).ok_or(Broken)?;
+            let (c, d) = (self.dest(h.next()), self.dest(g.next()));
+            let (pc, pd) = (self.point(c), self.point(d));
+            let (sa, sb) = (cross(pc, pd, self.point(a)), cross(pc, pd, self.point(b)));
+            if sa == 0 || sb == 0 || (sa > 0) == (sb > 0) {
+                crossed.push_back((a, b));
+                stuck += 1;
+                if stuck > crossed.len() {
+                    return Err(Broken);
+                }
+                continue;
+            }
+            stuck = 0;
+            self.flip(h, g);
+            if c != s && c != e && d != s && d != e {
+                let (sc, sd) = (cross(ps, pe, pc), cross(ps, pe, pd));
+                let (ts, te) = (cross(pc, pd, ps), cross(pc, pd, pe));
+                if sc.signum() * sd.signum() < 0 && ts.signum() * te.signum() < 0 {
+                    crossed.push_back((c, d));
+                }
+            }
+        }
+        let h = self.half_from(s, e).ok_or(Broken)?;
+        self.fix(h);
+        Ok(())
+    }
+
+    /// Fattens the triangles, which only makes walks shorter: Lawson's flips of diagonals
+    /// towards the constrained Delaunay triangulation, at most `max_flips`. Whether a flip is ALLOWED is exact (the
+    /// quadrilateral strictly convex, so the result is again a triangulation with the same
+    /// fixed edges); whether it is DESIRABLE is [`incircle_approx`], a heuristic that never
+    /// decides a fact of the answer (hence the bound on the flips, should rounding make them
+    /// cycle).
+    pub(super) fn fatten(&mut self, max_flips: usize) {
+        let mut stack: Vec<Half> = (0..self.tv.len() as u32)
+            .flat_map(|t| (0..3u8).map(move |k| Half { t, k }))
+            .collect();
+        let mut flips = 0;
+        while let Some(h) = stack.pop() {
+            if flips == max_flips {
+                break;
+            }
+            if self.is_fixed(h) {
+                continue;
+            }
+            let Some(g) = self.twin(h) else { continue };
+            let (a, b) = (self.origin(h), self.dest(h));
+            let (c, d) = (self.dest(h.next()), self.dest(g.next()));
+            let [pa, pb, pc, pd] = [a, b, c, d].map(|v| self.point(v));
+            if cross(pc, pa, pd) <= 0 || cross(pd, pb, pc) <= 0 {
+                continue;
+            }
+            if incircle_approx(pa, pb, pc, pd) <= 0.0 {
+                continue;
+            }
+            self.flip(h, g);
+            flips += 1;
+            let (t1, t2) = (h.t, g.t);
+            stack.extend([(t1, 0), (t1, 1), (t2, 0), (t2, 1)].map(|(t, k)| Half { t, k }));
+        }
+    }
+
+    /// Flips the diagonal of `h` (`a -> b`, triangle `a b c`) and its twin `g` (`b a d`) to
+    /// `c d`: the triangles become `c a d` and `d b c`.
+    fn flip(&mut self, h: Half, g: Half) {
+        let (t1, t2) = (h.t, g.t);
+        let (a, b) = (self.origin(h), self.dest(h));
+        let (c, d) = (self.dest(h.next()), self.dest(g.next()));
+        // The outer edges: (neighbour, fixed) of c -> a, a -> d, d -> b, b -> c.
+        let side = |mesh: &Self, x: Half| {
+            (
+                mesh.tn[x.t as usize][x.k as usize],
+                mesh.is_fixed(x),
+                mesh.is_done(x),
+            )
+        };
+        let ca = side(self, h.prev());
+        let ad = side(self, g.next());
+        let db = side(self, g.prev());
+        let bc = side(self, h.next());
+        self.unindex(t1);
+        self.unindex(t2);
+        self.tv[t1 as usize] = [c as u32, a as u32, d as u32];
+        self.tv[t2 as usize] = [d as u32, b as u32, c as u32];
+        self.index(t1);
+        self.index(t2);
+        self.tn[t1 as usize] = [ca.0, ad.0, t2];
+        self.tn[t2 as usize] = [db.0, bc.0, t1];
+        let bits =
+            |x: (u32, bool, bool), k: u8| (u8::from(x.1) << k) | ((u8::from(x.2) * DONE) << k);
+        self.flags[t1 as usize] = bits(ca, 0) | bits(ad, 1);
+        self.flags[t2 as usize] = bits(db, 0) | bits(bc, 1);
+        // The neighbours across a -> d and b -> c changed triangle.
+        for (n, (u, v), to) in [(ad.0, (d, a), t1), (bc.0, (c, b), t2)] {
+            if n != NONE {
+                let tri = self.tv[n as usize];
+                for k in 0..3 {
+                    if tri[k] as usize == u && tri[(k + 1) % 3] as usize == v {
+                        self.tn[n as usize][k] = to;
+                    }
+                }
+            }
+        }
+        for v in [a, c, d] {
+            self.vt[v] = t1;
+        }
+        self.vt[b] = t2;
+    }
+
+    #[cfg(test)]
+    pub(super) fn consistent(&self) -> Result<(), String> {
+        for t in 0..self.tv.len() as u32 {
+            for k in 0..3u8 {
+                let h = Half { t, k };
+                let n = self.tn[t as usize][k as usize];
+                if n == NONE {
+                    continue;
+                }
+                let Some(g) = self.twin(h) else {
+                    return Err(format!("{t}/{k} no twin"));
+                };
+                if self.dest(g) != self.origin(h) || self.tn[g.t as usize][g.k as usize] != t {
+                    return Err(format!(
+                        "{t}/{k} bad twin {:?} {:?}",
+                        self.tv[t as usize], self.tv[n as usize]
+                    ));
+                }
+            }
+        }
+        Ok(())
+    }
+}
