@@ -17,6 +17,7 @@ pub mod chords;
 pub mod ear;
 pub mod minitri;
 pub mod monotone;
+pub(crate) mod number_hash;
 pub mod pseudo;
 pub mod pseudo_hull;
 

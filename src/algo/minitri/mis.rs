@@ -43,35 +43,9 @@
 
 use super::circle::Circle;
 use super::degenerate::Degenerate;
+use crate::algo::number_hash::NumberMap;
 use crate::geom::kernel::{cross, Dir};
 use crate::geom::polygon::Polygon;
-use std::collections::HashMap;
-use std::hash::{BuildHasherDefault, Hasher};
-
-/// A multiplicative hash (as rustc's FxHash) for the memo's keys, pairs of positions: they are
-/// not chosen by an adversary, and SipHash was a tenth of the time on small polygons.
-#[derive(Default)]
-struct PositionHasher(u64);
-
-impl Hasher for PositionHasher {
-    fn finish(&self) -> u64 {
-        self.0
-    }
-
-    fn write(&mut self, bytes: &[u8]) {
-        for &b in bytes {
-            self.write_u64(u64::from(b));
-        }
-    }
-
-    fn write_u64(&mut self, n: u64) {
-        self.0 = (self.0.rotate_left(5) ^ n).wrapping_mul(0x517c_c1b7_2722_0a95);
-    }
-
-    fn write_usize(&mut self, n: usize) {
-        self.write_u64(n as u64);
-    }
-}
 
 /// The 3b-chains: for each triangle, its chain (a path of 3b-partners) and its place in it.
 #[derive(Clone, Debug)]
@@ -411,7 +385,7 @@ struct Scan {
     run: Vec<(u32, usize, i64, usize)>,
     stamp: u32,
     /// The best values inside ranges asked for so far.
-    memo: HashMap<(usize, usize), u32, BuildHasherDefault<PositionHasher>>,
+    memo: NumberMap<(usize, usize), u32>,
 }
 
 impl Sub<'_> {
@@ -523,7 +497,7 @@ impl Sub<'_> {
         let mut scan = Scan {
             run: vec![(0, 0, 0, 0); table.stairs.len()],
             start: vec![(0, 0); p],
-            memo: HashMap::with_capacity_and_hasher(jobs.len(), BuildHasherDefault::default()),
+            memo: NumberMap::with_capacity_and_hasher(jobs.len(), Default::default()),
             ..Scan::default()
         };
         jobs.sort_by_key(|&(span, kind, _)| (span, kind));

@@ -19,9 +19,9 @@
 //! towards the Delaunay triangulation with the kernel's floating-point in-circle heuristic,
 //! which only steers speed (the allowed flips are decided exactly).
 
+use crate::algo::number_hash::NumberMap;
 use crate::geom::kernel::{cross, dot, incircle_approx, Point};
-use std::collections::{HashMap, VecDeque};
-use std::hash::{BuildHasherDefault, Hasher};
+use std::collections::VecDeque;
 
 const NONE: u32 = u32::MAX;
 
@@ -56,28 +56,7 @@ fn key(from: usize, to: usize) -> u64 {
     ((from as u64) << 32) | to as u64
 }
 
-/// A multiplicative hash for the `u64` keys of half-edges (vertex numbers are not adversarial
-/// input: they are positions in the polygon).
-#[derive(Default)]
-struct KeyHasher(u64);
-
-impl Hasher for KeyHasher {
-    fn finish(&self) -> u64 {
-        self.0
-    }
-
-    fn write(&mut self, bytes: &[u8]) {
-        for &b in bytes {
-            self.0 = (self.0 ^ u64::from(b)).wrapping_mul(0x100_0000_01b3);
-        }
-    }
-
-    fn write_u64(&mut self, x: u64) {
-        self.0 = (x ^ (x >> 29)).wrapping_mul(0x9e37_79b9_7f4a_7c15);
-    }
-}
-
-type Halves = HashMap<u64, Half, BuildHasherDefault<KeyHasher>>;
+type Halves = NumberMap<u64, Half>;
 
 /// Flag bits per triangle: bit `k` edge `k` fixed, bit `3 + k` the face on the left of edge `k`
 /// finished (a pseudotriangle already reported).
