@@ -14,12 +14,7 @@ fn run_in(dir: &Path, args: &[&str], stdin: Option<&str>) -> (i32, String, Strin
     if let Some(s) = stdin {
         cmd.write_stdin(s);
     }
-    let out = cmd.output().expect("run minitri");
-    (
-        out.status.code().expect("exit code"),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
+    crate::util::outcome(&mut cmd)
 }
 
 /// Writes `files` (relative path, content) below `root`, creating directories.

@@ -3,7 +3,7 @@
 //! input), and the generated 100 MB inputs give the messages of the second table. The README is
 //! the single source of the expected messages, so it cannot drift from the tool.
 
-use crate::util::{fixtures, json, minitri};
+use crate::util::{fixtures, json, minitri, outcome};
 use serde_json::Value;
 use std::collections::BTreeSet;
 use std::path::Path;
@@ -67,12 +67,7 @@ fn run_bytes(args: &[&str], stdin: Option<Vec<u8>>) -> (i32, String, String) {
     if let Some(bytes) = stdin {
         cmd.write_stdin(bytes);
     }
-    let out = cmd.output().expect("run minitri");
-    (
-        out.status.code().expect("exit code"),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
+    outcome(&mut cmd)
 }
 
 /// The JSON error entry a message stands for: `polygon I: ` becomes the index.

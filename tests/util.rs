@@ -40,10 +40,14 @@ pub fn run(args: &[&str], stdin: Option<&str>) -> (i32, String, String) {
     if let Some(s) = stdin {
         cmd.write_stdin(s);
     }
+    outcome(&mut cmd)
+}
+
+/// Runs a prepared command to its end: (exit code, stdout, stderr).
+pub fn outcome(cmd: &mut Command) -> (i32, String, String) {
     let out = cmd.output().expect("run minitri");
-    let code = out.status.code().expect("exit code");
     (
-        code,
+        out.status.code().expect("exit code"),
         String::from_utf8_lossy(&out.stdout).into_owned(),
         String::from_utf8_lossy(&out.stderr).into_owned(),
     )
