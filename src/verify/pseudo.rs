@@ -28,12 +28,12 @@
 //!    2n - r - 2.
 //!
 //! Complexity: O(F log F) for the chain and the adjacency (F: total face size), including the
-//! simplicity test (pair by pair for faces of at most 32 vertices, by the exact sweep of
-//! `geom::validate` above); for `pseudo-hull`, O(n log n) for the hull.
+//! simplicity test (`geom::validate` on each face: pair by pair up to 32 vertices, by the exact
+//! sweep above); for `pseudo-hull`, O(n log n) for the hull.
 
 use super::{check_sides_cancel, plural, Check, Problems};
 use crate::algo::{Algorithm, Pseudotriangulation};
-use crate::geom::kernel::{cmp_angle, cross, dot, segment_contact, Point, SegmentContact, WideSum};
+use crate::geom::kernel::{cmp_angle, cross, dot, Point, WideSum};
 use crate::geom::polygon::Polygon;
 use std::collections::BTreeMap;
 
@@ -273,51 +273,13 @@ fn face_ok(
 }
 
 /// Whether the closed polyline through `pts` (distinct points) is simple: consecutive edges meet
-/// only at their common end (no fold-back), others not at all. Up to [`SMALL_FACE`] points by
-/// comparing edges whose x ranges overlap (O(k^2) at worst, quickest for small faces); above, by
-/// the exact sweep of [`crate::geom::validate`] on the cycle as one ring (O(k log k)).
+/// only at their common end (no fold-back), others not at all. Decided by
+/// [`crate::geom::validate`] on the cycle as one ring (edges pair by pair up to 32 points, the
+/// exact sweep above: O(k log k)).
 fn simple(polygon: &Polygon, pts: Vec<Point>) -> bool {
-    if pts.len() > SMALL_FACE {
-        let ring = Polygon::ring_of_points(pts, *polygon.grid());
-        return crate::geom::validate::errors(&ring).is_empty();
-    }
-    let pts = &pts[..];
-    let m = pts.len();
-    let edge = |i: usize| (pts[i], pts[(i + 1) % m]);
-    for i in 0..m {
-        let (u, v, w) = (pts[i], pts[(i + 1) % m], pts[(i + 2) % m]);
-        if cross(u, v, w) == 0 && dot(v, u, w) > 0 {
-            return false;
-        }
-    }
-    let mut order: Vec<usize> = (0..m).collect();
-    let lo = |i: usize| edge(i).0.x.min(edge(i).1.x);
-    let hi = |i: usize| edge(i).0.x.max(edge(i).1.x);
-    order.sort_unstable_by_key(|&i| lo(i));
-    for (s, &i) in order.iter().enumerate() {
-        for &j in &order[s + 1..] {
-            if lo(j) > hi(i) {
-                break;
-            }
-            let adjacent = (i + 1) % m == j || (j + 1) % m == i;
-            let (a, b) = edge(i);
-            let (c, d) = edge(j);
-            let contact = segment_contact(a, b, c, d);
-            let bad = if adjacent {
-                contact == SegmentContact::Overlap
-            } else {
-                contact != SegmentContact::Disjoint
-            };
-            if bad {
-                return false;
-            }
-        }
-    }
-    true
+    let ring = Polygon::ring_of_points(pts, *polygon.grid());
+    crate::geom::validate::errors(&ring).is_empty()
 }
-
-/// The largest face whose simplicity is tested pair by pair.
-const SMALL_FACE: usize = 32;
 
 /// The convex hull's boundary, counter-clockwise, every point on it included (written again
 /// here, apart from the algorithm's).
