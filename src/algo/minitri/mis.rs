@@ -247,8 +247,6 @@ struct Unit {
     last: usize,
     lo: usize,
     hi: usize,
-    /// Its chords plus the best inside each gap between their endpoints.
-    value: u32,
 }
 
 /// A 3b-chain whose pieces of three or more chords are valued inside the scans, not as units.
@@ -353,9 +351,16 @@ enum Job {
 /// What the scans read: the valued units, by end position, and the staircases.
 struct Table {
     units: Vec<Unit>,
-    /// Per local position, the valued units ending there as `(lo, value, unit)`, kept together
-    /// so that the scans read one small record per unit.
-    ending: Vec<Vec<(u32, u32, u32)>>,
+    /// The units by end position, as one flat array (compressed rows): those ending at local
+    /// position `x` are `ending[ending_start[x]..ending_start[x + 1]]`, each as `(lo, value)`,
+    /// in decreasing order of `lo` (a scan of `a..=b` stops at the first `lo < a`). A unit's
+    /// value is filled in when its job runs, before any scan can reach it.
+    ending_start: Vec<u32>,
+    ending: Vec<(u32, u32)>,
+    /// The unit of each entry of `ending` (read only to record picks).
+    ending_unit: Vec<u32>,
+    /// Each unit's entry in `ending`.
+    entry_of: Vec<u32>,
     stairs: Vec<Staircase>,
     /// Per local position, for the triangle ending there: (its staircase, its index there), or
     /// `NOT_IN_STAIRCASE`.
@@ -374,9 +379,11 @@ struct GapBuffers {
 /// Scratch for the scans.
 #[derive(Default)]
 struct Scan {
-    /// Per position of the range: the best value within `a..=x`.
+    /// `best[i]`: the best value within `a..a + i` (so `best[0] = 0`, and `best[x - a]` is the
+    /// best before position `x`).
     best: Vec<u32>,
-    /// Per position of the range: the last pick of the best value within `a..=x`.
+    /// Per position `x` of the range, when picks are recorded: the last pick of the best value
+    /// within `a..=x`.
     pick: Vec<Pick>,
     /// Per staircase triangle, by the local position of its left end: (stamp, the best before
     /// it starts, minus its index, plus `left`).
@@ -435,7 +442,10 @@ impl Sub<'_> {
         let p = self.positions.len();
         let mut table = Table {
             units: Vec::new(),
-            ending: vec![Vec::new(); p],
+            ending_start: Vec::new(),
+            ending: Vec::new(),
+            ending_unit: Vec::new(),
+            entry_of: Vec::new(),
             stairs: Vec::new(),
             stair_of: vec![NOT_IN_STAIRCASE; p],
         };
@@ -467,7 +477,6 @@ impl Sub<'_> {
                         last,
                         lo,
                         hi,
-                        value: 0,
                     });
                 }
             }
@@ -494,6 +503,7 @@ impl Sub<'_> {
                 table.stairs.push(stair);
             }
         }
+        table.index_ending(p);
         let mut scan = Scan {
             run: vec![(0, 0, 0, 0); table.stairs.len()],
             start: vec![(0, 0); p],
@@ -514,9 +524,7 @@ impl Sub<'_> {
                         .iter()
                         .map(|&(a, b)| self.best_value(&table, &mut scan, a, b))
                         .sum();
-                    table.units[k].value = count + inside;
-                    let u = &table.units[k];
-                    table.ending[u.hi].push((u.lo as u32, u.value, k as u32));
+                    table.ending[table.entry_of[k] as usize].1 = count + inside;
                 }
                 Job::Left(s, f) => {
                     let gaps = table.stairs[s].left_gaps(f);
@@ -578,7 +586,7 @@ impl Sub<'_> {
         if let Some(&v) = scan.memo.get(&(a, b)) {
             return v;
         }
-        let v = self.scan(table, scan, a, b);
+        let v = self.scan::<false>(table, scan, a, b);
         scan.memo.insert((a, b), v);
         v
     }
@@ -586,7 +594,7 @@ impl Sub<'_> {
     /// Weighted interval scheduling over the units and staircase pieces lying within `a..=b`:
     /// the best total value and the picks achieving it.
     fn best_in(&self, table: &Table, scan: &mut Scan, a: usize, b: usize) -> (u32, Vec<Pick>) {
-        let total = self.scan(table, scan, a, b);
+        let total = self.scan::<true>(table, scan, a, b);
         let mut picked = Vec::new();
         let mut x = b as isize;
         while x >= a as isize {
@@ -605,19 +613,32 @@ impl Sub<'_> {
         (total, picked)
     }
 
-    /// The scan of [`Self::best_in`]: fills `scan.best` for `a..=b` and returns the best total.
-    fn scan(&self, table: &Table, scan: &mut Scan, a: usize, b: usize) -> u32 {
+    /// The scan of [`Self::best_in`]: fills `scan.best` for `a..=b` (and `scan.pick` when
+    /// `PICKS`, which only the final reconstruction needs) and returns the best total.
+    fn scan<const PICKS: bool>(&self, table: &Table, scan: &mut Scan, a: usize, b: usize) -> u32 {
         scan.stamp += 1;
         let stamp = scan.stamp;
-        scan.best.clear();
-        scan.pick.clear();
+        let best = &mut scan.best;
+        best.clear();
+        best.reserve(b + 2 - a);
+        best.push(0);
+        if PICKS {
+            scan.pick.clear();
+        }
         for x in a..=b {
-            let before = |best: &[u32], lo: usize| if lo > a { best[lo - a - 1] } else { 0 };
-            let mut here = (before(&scan.best, x), Pick::None);
-            for &(lo, value, k) in &table.ending[x] {
+            let mut here = best[x - a];
+            let mut pick = Pick::None;
+            let (from, to) = (table.ending_start[x], table.ending_start[x + 1]);
+            for (e, &(lo, value)) in (from..to).zip(&table.ending[from as usize..to as usize]) {
                 let lo = lo as usize;
-                if lo >= a && before(&scan.best, lo) + value > here.0 {
-                    here = (before(&scan.best, lo) + value, Pick::Unit(k as usize));
+                if lo < a {
+                    break;
+                }
+                if best[lo - a] + value > here {
+                    here = best[lo - a] + value;
+                    if PICKS {
+                        pick = Pick::Unit(table.ending_unit[e as usize] as usize);
+                    }
                 }
             }
             let (s, i) = table.stair_of[x];
@@ -626,7 +647,7 @@ impl Sub<'_> {
                 let stair = &table.stairs[s];
                 let l = stair.tris.len();
                 if x == stair.ends[i].0 && i + 2 < l {
-                    let value = before(&scan.best, x) as i64 - i as i64 + stair.left[i] as i64;
+                    let value = best[x - a] as i64 - i as i64 + stair.left[i] as i64;
                     scan.start[x] = (stamp, value);
                 } else if x == stair.ends[i].1 && i >= 2 {
                     // M(i) = max(M(i - 1) + inner[i - 1], start(i - 2)).
@@ -642,20 +663,52 @@ impl Sub<'_> {
                     scan.run[s] = (stamp, i, m.0, m.1);
                     if m.0 > i64::MIN {
                         let total = (m.0 + i as i64 + 1 + stair.right[i] as i64) as u32;
-                        if total > here.0 {
-                            let piece = Pick::Piece {
-                                stair: s,
-                                first: m.1,
-                                last: i,
-                            };
-                            here = (total, piece);
+                        if total > here {
+                            here = total;
+                            if PICKS {
+                                pick = Pick::Piece {
+                                    stair: s,
+                                    first: m.1,
+                                    last: i,
+                                };
+                            }
                         }
                     }
                 }
             }
-            scan.best.push(here.0);
-            scan.pick.push(here.1);
+            best.push(here);
+            if PICKS {
+                scan.pick.push(pick);
+            }
         }
-        scan.best.last().map_or(0, |&b| b)
+        best[b + 1 - a]
+    }
+}
+
+impl Table {
+    /// Builds the index of the units by end position (`ending_start`, `ending`, `ending_unit`,
+    /// `entry_of`) for a component with `p` positions; values are filled in later.
+    fn index_ending(&mut self, p: usize) {
+        let mut order: Vec<u32> = (0..self.units.len() as u32).collect();
+        order.sort_unstable_by_key(|&k| {
+            let u = &self.units[k as usize];
+            (u.hi, std::cmp::Reverse(u.lo))
+        });
+        self.ending_start = vec![0; p + 1];
+        for u in &self.units {
+            self.ending_start[u.hi + 1] += 1;
+        }
+        for x in 0..p {
+            self.ending_start[x + 1] += self.ending_start[x];
+        }
+        self.entry_of = vec![0; self.units.len()];
+        for (e, &k) in order.iter().enumerate() {
+            self.entry_of[k as usize] = e as u32;
+        }
+        self.ending = order
+            .iter()
+            .map(|&k| (self.units[k as usize].lo as u32, 0))
+            .collect();
+        self.ending_unit = order;
     }
 }
