@@ -325,17 +325,17 @@ impl Staircase {
 
 const NOT_IN_STAIRCASE: (u32, u32) = (u32::MAX, u32::MAX);
 
-/// What a scan picked as the last unit of a range.
+/// What a scan picked as the last unit of a range (16 bytes: one is recorded per position).
 #[derive(Clone, Copy, Debug)]
 enum Pick {
     None,
     /// A unit of the list.
-    Unit(usize),
+    Unit(u32),
     /// The piece `tris[first..=last]` of the staircase `stair`.
     Piece {
-        stair: usize,
-        first: usize,
-        last: usize,
+        stair: u32,
+        first: u32,
+        last: u32,
     },
 }
 
@@ -555,12 +555,12 @@ impl Sub<'_> {
             for pick in picked {
                 let piece = match pick {
                     Pick::Unit(k) => {
-                        let u = &table.units[k];
+                        let u = &table.units[k as usize];
                         &self.chains.paths[u.chain][u.first..=u.last]
                     }
-                    Pick::Piece {
-                        stair, first, last, ..
-                    } => &table.stairs[stair].tris[first..=last],
+                    Pick::Piece { stair, first, last } => {
+                        &table.stairs[stair as usize].tris[first as usize..=last as usize]
+                    }
                     Pick::None => continue,
                 };
                 chosen.extend(piece);
@@ -604,8 +604,10 @@ impl Sub<'_> {
                     x -= 1;
                     continue;
                 }
-                Pick::Unit(k) => table.units[k].lo,
-                Pick::Piece { stair, first, .. } => table.stairs[stair].ends[first].0,
+                Pick::Unit(k) => table.units[k as usize].lo,
+                Pick::Piece { stair, first, .. } => {
+                    table.stairs[stair as usize].ends[first as usize].0
+                }
             };
             picked.push(pick);
             x = lo as isize - 1;
@@ -618,18 +620,28 @@ impl Sub<'_> {
     fn scan<const PICKS: bool>(&self, table: &Table, scan: &mut Scan, a: usize, b: usize) -> u32 {
         scan.stamp += 1;
         let stamp = scan.stamp;
-        let best = &mut scan.best;
+        let Scan {
+            best,
+            pick,
+            start,
+            run,
+            ..
+        } = scan;
         best.clear();
         best.reserve(b + 2 - a);
         best.push(0);
         if PICKS {
-            scan.pick.clear();
+            pick.clear();
         }
-        for x in a..=b {
-            let mut here = best[x - a];
-            let mut pick = Pick::None;
-            let (from, to) = (table.ending_start[x], table.ending_start[x + 1]);
-            for (e, &(lo, value)) in (from..to).zip(&table.ending[from as usize..to as usize]) {
+        // `here`: the best within `a..x`, then within `a..=x`.
+        let mut here = 0;
+        let mut to = table.ending_start[a] as usize;
+        for x in a..b + 1 {
+            let from = to;
+            to = table.ending_start[x + 1] as usize;
+            let mut picked = Pick::None;
+            for e in from..to {
+                let (lo, value) = table.ending[e];
                 let lo = lo as usize;
                 if lo < a {
                     break;
@@ -637,7 +649,7 @@ impl Sub<'_> {
                 if best[lo - a] + value > here {
                     here = best[lo - a] + value;
                     if PICKS {
-                        pick = Pick::Unit(table.ending_unit[e as usize] as usize);
+                        picked = Pick::Unit(table.ending_unit[e]);
                     }
                 }
             }
@@ -648,28 +660,28 @@ impl Sub<'_> {
                 let l = stair.tris.len();
                 if x == stair.ends[i].0 && i + 2 < l {
                     let value = best[x - a] as i64 - i as i64 + stair.left[i] as i64;
-                    scan.start[x] = (stamp, value);
+                    start[x] = (stamp, value);
                 } else if x == stair.ends[i].1 && i >= 2 {
                     // M(i) = max(M(i - 1) + inner[i - 1], start(i - 2)).
-                    let run = scan.run[s];
+                    let last = run[s];
                     let mut m = (i64::MIN, 0);
-                    if run.0 == stamp && run.1 + 1 == i && run.2 > i64::MIN {
-                        m = (run.2 + stair.inner[i - 1] as i64, run.3);
+                    if last.0 == stamp && last.1 + 1 == i && last.2 > i64::MIN {
+                        m = (last.2 + stair.inner[i - 1] as i64, last.3);
                     }
-                    let (st, v) = scan.start[stair.ends[i - 2].0];
+                    let (st, v) = start[stair.ends[i - 2].0];
                     if st == stamp && v > m.0 {
                         m = (v, i - 2);
                     }
-                    scan.run[s] = (stamp, i, m.0, m.1);
+                    run[s] = (stamp, i, m.0, m.1);
                     if m.0 > i64::MIN {
                         let total = (m.0 + i as i64 + 1 + stair.right[i] as i64) as u32;
                         if total > here {
                             here = total;
                             if PICKS {
-                                pick = Pick::Piece {
-                                    stair: s,
-                                    first: m.1,
-                                    last: i,
+                                picked = Pick::Piece {
+                                    stair: s as u32,
+                                    first: m.1 as u32,
+                                    last: i as u32,
                                 };
                             }
                         }
@@ -678,10 +690,10 @@ impl Sub<'_> {
             }
             best.push(here);
             if PICKS {
-                scan.pick.push(pick);
+                pick.push(picked);
             }
         }
-        best[b + 1 - a]
+        here
     }
 }
 
