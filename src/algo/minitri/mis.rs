@@ -40,6 +40,17 @@
 //! of the README). Memory O(K) plus the memo of ranges asked for (at most one per unit gap).
 //! Output-sensitive circle-graph algorithms (Nash & Gregg 2010, O(K min(d, alpha))) do not help
 //! with that worst case either (density and independence number both grow with K).
+//!
+//! The scans are the cost, so they read little: the units are indexed by end position in one
+//! flat array, sorted by start within a position (a scan of `a..=b` stops at the first unit
+//! starting before `a`), and only the final reconstruction records picks (it scans the gaps of
+//! the chosen units again: about a quarter of this step on bars). Exact reductions before the
+//! scans (a simplicial triangle, e.g. one of degree 0 or 1 in the dependency graph, is in some
+//! maximum independent set; a triangle whose closed neighbourhood contains a neighbour's is not
+//! needed) were measured and not kept: on bars most triangles have more than 20 dependent
+//! triangles (each rung is crossed by the long 3b-chains along the corridor's walls), the rules
+//! remove about 5% of them and the crossing component stays whole; on maze the components are
+//! small already.
 
 use super::circle::Circle;
 use super::degenerate::Degenerate;
