@@ -41,10 +41,13 @@
 //! Output-sensitive circle-graph algorithms (Nash & Gregg 2010, O(K min(d, alpha))) do not help
 //! with that worst case either (density and independence number both grow with K).
 //!
-//! The scans are the cost, so they read little: the units are indexed by end position in one
-//! flat array, sorted by start within a position (a scan of `a..=b` stops at the first unit
-//! starting before `a`), and only the final reconstruction records picks (it scans the gaps of
-//! the chosen units again: about a quarter of this step on bars). Exact reductions before the
+//! The scans are the cost, so they read and write little: the units are indexed by end position
+//! in one flat array, sorted by start within a position (a scan of `a..=b` stops at the first
+//! unit starting before `a`), and a scan records only the best value before each position. The
+//! reconstruction scans the gaps of the chosen units again (a fifth of this step on bars) and
+//! walks back over those values: where the best grows, a unit or staircase piece ending there
+//! gives the new value (a piece's first chord is found by summing back along the chain, which
+//! the walk then skips). Exact reductions before the
 //! scans (a simplicial triangle, e.g. one of degree 0 or 1 in the dependency graph, is in some
 //! maximum independent set; a triangle whose closed neighbourhood contains a neighbour's is not
 //! needed) were measured and not kept: on bars most triangles have more than 20 dependent
@@ -336,18 +339,13 @@ impl Staircase {
 
 const NOT_IN_STAIRCASE: (u32, u32) = (u32::MAX, u32::MAX);
 
-/// What a scan picked as the last unit of a range (16 bytes: one is recorded per position).
+/// A unit or staircase piece chosen by the reconstruction.
 #[derive(Clone, Copy, Debug)]
 enum Pick {
-    None,
     /// A unit of the list.
     Unit(u32),
     /// The piece `tris[first..=last]` of the staircase `stair`.
-    Piece {
-        stair: u32,
-        first: u32,
-        last: u32,
-    },
+    Piece { stair: u32, first: u32, last: u32 },
 }
 
 /// Jobs in order of span: units to value, and staircase gap values to fill in.
@@ -393,14 +391,11 @@ struct Scan {
     /// `best[i]`: the best value within `a..a + i` (so `best[0] = 0`, and `best[x - a]` is the
     /// best before position `x`).
     best: Vec<u32>,
-    /// Per position `x` of the range, when picks are recorded: the last pick of the best value
-    /// within `a..=x`.
-    pick: Vec<Pick>,
     /// Per staircase triangle, by the local position of its left end: (stamp, the best before
     /// it starts, minus its index, plus `left`).
     start: Vec<(u32, i64)>,
-    /// Per staircase: (stamp, last end index seen, running maximum, its first index).
-    run: Vec<(u32, usize, i64, usize)>,
+    /// Per staircase: (stamp, last end index seen, running maximum).
+    run: Vec<(u32, usize, i64)>,
     stamp: u32,
     /// The best values inside ranges asked for so far.
     memo: NumberMap<(usize, usize), u32>,
@@ -516,7 +511,7 @@ impl Sub<'_> {
         }
         table.index_ending(p);
         let mut scan = Scan {
-            run: vec![(0, 0, 0, 0); table.stairs.len()],
+            run: vec![(0, 0, 0); table.stairs.len()],
             start: vec![(0, 0); p],
             memo: NumberMap::with_capacity_and_hasher(jobs.len(), Default::default()),
             ..Scan::default()
@@ -562,7 +557,7 @@ impl Sub<'_> {
         let mut chosen = Vec::new();
         let mut ranges = vec![(0, p - 1)];
         while let Some((a, b)) = ranges.pop() {
-            let (_, picked) = self.best_in(&table, &mut scan, a, b);
+            let picked = self.best_in(&table, &mut scan, a, b);
             for pick in picked {
                 let piece = match pick {
                     Pick::Unit(k) => {
@@ -572,7 +567,6 @@ impl Sub<'_> {
                     Pick::Piece { stair, first, last } => {
                         &table.stairs[stair as usize].tris[first as usize..=last as usize]
                     }
-                    Pick::None => continue,
                 };
                 chosen.extend(piece);
                 self.gaps(piece, &mut buffers);
@@ -597,72 +591,103 @@ impl Sub<'_> {
         if let Some(&v) = scan.memo.get(&(a, b)) {
             return v;
         }
-        let v = self.scan::<false>(table, scan, a, b);
+        let v = self.scan(table, scan, a, b);
         scan.memo.insert((a, b), v);
         v
     }
 
     /// Weighted interval scheduling over the units and staircase pieces lying within `a..=b`:
-    /// the best total value and the picks achieving it.
-    fn best_in(&self, table: &Table, scan: &mut Scan, a: usize, b: usize) -> (u32, Vec<Pick>) {
-        let total = self.scan::<true>(table, scan, a, b);
+    /// the picks of a best set. One scan fills `scan.best`; then, walking back from `b`, where
+    /// the best grows at a position some unit or staircase piece ending there achieves the new
+    /// value, and the walk goes on before its start.
+    fn best_in(&self, table: &Table, scan: &mut Scan, a: usize, b: usize) -> Vec<Pick> {
+        self.scan(table, scan, a, b);
+        let best = &scan.best;
         let mut picked = Vec::new();
-        let mut x = b as isize;
-        while x >= a as isize {
-            let pick = scan.pick[x as usize - a];
-            let lo = match pick {
-                Pick::None => {
-                    x -= 1;
-                    continue;
-                }
-                Pick::Unit(k) => table.units[k as usize].lo,
-                Pick::Piece { stair, first, .. } => {
-                    table.stairs[stair as usize].ends[first as usize].0
-                }
-            };
+        let mut x = b + 1; // the best within `a..x` is `best[x - a]`
+        while x > a {
+            let y = x - 1;
+            if best[y + 1 - a] == best[y - a] {
+                x = y;
+                continue;
+            }
+            let (pick, lo) = self
+                .achieving(table, best, a, y)
+                .expect("the best grows at a position only by a unit or a piece ending there");
             picked.push(pick);
-            x = lo as isize - 1;
+            x = lo;
         }
-        (total, picked)
+        picked
     }
 
-    /// The scan of [`Self::best_in`]: fills `scan.best` for `a..=b` (and `scan.pick` when
-    /// `PICKS`, which only the final reconstruction needs) and returns the best total.
-    fn scan<const PICKS: bool>(&self, table: &Table, scan: &mut Scan, a: usize, b: usize) -> u32 {
+    /// A unit or staircase piece within `a..` ending at `y` whose value plus the best before its
+    /// start is the best within `a..=y` (from `best` of a scan starting at `a`), with its start.
+    fn achieving(&self, table: &Table, best: &[u32], a: usize, y: usize) -> Option<(Pick, usize)> {
+        let target = best[y + 1 - a];
+        let entries = table.ending_start[y] as usize..table.ending_start[y + 1] as usize;
+        for e in entries {
+            let (lo, value) = table.ending[e];
+            let lo = lo as usize;
+            if lo >= a && best[lo - a] + value == target {
+                return Some((Pick::Unit(table.ending_unit[e]), lo));
+            }
+        }
+        // A staircase piece `f..=i` ending at `y`, its start `s_f` in the range: the value
+        // of the scan's running maximum, summed out for each `f` from `i - 2` down.
+        let (s, i) = table.stair_of[y];
+        if s == NOT_IN_STAIRCASE.0 {
+            return None;
+        }
+        let (s, i) = (s as usize, i as usize);
+        let stair = &table.stairs[s];
+        if y != stair.ends[i].1 || i < 2 {
+            return None;
+        }
+        let mut inner = 0; // sum(inner[f + 2 .. i])
+        for f in (0..=i - 2).rev() {
+            if f + 2 < i {
+                inner += stair.inner[f + 2];
+            }
+            let lo = stair.ends[f].0;
+            if lo < a {
+                break;
+            }
+            let count = (i - f + 1) as u32;
+            if best[lo - a] + stair.left[f] + inner + count + stair.right[i] == target {
+                let piece = Pick::Piece {
+                    stair: s as u32,
+                    first: f as u32,
+                    last: i as u32,
+                };
+                return Some((piece, lo));
+            }
+        }
+        None
+    }
+
+    /// The scan of [`Self::best_in`]: fills `scan.best` for `a..=b` and returns the best total.
+    fn scan(&self, table: &Table, scan: &mut Scan, a: usize, b: usize) -> u32 {
         scan.stamp += 1;
         let stamp = scan.stamp;
         let Scan {
-            best,
-            pick,
-            start,
-            run,
-            ..
+            best, start, run, ..
         } = scan;
         best.clear();
         best.reserve(b + 2 - a);
         best.push(0);
-        if PICKS {
-            pick.clear();
-        }
         // `here`: the best within `a..x`, then within `a..=x`.
         let mut here = 0;
         let mut to = table.ending_start[a] as usize;
         for x in a..b + 1 {
             let from = to;
             to = table.ending_start[x + 1] as usize;
-            let mut picked = Pick::None;
             for e in from..to {
                 let (lo, value) = table.ending[e];
                 let lo = lo as usize;
                 if lo < a {
                     break;
                 }
-                if best[lo - a] + value > here {
-                    here = best[lo - a] + value;
-                    if PICKS {
-                        picked = Pick::Unit(table.ending_unit[e]);
-                    }
-                }
+                here = here.max(best[lo - a] + value);
             }
             let (s, i) = table.stair_of[x];
             if s != NOT_IN_STAIRCASE.0 {
@@ -675,34 +700,22 @@ impl Sub<'_> {
                 } else if x == stair.ends[i].1 && i >= 2 {
                     // M(i) = max(M(i - 1) + inner[i - 1], start(i - 2)).
                     let last = run[s];
-                    let mut m = (i64::MIN, 0);
+                    let mut m = i64::MIN;
                     if last.0 == stamp && last.1 + 1 == i && last.2 > i64::MIN {
-                        m = (last.2 + stair.inner[i - 1] as i64, last.3);
+                        m = last.2 + stair.inner[i - 1] as i64;
                     }
                     let (st, v) = start[stair.ends[i - 2].0];
-                    if st == stamp && v > m.0 {
-                        m = (v, i - 2);
+                    if st == stamp {
+                        m = m.max(v);
                     }
-                    run[s] = (stamp, i, m.0, m.1);
-                    if m.0 > i64::MIN {
-                        let total = (m.0 + i as i64 + 1 + stair.right[i] as i64) as u32;
-                        if total > here {
-                            here = total;
-                            if PICKS {
-                                picked = Pick::Piece {
-                                    stair: s as u32,
-                                    first: m.1 as u32,
-                                    last: i as u32,
-                                };
-                            }
-                        }
+                    run[s] = (stamp, i, m);
+                    if m > i64::MIN {
+                        let total = (m + i as i64 + 1 + stair.right[i] as i64) as u32;
+                        here = here.max(total);
                     }
                 }
             }
             best.push(here);
-            if PICKS {
-                pick.push(picked);
-            }
         }
         here
     }
