@@ -1,8 +1,9 @@
-//! A fast hash for maps keyed by vertex numbers or circle positions.
+//! A fast hash for maps keyed by vertex numbers (the pseudo-hull mesh's half-edges).
 //!
 //! The keys are numbers the program makes itself (positions in a polygon, pairs of them), never
 //! chosen by an adversary, so the standard SipHash, built to resist hash flooding, only costs
-//! time: it was a tenth of the MIS's time on small polygons. This is a multiplicative hash in
+//! time: it was a tenth of the MIS's time on small polygons (when the MIS kept its values in
+//! such a map). This is a multiplicative hash in
 //! the manner of rustc's FxHash, with the high half of each word folded down first so that keys
 //! packed as `from << 32 | to` spread over the table by both halves.
 

@@ -37,27 +37,31 @@
 //! by one scan of its span (in endpoint positions of its component): O(sum of spans), which is
 //! Valiente's O(total chord length), near-linear when chords are local, O(K^2) in the worst case
 //! (many long chords nested inside each other in one crossing component: the "bars" benchmark
-//! of the README). Memory O(K) plus the memo of ranges asked for (at most one per unit gap).
+//! of the README). Memory O(K) plus the list of ranges asked for (the gaps of the units and
+//! staircase parts) with their values.
 //! Output-sensitive circle-graph algorithms (Nash & Gregg 2010, O(K min(d, alpha))) do not help
 //! with that worst case either (density and independence number both grow with K).
 //!
 //! The scans are the cost, so they read and write little: the units are indexed by end position
 //! in one flat array, sorted by start within a position (a scan of `a..=b` stops at the first
-//! unit starting before `a`), and a scan records only the best value before each position. The
-//! reconstruction scans the gaps of the chosen units again (a fifth of this step on bars) and
-//! walks back over those values: where the best grows, a unit or staircase piece ending there
-//! gives the new value (a piece's first chord is found by summing back along the chain, which
-//! the walk then skips). Exact reductions before the
-//! scans (a simplicial triangle, e.g. one of degree 0 or 1 in the dependency graph, is in some
-//! maximum independent set; a triangle whose closed neighbourhood contains a neighbour's is not
-//! needed) were measured and not kept: on bars most triangles have more than 20 dependent
-//! triangles (each rung is crossed by the long 3b-chains along the corridor's walls), the rules
-//! remove about 5% of them and the crossing component stays whole; on maze the components are
-//! small already.
+//! unit starting before `a`), and a scan records only the best value before each position. All
+//! the ranges the jobs will ask for are listed first, by start: a scan of `a..=b` then also
+//! answers every listed range `a..=c` with `c < b` (everything inside it is inside `a..=b`, so
+//! valued already); a start is scanned again only for a longer range (on bars 12% fewer
+//! positions are scanned; on the Hilbert fixture this step takes half the instructions). The reconstruction scans
+//! the gaps of the chosen units again (a quarter of the positions scanned on bars) and walks back
+//! over those values: where the best grows at a position, a unit or staircase piece ending there
+//! gives the new value (for a piece, its first chord is found by summing back along the chain).
+//!
+//! Exact reductions before the scans (a simplicial triangle, e.g. one of degree 0 or 1 in the
+//! dependency graph, is in some maximum independent set; a triangle whose closed neighbourhood
+//! contains a neighbour's is not needed) were measured and not kept: on bars most triangles
+//! depend on more than 20 others (each rung is crossed by the long 3b-chains along the
+//! corridor's walls), the rules remove about 5% of them and the crossing component stays whole;
+//! on maze the components are small already.
 
 use super::circle::Circle;
 use super::degenerate::Degenerate;
-use crate::algo::number_hash::NumberMap;
 use crate::geom::kernel::{cross, Dir};
 use crate::geom::polygon::Polygon;
 
@@ -339,6 +343,9 @@ impl Staircase {
 
 const NOT_IN_STAIRCASE: (u32, u32) = (u32::MAX, u32::MAX);
 
+/// A best value not found yet.
+const UNKNOWN: u32 = u32::MAX;
+
 /// A unit or staircase piece chosen by the reconstruction.
 #[derive(Clone, Copy, Debug)]
 enum Pick {
@@ -370,6 +377,10 @@ struct Table {
     ending_unit: Vec<u32>,
     /// Each unit's entry in `ending`.
     entry_of: Vec<u32>,
+    /// The ranges the jobs ask for, by start (compressed rows): those within `a..` end at
+    /// `asked_end[asked_start[a]..asked_start[a + 1]]`, in increasing order.
+    asked_start: Vec<u32>,
+    asked_end: Vec<u32>,
     stairs: Vec<Staircase>,
     /// Per local position, for the triangle ending there: (its staircase, its index there), or
     /// `NOT_IN_STAIRCASE`.
@@ -397,8 +408,8 @@ struct Scan {
     /// Per staircase: (stamp, last end index seen, running maximum).
     run: Vec<(u32, usize, i64)>,
     stamp: u32,
-    /// The best values inside ranges asked for so far.
-    memo: NumberMap<(usize, usize), u32>,
+    /// The best value within each range of [`Table::asked_end`], or `UNKNOWN`.
+    asked_value: Vec<u32>,
 }
 
 impl Sub<'_> {
@@ -452,6 +463,8 @@ impl Sub<'_> {
             ending: Vec::new(),
             ending_unit: Vec::new(),
             entry_of: Vec::new(),
+            asked_start: Vec::new(),
+            asked_end: Vec::new(),
             stairs: Vec::new(),
             stair_of: vec![NOT_IN_STAIRCASE; p],
         };
@@ -513,45 +526,27 @@ impl Sub<'_> {
         let mut scan = Scan {
             run: vec![(0, 0, 0); table.stairs.len()],
             start: vec![(0, 0); p],
-            memo: NumberMap::with_capacity_and_hasher(jobs.len(), Default::default()),
             ..Scan::default()
         };
         jobs.sort_by_key(|&(span, kind, _)| (span, kind));
         let mut buffers = GapBuffers::default();
-        for &(_, _, job) in &jobs {
+        let (from, ranges) = self.ranges_of(&table, &jobs, &mut buffers);
+        table.index_asked(p, &ranges);
+        scan.asked_value = vec![UNKNOWN; ranges.len()];
+        for (n, &(_, _, job)) in jobs.iter().enumerate() {
+            let inside: u32 = ranges[from[n] as usize..from[n + 1] as usize]
+                .iter()
+                .map(|&(a, b)| self.best_value(&table, &mut scan, a as usize, b as usize))
+                .sum();
             match job {
                 Job::Unit(k) => {
                     let u = &table.units[k];
-                    let piece = &self.chains.paths[u.chain][u.first..=u.last];
-                    let count = piece.len() as u32;
-                    self.gaps(piece, &mut buffers);
-                    let inside: u32 = buffers
-                        .gaps
-                        .iter()
-                        .map(|&(a, b)| self.best_value(&table, &mut scan, a, b))
-                        .sum();
+                    let count = (u.last + 1 - u.first) as u32;
                     table.ending[table.entry_of[k] as usize].1 = count + inside;
                 }
-                Job::Left(s, f) => {
-                    let gaps = table.stairs[s].left_gaps(f);
-                    let v = gaps
-                        .map(|g| self.gap_value(&table, &mut scan, g))
-                        .iter()
-                        .sum();
-                    table.stairs[s].left[f] = v;
-                }
-                Job::Inner(s, j) => {
-                    let gap = table.stairs[s].inner_gap(j);
-                    table.stairs[s].inner[j] = self.gap_value(&table, &mut scan, gap);
-                }
-                Job::Right(s, r) => {
-                    let gaps = table.stairs[s].right_gaps(r);
-                    let v = gaps
-                        .map(|g| self.gap_value(&table, &mut scan, g))
-                        .iter()
-                        .sum();
-                    table.stairs[s].right[r] = v;
-                }
+                Job::Left(s, f) => table.stairs[s].left[f] = inside,
+                Job::Inner(s, j) => table.stairs[s].inner[j] = inside,
+                Job::Right(s, r) => table.stairs[s].right[r] = inside,
             }
         }
         let mut chosen = Vec::new();
@@ -576,23 +571,65 @@ impl Sub<'_> {
         (chosen, table.stairs.len())
     }
 
-    /// The best value strictly between local positions `x` and `y`.
-    fn gap_value(&self, table: &Table, scan: &mut Scan, (x, y): (usize, usize)) -> u32 {
-        if y > x + 1 {
-            self.best_value(table, scan, x + 1, y - 1)
-        } else {
-            0
+    /// The ranges (inclusive, local positions) whose best values each job sums: the gaps of a
+    /// unit, or those making up a staircase's `left`, `inner` or `right` value. Job `n` asks for
+    /// `ranges[from[n]..from[n + 1]]`.
+    fn ranges_of(
+        &self,
+        table: &Table,
+        jobs: &[(usize, u8, Job)],
+        buffers: &mut GapBuffers,
+    ) -> (Vec<u32>, Vec<(u32, u32)>) {
+        let mut from = Vec::with_capacity(jobs.len() + 1);
+        let mut ranges = Vec::new();
+        from.push(0);
+        for &(_, _, job) in jobs {
+            let mut open = |(x, y): (usize, usize)| {
+                if y > x + 1 {
+                    ranges.push((x as u32 + 1, y as u32 - 1));
+                }
+            };
+            match job {
+                Job::Unit(k) => {
+                    let u = &table.units[k];
+                    self.gaps(&self.chains.paths[u.chain][u.first..=u.last], buffers);
+                    for &(a, b) in &buffers.gaps {
+                        open((a - 1, b + 1));
+                    }
+                }
+                Job::Left(s, f) => table.stairs[s].left_gaps(f).into_iter().for_each(open),
+                Job::Inner(s, j) => open(table.stairs[s].inner_gap(j)),
+                Job::Right(s, r) => table.stairs[s].right_gaps(r).into_iter().for_each(open),
+            }
+            from.push(ranges.len() as u32);
         }
+        (from, ranges)
     }
 
-    /// The best value within `a..=b`, memoised: every unit and staircase gap inside a range is
-    /// narrower than it, so it was valued before the range was first asked for.
+    /// The best value within `a..=b`, one of the ranges asked for, found once: every unit and
+    /// staircase gap inside a range is narrower than it, so it was valued before the range was
+    /// first asked for. The scan's values also give every range asked for with the same start
+    /// and an earlier end (every unit inside it is inside `a..=b`, so valued already).
     fn best_value(&self, table: &Table, scan: &mut Scan, a: usize, b: usize) -> u32 {
-        if let Some(&v) = scan.memo.get(&(a, b)) {
-            return v;
+        let group = table.asked_start[a] as usize..table.asked_start[a + 1] as usize;
+        let ends = &table.asked_end[group.clone()];
+        let i = ends
+            .binary_search(&(b as u32))
+            .expect("every range a job asks for is listed");
+        let known = scan.asked_value[group.start + i];
+        if known != UNKNOWN {
+            return known;
         }
         let v = self.scan(table, scan, a, b);
-        scan.memo.insert((a, b), v);
+        for (j, &end) in group.zip(ends) {
+            let end = end as usize;
+            if end > b {
+                break;
+            }
+            if scan.asked_value[j] == UNKNOWN {
+                scan.asked_value[j] = scan.best[end + 1 - a];
+            }
+        }
         v
     }
 
@@ -722,6 +759,28 @@ impl Sub<'_> {
 }
 
 impl Table {
+    /// Builds `asked_start`, `asked_end` from the `ranges` the jobs ask for (a counting sort by
+    /// start), for a component with `p` positions.
+    fn index_asked(&mut self, p: usize, ranges: &[(u32, u32)]) {
+        let mut start = vec![0u32; p + 1];
+        for &(a, _) in ranges {
+            start[a as usize] += 1;
+        }
+        for a in 0..p {
+            start[a + 1] += start[a];
+        }
+        // Now `start[a]` is the end of the group of `a`: fill each group from its end.
+        let mut end = vec![0; ranges.len()];
+        for &(a, b) in ranges {
+            start[a as usize] -= 1;
+            end[start[a as usize] as usize] = b;
+        }
+        for a in 0..p {
+            end[start[a] as usize..start[a + 1] as usize].sort_unstable();
+        }
+        (self.asked_start, self.asked_end) = (start, end);
+    }
+
     /// Builds the index of the units by end position (`ending_start`, `ending`, `ending_unit`,
     /// `entry_of`) for a component with `p` positions; values are filled in later.
     fn index_ending(&mut self, p: usize) {
