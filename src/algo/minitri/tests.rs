@@ -240,6 +240,72 @@ fn crossing_components_match_brute_force() {
     }
 }
 
+/// The MIS on plain circle graphs (every chord its own 3b-chain, so dependence is crossing):
+/// random chord sets, many of them long and nested as on bars, against the largest independent
+/// set by enumeration.
+#[test]
+fn maximum_independent_set_matches_enumeration_on_random_circles() {
+    let mut rnd = crate::test_support::xorshift(0x5eed_c1c1e);
+    let mut nested = 0;
+    for _ in 0..1500 {
+        let k = 1 + rnd(13) as usize;
+        // Half of the time a ladder: chord t joins positions t and 2k - 1 - t before shuffling a
+        // few endpoints, so most chords nest.
+        let mut positions: Vec<usize> = (0..2 * k).collect();
+        let ladder = rnd(2) == 0;
+        let swaps = if ladder { rnd(3) as usize } else { 2 * k };
+        for _ in 0..swaps {
+            let (i, j) = (rnd(2 * k as i64) as usize, rnd(2 * k as i64) as usize);
+            positions.swap(i, j);
+        }
+        let chords: Vec<(usize, usize)> = (0..k)
+            .map(|t| {
+                let (x, y) = if ladder {
+                    (positions[t], positions[2 * k - 1 - t])
+                } else {
+                    (positions[2 * t], positions[2 * t + 1])
+                };
+                (x.min(y), x.max(y))
+            })
+            .collect();
+        let mut owner = vec![0; 2 * k];
+        for (t, &(l, r)) in chords.iter().enumerate() {
+            owner[l] = t;
+            owner[r] = t;
+        }
+        let c = Circle { chords, owner };
+        let ch = super::mis::Chains {
+            paths: (0..k).map(|t| vec![t]).collect(),
+            place: (0..k).map(|t| (t, 0)).collect(),
+        };
+        let (set, _) = maximum_independent_set_with(&c, &ch, true);
+        for (i, &s) in set.iter().enumerate() {
+            for &t in &set[..i] {
+                assert!(!c.cross(s, t), "{s} and {t} cross: {:?}", c.chords);
+            }
+        }
+        let best = (0u32..1 << k)
+            .filter(|&m| {
+                (0..k).all(|s| m >> s & 1 == 0 || (0..s).all(|t| m >> t & 1 == 0 || !c.cross(s, t)))
+            })
+            .map(u32::count_ones)
+            .max();
+        assert_eq!(Some(set.len() as u32), best, "{:?}", c.chords);
+        let nests = |(a, b): (usize, usize), (x, y): (usize, usize)| a < x && y < b;
+        if (0..k).any(|s| {
+            (0..k).any(|t| {
+                (0..k).any(|u| nests(c.chords[s], c.chords[t]) && nests(c.chords[t], c.chords[u]))
+            })
+        }) {
+            nested += 1;
+        }
+    }
+    assert!(
+        nested > 600,
+        "only {nested} circles with three nested chords"
+    );
+}
+
 /// A random simple polygon on the grid 0..=8 (many collinear points and flat vertices): a
 /// triangle into which up to `inserts` random points are inserted along the boundary, each kept
 /// if the polygon stays valid.
