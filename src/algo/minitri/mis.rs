@@ -51,7 +51,7 @@
 //! will ask for are listed first, by start: a scan of `a..=b` then also answers every listed
 //! range `a..=c` with `c < b` (everything inside it is inside `a..=b`, so valued already); a
 //! start is scanned again only for a longer range. Together these scan a fifth fewer positions
-//! on bars, and this step takes 40% of the instructions on the Hilbert fixture. The
+//! on bars, and cut this step on the Hilbert fixture from 62 to 24 million instructions. The
 //! reconstruction scans the gaps of the chosen units again (a quarter of the positions scanned
 //! on bars) and walks back over those values: where the best grows at a position, a unit or
 //! staircase piece ending there gives the new value (for a piece, its first chord is found by
