@@ -380,7 +380,7 @@ struct Table {
     /// value is filled in when its job runs, before any scan can reach it.
     ending_start: Vec<u32>,
     ending: Vec<(u32, u32)>,
-    /// The unit of each entry of `ending` (read only to record picks).
+    /// The unit of each entry of `ending` (read only by the reconstruction).
     ending_unit: Vec<u32>,
     /// Each unit's entry in `ending`.
     entry_of: Vec<u32>,
@@ -826,17 +826,16 @@ impl Table {
             .map(|&k| (self.units[k as usize].lo as u32, 0))
             .collect();
         self.ending_unit = order;
+        // Units only: staircase pieces add nothing, since each chord is a unit and a piece's
+        // first chord starts where the piece starts and ends within it, its last chord ends
+        // where it ends and starts within it.
         let (mut nearest_end, mut furthest_start) = (vec![NONE; p], vec![NONE; p]);
-        let mut note = |lo: usize, hi: usize| {
-            nearest_end[lo] = nearest_end[lo].min(hi as u32);
-            if furthest_start[hi] == NONE || furthest_start[hi] < lo as u32 {
-                furthest_start[hi] = lo as u32;
-            }
-        };
-        // Staircase pieces add nothing: each chord is a unit, and a piece's first chord starts
-        // where the piece starts and ends within it, its last chord ends where it ends.
         for u in &self.units {
-            note(u.lo, u.hi);
+            let (lo, hi) = (u.lo as u32, u.hi as u32);
+            nearest_end[u.lo] = nearest_end[u.lo].min(hi);
+            if furthest_start[u.hi] == NONE || furthest_start[u.hi] < lo {
+                furthest_start[u.hi] = lo;
+            }
         }
         (self.nearest_end, self.furthest_start) = (nearest_end, furthest_start);
     }
