@@ -229,6 +229,41 @@ pub(crate) fn plain_polygon(polygon: &crate::Polygon) -> Vec<[usize; 3]> {
     plain_rings(polygon.points(), polygon.ring_starts())
 }
 
+/// A plain triangulation of a valid polygon, as [`plain_polygon`], swept along the longer side of
+/// its bounding box, for walking ([`minitri::expansion`]).
+///
+/// The monotone pieces are swept bottom to top, so a long horizontal corridor is one wide piece
+/// whose walls, vertices at nearly the same heights, get joined by long fans; walks through
+/// such fans are slow, and flipping them towards Delaunay takes quadratically many flips (the
+/// `bars` benchmark: 10 million flips for 53,000 vertices). Sweeping along the corridor instead
+/// (the polygon turned a quarter-turn, `(x, y) -> (MAX_COORD - y, x)`: exact, orientation and
+/// grid kept, the stored indices unchanged) meets its walls' vertices alternately: short fans
+/// (40,000 flips there). A corridor crossing the sweep elsewhere in the same polygon is still
+/// slow, never wrong.
+pub(crate) fn plain_polygon_for_walking(polygon: &crate::Polygon) -> Vec<[usize; 3]> {
+    use crate::geom::kernel::{Point, MAX_COORD};
+    let pts = polygon.points();
+    if pts.len() <= 16 {
+        return plain_polygon(polygon);
+    }
+    let (mut lo, mut hi) = (pts[0], pts[0]);
+    for p in pts {
+        (lo.x, lo.y) = (lo.x.min(p.x), lo.y.min(p.y));
+        (hi.x, hi.y) = (hi.x.max(p.x), hi.y.max(p.y));
+    }
+    if hi.x - lo.x <= hi.y - lo.y {
+        return plain_polygon(polygon);
+    }
+    let turned: Vec<Point> = pts
+        .iter()
+        .map(|p| Point {
+            x: MAX_COORD - p.y,
+            y: p.x,
+        })
+        .collect();
+    plain_rings(&turned, polygon.ring_starts())
+}
+
 /// Why an algorithm could not triangulate a (valid) polygon.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 #[non_exhaustive]

@@ -390,6 +390,51 @@ fn bars(columns: usize, seed: u64) -> Polygon {
     polygon(&[&ring])
 }
 
+/// The ring of a [`bars`] polygon, wide (along x) or turned a quarter-turn (tall).
+fn bars_ring(columns: usize, seed: u64, tall: bool) -> Vec<(i64, i64)> {
+    let p = bars(columns, seed);
+    (0..p.len())
+        .map(|v| {
+            let q = p.point(v);
+            if tall {
+                (100 - q.y, q.x)
+            } else {
+                (q.x, q.y)
+            }
+        })
+        .collect()
+}
+
+#[test]
+fn wide_polygons_are_swept_along_their_length_and_found_alike() {
+    // A wide polygon's walking mesh comes from the monotone sweep turned a quarter-turn
+    // (`plain_polygon_for_walking`); its tall twin's from the plain sweep. Both meshes must be
+    // triangulations, and the expansion over either must find what the sweep oracle finds.
+    let mut counts = [0, 0];
+    for seed in 1..=150u64 {
+        let columns = 6 + (seed as usize % 50);
+        let mut found = [0, 0];
+        for tall in [false, true] {
+            let ring = bars_ring(columns, seed, tall);
+            let p = polygon(&[&ring]);
+            let t = crate::algo::Triangulation {
+                algorithm: crate::algo::Algorithm::Ear,
+                triangles: crate::algo::plain_polygon_for_walking(&p),
+                degenerate: Vec::new(),
+                optimal: false,
+                lower_bound: None,
+            };
+            let check = crate::verify::check(&p, &t);
+            assert!(check.valid, "seed {seed} tall {tall}: {:?}", check.problems);
+            found[usize::from(tall)] = checked_against_the_sweep(&p, &ring).len();
+        }
+        assert_eq!(found[0], found[1], "seed {seed}: congruent polygons");
+        counts[0] += found[0];
+        counts[1] += 1;
+    }
+    assert!(counts[0] > 3000, "{counts:?}");
+}
+
 #[test]
 fn staircase_shortcut_matches_listing_every_piece() {
     let mut stairs_seen = 0;
