@@ -207,3 +207,40 @@ pub fn triangulate_with_cuts(
         .map(|(t, _)| *t)
         .collect()
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::test_support::polygon;
+
+    /// The stored index of the vertex at input coordinates `q`.
+    fn vertex(p: &Polygon, q: (i64, i64)) -> usize {
+        let text = format!("({}, {})", q.0, q.1);
+        (0..p.len())
+            .find(|&i| p.format_vertex(i) == text)
+            .expect("a vertex there")
+    }
+
+    #[test]
+    fn pinch_repro() {
+        let (s, p, r, e, t) = ((-20, 0), (-10, -10), (10, -10), (20, 0), (0, 20));
+        let (v, sv, q) = ((0, 10), (2, 2), (-2, 2));
+        let poly = polygon(&[&[s, p, r, e, t], &[v, sv, q]]);
+        let at = |x| vertex(&poly, x);
+        let tris: Vec<[usize; 3]> = [
+            [v, p, q],
+            [p, r, q],
+            [q, r, sv],
+            [v, sv, r],
+            [s, p, v],
+            [r, e, v],
+            [s, v, t],
+            [v, e, t],
+        ]
+        .iter()
+        .map(|t| t.map(at))
+        .collect();
+        let mut mesh = Mesh::new(&poly, tris);
+        mesh.insert(at(s), at(e));
+    }
+}
