@@ -415,7 +415,8 @@ fn check(poly: &Polygon, exhaustive_up_to: usize, stats: &mut Stats) -> Result<(
     prop_assert!(lower <= count && count <= upper);
     // MINITRI with holes (dependency graph, exact search, cuts) must reach the same minimum,
     // prove it (the search finishes on these sizes), and pass the checker.
-    let fast = minitri::algo::minitri::triangulate_general(poly, None);
+    let fast = minitri::algo::minitri::triangulate_general(poly, None)
+        .map_err(|e| TestCaseError::fail(e.to_string()))?;
     let report = verify::check(poly, &fast);
     prop_assert!(
         report.valid,

@@ -26,7 +26,7 @@
 //!
 //! How S is found: the hull is triangulated once (the polygon with its holes by
 //! `algo::plain_polygon`, each hole and pocket by `algo::plain`; O(n log n)), with the edges of
-//! L and of the hull marked fixed (`pseudo_hull/mesh.rs`), and its triangles fattened by Lawson
+//! L and of the hull marked fixed (`algo/mesh.rs`), and its triangles fattened by Lawson
 //! flips (a heuristic for speed only: fat triangles make short sleeves). Walking along A1 just
 //! inside F crosses, at each inner vertex of A1, the diagonals inside F's angle there,
 //! clockwise; with immediate back-and-forth crossings of one diagonal cancelled, this is the
@@ -83,13 +83,12 @@
 //! limit.
 
 mod funnel;
-mod mesh;
 
+use super::mesh::{Broken, Half, Mesh};
 use super::TriangulateError;
 use super::{plain, plain_polygon, HullCounts, Pseudotriangle, Pseudotriangulation};
 use crate::geom::kernel::{cmp_angle, cross, Point};
 use crate::geom::polygon::Polygon;
-use mesh::{Broken, Half, Mesh};
 use std::collections::HashSet;
 
 /// A minimum pseudotriangulation of the convex hull of `polygon`'s vertices containing its

@@ -8,12 +8,16 @@
 //!
 //! 1. Start from any plain triangulation of P (n + 2w - 2 triangles, every side an edge or a
 //!    proper diagonal).
-//! 2. Insert the sides `a b` and `b c` of every chosen triangle as edges: remove the triangles the
-//!    segment crosses and triangulate the two polygons on its sides (the classic insertion of a
-//!    constraint; de Berg et al., *Computational Geometry*, §9.3 / Anglada 1997). The count does
-//!    not change: `v` vertices around the removed region, `v - 2` triangles before and after.
-//!    A side has no vertex inside it (minimality) and chosen triangles never cross (they are
-//!    independent), so the segment crosses diagonals only, and never an inserted side.
+//! 2. Insert the sides `a b` and `b c` of every chosen triangle as edges by flips (Sloan,
+//!    "A fast algorithm for generating constrained Delaunay triangulations", *Computers &
+//!    Structures* 47 (1993) 441-450; [`crate::algo::mesh`]): walk along the segment listing the
+//!    diagonals it crosses, flip each whose quadrilateral is strictly convex, until the segment
+//!    is an edge; it is then fixed. A flip keeps the count of triangles. A side has no vertex
+//!    inside it (minimality) and chosen triangles never cross (they are independent), so the
+//!    segment crosses diagonals only, and never a side inserted before. (Removing the crossed
+//!    triangles and triangulating the two sides again is not enough: the triangles crossed on
+//!    one side can go round a hole, or round a triangle the segment misses, and touch at a
+//!    vertex; see the tests.)
 //! 3. For every chosen `(a, b, c)`, the triangles at `b` in its closed 180-degree half-plane
 //!    form a fan whose union is a polygon `l_0, l_1, .., l_k` (star-shaped from `b`, with `b`
 //!    inside its side `l_k l_0` on the line `a c`); retriangulating it without `b` turns `k`
@@ -22,41 +26,45 @@
 //!    another; a 3b-partner merged before only moves the fan's end along the line.
 //!
 //! The result has `n + 2w - 2 - d` nondegenerate triangles; the independent checker
-//! ([`crate::verify`]) proves each output. Every decision is an exact orientation test.
+//! ([`crate::verify`]) proves each output. Every decision is an exact orientation test. What
+//! the argument above rules out is still checked (a side through a vertex or across a fixed
+//! edge, stuck flips, a fan that is not a chain): should a check fail, the polygon gets
+//! [`TriangulateError::MinitriCutFailed`], never a panic or a wrong answer.
 //!
-//! Complexity: each insertion costs the triangles its segment crosses plus their plain
-//! retriangulation, O(n log n) at worst per segment; each fan, its size. Near-linear when the
-//! chosen triangles are short, O(d n log n) at worst.
+//! Complexity: O(m log m) to build the mesh of the m = n + 2w - 2 triangles; each insertion
+//! costs the k diagonals its segment crosses, O(k^2) flips at worst (Sloan's bound) and about k
+//! in practice; each fan, its size (its polygon triangulated by `crate::algo::plain`).
+//! Near-linear when the chosen triangles are short, O(d n^2) at worst.
 
 use super::degenerate::Degenerate;
-use crate::algo::plain;
+use crate::algo::mesh::Mesh;
+use crate::algo::{plain, TriangulateError};
 use crate::geom::kernel::{cross, Point};
 use crate::geom::polygon::Polygon;
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
-/// A triangulation under edits: triangles by index, and the triangle of every directed edge.
-struct Mesh<'a> {
+/// The triangulation of step 3 under edits: triangles by index, alive or removed, and the
+/// triangles ever added at each vertex (removed ones included). No neighbour links: a merged
+/// fan leaves a T-junction at its middle vertex, which edge-to-edge meshes cannot hold.
+struct Fans<'a> {
     polygon: &'a Polygon,
     triangles: Vec<[usize; 3]>,
     alive: Vec<bool>,
-    by_edge: HashMap<(usize, usize), usize>,
-    /// The triangles ever added at each vertex (dead ones included).
     at_vertex: Vec<Vec<usize>>,
 }
 
-impl<'a> Mesh<'a> {
-    fn new(polygon: &'a Polygon, triangles: Vec<[usize; 3]>) -> Mesh<'a> {
-        let mut mesh = Mesh {
+impl<'a> Fans<'a> {
+    fn new(polygon: &'a Polygon, triangles: impl Iterator<Item = [usize; 3]>) -> Fans<'a> {
+        let mut fans = Fans {
             polygon,
-            triangles: Vec::with_capacity(triangles.len()),
+            triangles: Vec::new(),
             alive: Vec::new(),
-            by_edge: HashMap::with_capacity(3 * triangles.len()),
             at_vertex: vec![Vec::new(); polygon.len()],
         };
         for t in triangles {
-            mesh.add(t);
+            fans.add(t);
         }
-        mesh
+        fans
     }
 
     fn point(&self, v: usize) -> Point {
@@ -65,96 +73,25 @@ impl<'a> Mesh<'a> {
 
     fn add(&mut self, t: [usize; 3]) {
         let id = self.triangles.len();
-        for k in 0..3 {
-            self.by_edge.insert((t[k], t[(k + 1) % 3]), id);
-            self.at_vertex[t[k]].push(id);
+        for v in t {
+            self.at_vertex[v].push(id);
         }
         self.triangles.push(t);
         self.alive.push(true);
     }
 
-    fn remove(&mut self, id: usize) {
-        let t = self.triangles[id];
-        for k in 0..3 {
-            self.by_edge.remove(&(t[k], t[(k + 1) % 3]));
-        }
-        self.alive[id] = false;
-    }
-
-    /// The triangle holding the directed edge `u -> v`, as `(id, third vertex)`.
-    fn across(&self, u: usize, v: usize) -> Option<(usize, usize)> {
-        let &id = self.by_edge.get(&(u, v))?;
-        let t = self.triangles[id];
-        let k = t.iter().position(|&x| x == u)?;
-        Some((id, t[(k + 2) % 3]))
-    }
-
-    /// Triangulates the counter-clockwise polygon `ring` (vertex indices) and adds the triangles.
-    fn fill(&mut self, ring: &[usize]) {
-        let points: Vec<Point> = ring.iter().map(|&v| self.point(v)).collect();
-        for t in plain(&points) {
-            self.add(t.map(|i| ring[i]));
-        }
-    }
-
-    /// Makes the segment `s e` an edge. Contract: it is a chord with no vertex inside, crossing
-    /// no edge that must stay.
-    fn insert(&mut self, s: usize, e: usize) {
-        if self.by_edge.contains_key(&(s, e)) || self.by_edge.contains_key(&(e, s)) {
-            return;
-        }
-        let (ps, pe) = (self.point(s), self.point(e));
-        // The triangle (s, x, y) at s whose angle holds the direction to e: rotate
-        // counter-clockwise around s from its boundary edge to next(s).
-        let mut x = self.polygon.next(s);
-        let (mut id, mut y) = self.across(s, x).expect("a boundary edge has a triangle");
-        while !(cross(ps, self.point(x), pe) > 0 && cross(ps, pe, self.point(y)) > 0) {
-            x = y;
-            (id, y) = self
-                .across(s, x)
-                .expect("the segment leaves s inside the polygon");
-        }
-        // Walk along s -> e: x on its right, y on its left.
-        let mut removed = vec![id];
-        let (mut right, mut left) = (vec![x], vec![y]);
-        loop {
-            let (next, z) = self
-                .across(y, x)
-                .expect("the segment crosses diagonals only");
-            removed.push(next);
-            if z == e {
-                break;
-            }
-            if cross(ps, pe, self.point(z)) < 0 {
-                right.push(z);
-                x = z;
-            } else {
-                left.push(z);
-                y = z;
-            }
-        }
-        for id in removed {
-            self.remove(id);
-        }
-        let mut upper = vec![s, e];
-        upper.extend(left.iter().rev());
-        let mut lower = vec![e, s];
-        lower.extend(right);
-        self.fill(&upper);
-        self.fill(&lower);
-    }
-
-    /// Retriangulates the fan at `m.b` on its 180-degree side without `b` as a corner.
+    /// Retriangulates the fan at `m.b` on its 180-degree side without `b` as a corner; `None`
+    /// if the triangles there do not chain into one fan (excluded by the module's argument).
     ///
     /// The fan is taken as the triangles around `b` lying in the closed 180-degree half-plane,
     /// not as the triangles between the edges `b a` and `b c`: when a 3b-partner sharing `a b`
     /// was merged first, `b a` is no longer an edge there (the side through `a` and `b` now
     /// ends beyond `a`), yet the half-plane's fan is still bounded by the line.
-    fn merge_fan(&mut self, m: &Degenerate) {
+    fn merge(&mut self, m: &Degenerate) -> Option<()> {
         let (pa, pc) = (self.point(m.a), self.point(m.c));
         let other_side = m.non_straight_side(self.polygon);
         let in_half_plane =
-            |mesh: &Self, v: usize| cross(pa, pc, mesh.point(v)).signum() as i32 != other_side;
+            |fans: &Self, v: usize| cross(pa, pc, fans.point(v)).signum() as i32 != other_side;
         // The live triangles (b, u, w) at b in the half-plane, chained by u -> w (they cannot be
         // walked by shared edges: an earlier merge may have left a T-junction at b's partner).
         let b = m.b;
@@ -164,53 +101,76 @@ impl<'a> Mesh<'a> {
                 continue;
             }
             let t = self.triangles[id];
-            let k = t.iter().position(|&v| v == b).expect("listed at b");
+            let k = t.iter().position(|&v| v == b)?;
             let (u, w) = (t[(k + 1) % 3], t[(k + 2) % 3]);
-            if in_half_plane(self, u) && in_half_plane(self, w) {
-                fan.insert(u, (id, w));
+            if in_half_plane(self, u) && in_half_plane(self, w) && fan.insert(u, (id, w)).is_some()
+            {
+                return None; // two triangles from one edge
             }
         }
-        let ends: std::collections::HashSet<usize> = fan.values().map(|&(_, w)| w).collect();
-        let mut at = *fan
-            .keys()
-            .find(|u| !ends.contains(u))
-            .expect("the fan has a first triangle");
+        let ends: HashSet<usize> = fan.values().map(|&(_, w)| w).collect();
+        let mut at = *fan.keys().find(|u| !ends.contains(u))?;
         let mut link = vec![at];
-        while let Some(&(id, w)) = fan.get(&at) {
-            self.remove(id);
+        while let Some((id, w)) = fan.remove(&at) {
+            self.alive[id] = false;
             link.push(w);
             at = w;
         }
-        self.fill(&link);
+        // One chain of at least two triangles from the line a c round to it again: the link is
+        // then a simple polygon, star-shaped from b on its side `l_k l_0`.
+        let on_line = |v: usize| cross(pa, pc, self.point(v)) == 0;
+        if !fan.is_empty() || link.len() < 3 || !on_line(link[0]) || !on_line(at) {
+            return None;
+        }
+        let points: Vec<Point> = link.iter().map(|&v| self.point(v)).collect();
+        for t in plain(&points) {
+            self.add(t.map(|i| link[i]));
+        }
+        Some(())
     }
 }
 
 /// The triangles of P with the chosen (independent) triangles cut in, starting from the plain
 /// triangulation `base`: `base.len() - chosen.len()` triangles, counter-clockwise.
+///
+/// # Errors
+/// [`TriangulateError::MinitriCutFailed`] if a self-check fails (see the module docs; not seen
+/// in the tests).
 pub fn triangulate_with_cuts(
     polygon: &Polygon,
     base: Vec<[usize; 3]>,
     chosen: &[Degenerate],
-) -> Vec<[usize; 3]> {
-    let mut mesh = Mesh::new(polygon, base);
+) -> Result<Vec<[usize; 3]>, TriangulateError> {
+    let failed = |step: &'static str, m: &Degenerate| TriangulateError::MinitriCutFailed {
+        step,
+        vertex: polygon.id(m.b),
+        point: polygon.format_vertex(m.b),
+    };
+    let mut mesh = Mesh::new(polygon.points(), &base, &[]);
+    drop(base);
     for m in chosen {
-        mesh.insert(m.a, m.b);
-        mesh.insert(m.b, m.c);
+        mesh.insert(m.a, m.b)
+            .and_then(|()| mesh.insert(m.b, m.c))
+            .map_err(|_| failed("inserting the sides", m))?;
     }
+    let mut fans = Fans::new(polygon, mesh.triangles());
+    drop(mesh);
     for m in chosen {
-        mesh.merge_fan(m);
+        fans.merge(m).ok_or_else(|| failed("merging the fan", m))?;
     }
-    mesh.triangles
+    Ok(fans
+        .triangles
         .iter()
-        .zip(&mesh.alive)
+        .zip(&fans.alive)
         .filter(|(_, &alive)| alive)
         .map(|(t, _)| *t)
-        .collect()
+        .collect())
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::algo::{Algorithm, Triangulation};
     use crate::test_support::polygon;
 
     /// The stored index of the vertex at input coordinates `q`.
@@ -221,18 +181,24 @@ mod tests {
             .expect("a vertex there")
     }
 
+    /// The segment `s e` along y = 0 crosses, in order, the triangles (s p v), (v p q),
+    /// (p r q), (q r s'), (v s' r) and (r e v), p and r below it, v, q and s' above: the
+    /// triangles crossed on the upper side meet at v twice, going round the hole (v s' q). Their
+    /// upper boundary e, v, s', q, v, s touches itself at v; removing them and triangulating the
+    /// two sides again (the insertion used before) panicked in ear clipping ("no ear in a valid
+    /// polygon"). Flips insert it.
     #[test]
-    fn pinch_repro() {
+    fn a_side_whose_crossed_triangles_pinch_round_a_hole_is_inserted_by_flips() {
         let (s, p, r, e, t) = ((-20, 0), (-10, -10), (10, -10), (20, 0), (0, 20));
-        let (v, sv, q) = ((0, 10), (2, 2), (-2, 2));
-        let poly = polygon(&[&[s, p, r, e, t], &[v, sv, q]]);
+        let (v, s2, q) = ((0, 10), (2, 2), (-2, 2));
+        let poly = polygon(&[&[s, p, r, e, t], &[v, s2, q]]);
         let at = |x| vertex(&poly, x);
-        let tris: Vec<[usize; 3]> = [
+        let base: Vec<[usize; 3]> = [
+            [s, p, v],
             [v, p, q],
             [p, r, q],
-            [q, r, sv],
-            [v, sv, r],
-            [s, p, v],
+            [q, r, s2],
+            [v, s2, r],
             [r, e, v],
             [s, v, t],
             [v, e, t],
@@ -240,7 +206,26 @@ mod tests {
         .iter()
         .map(|t| t.map(at))
         .collect();
-        let mut mesh = Mesh::new(&poly, tris);
-        mesh.insert(at(s), at(e));
+        let as_triangulation = |triangles: Vec<[usize; 3]>| Triangulation {
+            algorithm: Algorithm::Ear,
+            triangles,
+            degenerate: Vec::new(),
+            optimal: false,
+            lower_bound: None,
+        };
+        let report = crate::verify::check(&poly, &as_triangulation(base.clone()));
+        assert!(report.valid, "the hand-made base: {:?}", report.problems);
+        let mut mesh = Mesh::new(poly.points(), &base, &[]);
+        assert!(mesh.half_from(at(s), at(e)).is_none() && mesh.half_from(at(e), at(s)).is_none());
+        assert_eq!(mesh.insert(at(s), at(e)), Ok(()));
+        assert!(
+            mesh.is_fixed_edge(at(s), at(e)),
+            "the segment is a (fixed) edge"
+        );
+        mesh.consistent().expect("neighbour links consistent");
+        let after: Vec<[usize; 3]> = mesh.triangles().collect();
+        assert_eq!(after.len(), base.len());
+        let report = crate::verify::check(&poly, &as_triangulation(after));
+        assert!(report.valid, "{:?}", report.problems);
     }
 }

@@ -446,7 +446,7 @@ fn the_dependency_relation_is_the_circle_crossing_relation_without_holes() {
 #[test]
 fn cutting_a_3b_pair_merges_both_fans() {
     let p = polygon(&[&[(1, 3), (0, 0), (1, 4), (1, 5), (2, 0), (1, 2)]]);
-    let t = super::triangulate_general(&p, None);
+    let t = super::triangulate_general(&p, None).unwrap();
     assert_eq!(t.degenerate.len(), 2);
     assert_eq!(t.triangles.len(), 2);
     assert!(crate::verify::check(&p, &t).valid);

@@ -1,23 +1,37 @@
-//! A triangulation of the convex hull under edits, for the construction of Theorem 6: triangles
-//! with neighbour links, some edges **fixed** (the segments of L, the hull edges and every edge
-//! of a shortest path added so far: the edges of the pseudotriangulation being built), the others
-//! plain diagonals that only serve to walk the faces.
+//! A triangulation under edits, with some edges **fixed**: triangles with neighbour links, the
+//! other edges plain diagonals that may be flipped. Shared by `--algorithm pseudo-hull`
+//! ([`crate::algo::pseudo_hull`]: the convex hull triangulated; the polygon's edges, the hull
+//! edges and each shortest path added so far fixed; faces walked across diagonals) and by
+//! MINITRI with holes ([`crate::algo::minitri::cut`]: the sides of the chosen degenerate
+//! triangles made edges of a plain triangulation of the polygon).
+//!
+//! Input contract: counter-clockwise nondegenerate triangles with disjoint interiors, meeting
+//! edge to edge, whose union is a region in which every vertex has one fan of triangles (all
+//! round it, or from one boundary edge to another: the region never touches itself at a
+//! vertex). An edge with a triangle on one side only is on the region's boundary and is never
+//! crossed.
 //!
 //! A half-edge is edge `k` of triangle `t`, from its vertex `k` to its vertex `k + 1`, with `t`
-//! on its left. The faces of the pseudotriangulation are the unions of triangles joined across
+//! on its left. The faces of a pseudotriangulation are the unions of triangles joined across
 //! diagonals; [`Mesh::next_boundary`] walks a face's boundary (face on the left), turning
 //! clockwise around each vertex through the face's triangles, and reports the diagonals crossed.
 //!
 //! Segment insertion ([`Mesh::insert`]): the diagonals the segment crosses are found by walking
 //! along it, then flipped while their quadrilateral is strictly convex until the segment is an
-//! edge (Sloan 1993; O(k^2) flips at worst for k crossed diagonals). Removing the crossed
-//! triangles and triangulating the two sides again would be quicker but is wrong here: with
-//! holes, the triangles crossed on one side can surround a hole and touch at a vertex (seen in the
-//! property tests), which no triangulator of simple polygons accepts. Every decision is an exact
-//! orientation test; a segment that would pass through a vertex or cross a fixed edge, or flips
-//! that get stuck, are refused ([`Broken`]), never drawn. [`Mesh::fatten`] flips diagonals
-//! towards the Delaunay triangulation with the kernel's floating-point in-circle heuristic,
-//! which only steers speed (the allowed flips are decided exactly).
+//! edge (Sloan 1993; O(k^2) flips at worst for k crossed diagonals, about k in practice).
+//! Removing the crossed triangles and triangulating the two sides again would be quicker but is
+//! wrong in general: the triangles crossed on one side can go round a hole (or round triangles
+//! not crossed) and touch at a vertex, which no triangulator of simple polygons accepts (seen in
+//! pseudo-hull's property tests, and in MINITRI's cut step before it used this mesh). Every
+//! decision is an exact orientation test; a segment that would pass through a vertex or cross a
+//! fixed or boundary edge, or flips that get stuck, are refused ([`Broken`]), never drawn.
+//! [`Mesh::fatten`] flips diagonals towards the Delaunay triangulation with the kernel's
+//! floating-point in-circle heuristic, which only steers speed (the allowed flips are decided
+//! exactly).
+//!
+//! Complexity: O(m log m) to build for m triangles (half-edges sorted to link twins); a
+//! half-edge found by its ends in expected O(1) (hash map); an insertion started in O(degree)
+//! at its first vertex, walked in O(k), then the flips above.
 
 use crate::algo::number_hash::NumberMap;
 use crate::geom::kernel::{cross, dot, incircle_approx, Point};
@@ -25,13 +39,14 @@ use std::collections::VecDeque;
 
 const NONE: u32 = u32::MAX;
 
-/// An inconsistency the construction must not meet (see the module docs of `pseudo_hull`).
+/// An inconsistency a caller's construction must not meet: a segment through a vertex or across a
+/// fixed or boundary edge, stuck flips, a missing edge (see the callers' module docs).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) struct Broken;
+pub(crate) struct Broken;
 
 /// Edge `k` of triangle `t` (its vertex `k` to its vertex `k + 1`, the triangle on its left).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) struct Half {
+pub(crate) struct Half {
     t: u32,
     k: u8,
 }
@@ -62,7 +77,7 @@ type Halves = NumberMap<u64, Half>;
 /// finished (a pseudotriangle already reported).
 const DONE: u8 = 8;
 
-pub(super) struct Mesh<'a> {
+pub(crate) struct Mesh<'a> {
     pts: &'a [Point],
     tv: Vec<[u32; 3]>,
     tn: Vec<[u32; 3]>,
@@ -72,13 +87,13 @@ pub(super) struct Mesh<'a> {
     /// Every half-edge by its ends (`from << 32 | to`).
     halves: Halves,
     /// The number of fixed edges.
-    pub(super) fixed_edges: usize,
+    pub(crate) fixed_edges: usize,
 }
 
 impl<'a> Mesh<'a> {
-    /// The mesh of `triangles` (counter-clockwise, covering the hull of `pts` exactly), with the
-    /// undirected edges `fixed` fixed (each an edge of some triangle).
-    pub(super) fn new(
+    /// The mesh of `triangles` (indices into `pts`, as the module's input contract says), with
+    /// the undirected edges `fixed` fixed (each an edge of some triangle).
+    pub(crate) fn new(
         pts: &'a [Point],
         triangles: &[[usize; 3]],
         fixed: &[(usize, usize)],
@@ -128,23 +143,28 @@ impl<'a> Mesh<'a> {
         mesh
     }
 
-    pub(super) fn origin(&self, h: Half) -> usize {
+    pub(crate) fn origin(&self, h: Half) -> usize {
         self.tv[h.t as usize][h.k as usize] as usize
     }
 
-    pub(super) fn dest(&self, h: Half) -> usize {
+    pub(crate) fn dest(&self, h: Half) -> usize {
         self.tv[h.t as usize][(h.k as usize + 1) % 3] as usize
     }
 
-    pub(super) fn point(&self, v: usize) -> Point {
+    pub(crate) fn point(&self, v: usize) -> Point {
         self.pts[v]
     }
 
-    pub(super) fn points(&self) -> &'a [Point] {
+    pub(crate) fn points(&self) -> &'a [Point] {
         self.pts
     }
 
-    /// The same edge the other way, in the triangle on its right (none outside the hull).
+    /// The triangles, counter-clockwise, as indices into the points.
+    pub(crate) fn triangles(&self) -> impl Iterator<Item = [usize; 3]> + '_ {
+        self.tv.iter().map(|t| t.map(|v| v as usize))
+    }
+
+    /// The same edge the other way, in the triangle on its right (none on the region's boundary).
     fn twin(&self, h: Half) -> Option<Half> {
         let t = self.tn[h.t as usize][h.k as usize];
         if t == NONE {
@@ -155,15 +175,15 @@ impl<'a> Mesh<'a> {
         Some(Half { t, k: k as u8 })
     }
 
-    pub(super) fn is_fixed(&self, h: Half) -> bool {
+    pub(crate) fn is_fixed(&self, h: Half) -> bool {
         self.flags[h.t as usize] & (1 << h.k) != 0
     }
 
-    pub(super) fn is_done(&self, h: Half) -> bool {
+    pub(crate) fn is_done(&self, h: Half) -> bool {
         self.flags[h.t as usize] & (DONE << h.k) != 0
     }
 
-    pub(super) fn set_done(&mut self, h: Half) {
+    pub(crate) fn set_done(&mut self, h: Half) {
         self.flags[h.t as usize] |= DONE << h.k;
     }
 
@@ -179,8 +199,8 @@ impl<'a> Mesh<'a> {
         }
     }
 
-    /// The half-edges leaving `u`, in rotation order (counter-clockwise, starting after a hull
-    /// edge if `u` is on the hull).
+    /// The half-edges leaving `u`, in rotation order (counter-clockwise, starting after a
+    /// boundary edge if `u` is on the region's boundary).
     fn around(&self, u: usize) -> Vec<Half> {
         let t = self.vt[u];
         let Some(k) = self.tv[t as usize].iter().position(|&v| v as usize == u) else {
@@ -209,12 +229,12 @@ impl<'a> Mesh<'a> {
     }
 
     /// The half-edge `u -> v`, if it is an edge with a triangle on its left.
-    pub(super) fn half_from(&self, u: usize, v: usize) -> Option<Half> {
+    pub(crate) fn half_from(&self, u: usize, v: usize) -> Option<Half> {
         self.halves.get(&key(u, v)).copied()
     }
 
     /// Whether `u v` is a fixed edge.
-    pub(super) fn is_fixed_edge(&self, u: usize, v: usize) -> bool {
+    pub(crate) fn is_fixed_edge(&self, u: usize, v: usize) -> bool {
         self.half_from(u, v)
             .or_else(|| self.half_from(v, u))
             .is_some_and(|h| self.is_fixed(h))
@@ -238,7 +258,7 @@ impl<'a> Mesh<'a> {
     /// The next fixed half-edge along the boundary of the face on the left of the fixed
     /// half-edge `h` (turning clockwise round its head); the diagonals crossed on the way are
     /// passed to `crossed` as `(right, left)` = (the head of `h`, the diagonal's other end).
-    pub(super) fn next_boundary(&self, h: Half, mut crossed: impl FnMut(usize, usize)) -> Half {
+    pub(crate) fn next_boundary(&self, h: Half, mut crossed: impl FnMut(usize, usize)) -> Half {
         let mut g = h.next();
         while !self.is_fixed(g) {
             crossed(self.origin(g), self.dest(g));
@@ -252,7 +272,7 @@ impl<'a> Mesh<'a> {
     }
 
     /// The fixed half-edge before `h` along the boundary of the face on its left.
-    pub(super) fn prev_boundary(&self, h: Half) -> Half {
+    pub(crate) fn prev_boundary(&self, h: Half) -> Half {
         let mut g = h.prev();
         while !self.is_fixed(g) {
             g = match self.twin(g) {
@@ -265,7 +285,7 @@ impl<'a> Mesh<'a> {
 
     /// Makes segment `s e` a fixed edge: fixes it if it is an edge, inserts it otherwise.
     /// Refused if it passes through a vertex or crosses a fixed edge.
-    pub(super) fn insert(&mut self, s: usize, e: usize) -> Result<(), Broken> {
+    pub(crate) fn insert(&mut self, s: usize, e: usize) -> Result<(), Broken> {
         let (ps, pe) = (self.point(s), self.point(e));
         if let Some(h) = self.half_from(s, e).or_else(|| self.half_from(e, s)) {
             self.fix(h);
@@ -352,7 +372,7 @@ impl<'a> Mesh<'a> {
     /// fixed edges); whether it is DESIRABLE is [`incircle_approx`], a heuristic that never
     /// decides a fact of the answer (hence the bound on the flips, should rounding make them
     /// cycle).
-    pub(super) fn fatten(&mut self, max_flips: usize) {
+    pub(crate) fn fatten(&mut self, max_flips: usize) {
         let mut stack: Vec<Half> = (0..self.tv.len() as u32)
             .flat_map(|t| (0..3u8).map(move |k| Half { t, k }))
             .collect();
@@ -429,7 +449,7 @@ impl<'a> Mesh<'a> {
     }
 
     #[cfg(test)]
-    pub(super) fn consistent(&self) -> Result<(), String> {
+    pub(crate) fn consistent(&self) -> Result<(), String> {
         for t in 0..self.tv.len() as u32 {
             for k in 0..3u8 {
                 let h = Half { t, k };
