@@ -170,62 +170,46 @@ pub fn triangulate_with_cuts(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::algo::minitri::degenerate::Kind;
     use crate::algo::{Algorithm, Triangulation};
-    use crate::test_support::polygon;
+    use crate::test_support::{pinched_round_a_hole, vertex_at};
 
-    /// The stored index of the vertex at input coordinates `q`.
-    fn vertex(p: &Polygon, q: (i64, i64)) -> usize {
-        let text = format!("({}, {})", q.0, q.1);
-        (0..p.len())
-            .find(|&i| p.format_vertex(i) == text)
-            .expect("a vertex there")
-    }
-
-    /// The segment `s e` along y = 0 crosses, in order, the triangles (s p v), (v p q),
-    /// (p r q), (q r s'), (v s' r) and (r e v), p and r below it, v, q and s' above: the
-    /// triangles crossed on the upper side meet at v twice, going round the hole (v s' q). Their
-    /// upper boundary e, v, s', q, v, s touches itself at v; removing them and triangulating the
-    /// two sides again (the insertion used before) panicked in ear clipping ("no ear in a valid
-    /// polygon"). Flips insert it.
-    #[test]
-    fn a_side_whose_crossed_triangles_pinch_round_a_hole_is_inserted_by_flips() {
-        let (s, p, r, e, t) = ((-20, 0), (-10, -10), (10, -10), (20, 0), (0, 20));
-        let (v, s2, q) = ((0, 10), (2, 2), (-2, 2));
-        let poly = polygon(&[&[s, p, r, e, t], &[v, s2, q]]);
-        let at = |x| vertex(&poly, x);
-        let base: Vec<[usize; 3]> = [
-            [s, p, v],
-            [v, p, q],
-            [p, r, q],
-            [q, r, s2],
-            [v, s2, r],
-            [r, e, v],
-            [s, v, t],
-            [v, e, t],
-        ]
-        .iter()
-        .map(|t| t.map(at))
-        .collect();
-        let as_triangulation = |triangles: Vec<[usize; 3]>| Triangulation {
-            algorithm: Algorithm::Ear,
+    fn checked(polygon: &Polygon, triangles: Vec<[usize; 3]>, degenerate: Vec<[usize; 3]>) {
+        let t = Triangulation {
+            algorithm: Algorithm::Minitri,
             triangles,
-            degenerate: Vec::new(),
+            degenerate,
             optimal: false,
             lower_bound: None,
         };
-        let report = crate::verify::check(&poly, &as_triangulation(base.clone()));
-        assert!(report.valid, "the hand-made base: {:?}", report.problems);
-        let mut mesh = Mesh::new(poly.points(), &base, &[]);
-        assert!(mesh.half_from(at(s), at(e)).is_none() && mesh.half_from(at(e), at(s)).is_none());
-        assert_eq!(mesh.insert(at(s), at(e)), Ok(()));
-        assert!(
-            mesh.is_fixed_edge(at(s), at(e)),
-            "the segment is a (fixed) edge"
-        );
-        mesh.consistent().expect("neighbour links consistent");
-        let after: Vec<[usize; 3]> = mesh.triangles().collect();
-        assert_eq!(after.len(), base.len());
-        let report = crate::verify::check(&poly, &as_triangulation(after));
-        assert!(report.valid, "{:?}", report.problems);
+        let report = crate::verify::check(polygon, &t);
+        assert!(report.valid, "{:?}: {:?}", t.triangles, report.problems);
+    }
+
+    /// The side `S E` of the chosen triangle `(S, E, C)` crosses triangles that go round the
+    /// hole and meet at its vertex `v` twice (see [`pinched_round_a_hole`]). Removing them and
+    /// triangulating the polygon left above the side, `S E v s q v`, which touches itself at
+    /// `v` (the insertion used before), panicked in ear clipping ("no ear in a valid
+    /// polygon"); flips insert it, and the fan at `E` then saves one triangle.
+    #[test]
+    fn a_side_whose_crossed_triangles_pinch_round_a_hole_is_cut_in() {
+        let (poly, base) = pinched_round_a_hole();
+        checked(&poly, base.clone(), Vec::new());
+        let at = |x| vertex_at(&poly, x);
+        let (s, e, c) = (at((-20, 0)), at((20, 0)), at((40, 0)));
+        let chosen = Degenerate {
+            a: s.min(c),
+            b: e,
+            c: s.max(c),
+            kind: Kind::TypeI,
+        };
+        let cut = triangulate_with_cuts(&poly, base.clone(), &[chosen]).unwrap();
+        assert_eq!(cut.len(), base.len() - 1);
+        let has_edge = |u: usize, v: usize| {
+            cut.iter()
+                .any(|t| (0..3).any(|k| (t[k], t[(k + 1) % 3]) == (u, v)))
+        };
+        assert!(has_edge(s, e) || has_edge(e, s), "the side S E is an edge");
+        checked(&poly, cut, vec![[chosen.a, chosen.b, chosen.c]]);
     }
 }
