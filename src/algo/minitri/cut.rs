@@ -8,16 +8,15 @@
 //!
 //! 1. Start from any plain triangulation of P (n + 2w - 2 triangles, every side an edge or a
 //!    proper diagonal).
-//! 2. Insert the sides `a b` and `b c` of every chosen triangle as edges by flips (Sloan,
-//!    "A fast algorithm for generating constrained Delaunay triangulations", *Computers &
-//!    Structures* 47 (1993) 441-450; [`crate::algo::mesh`]): walk along the segment listing the
-//!    diagonals it crosses, flip each whose quadrilateral is strictly convex, until the segment
-//!    is an edge; it is then fixed. A flip keeps the count of triangles. A side has no vertex
-//!    inside it (minimality) and chosen triangles never cross (they are independent), so the
-//!    segment crosses diagonals only, and never a side inserted before. (Removing the crossed
-//!    triangles and triangulating the two sides again is not enough: the triangles crossed on
-//!    one side can go round a hole, or round a triangle the segment misses, and touch at a
-//!    vertex; see the tests.)
+//! 2. Insert the sides `a b` and `b c` of every chosen triangle as edges by flips
+//!    ([`crate::algo::mesh`]; Sloan, "A fast algorithm for generating constrained Delaunay
+//!    triangulations", *Computers & Structures* 47 (1993) 441-450): walk along the segment
+//!    listing the diagonals it crosses, flip those whose quadrilateral is strictly convex until
+//!    the segment is an edge; it is then fixed. A flip keeps the count of triangles. A side has
+//!    no vertex inside it (minimality) and chosen triangles never cross (they are independent),
+//!    so the segment crosses diagonals only, and never a side inserted before. (Removing the
+//!    crossed triangles and triangulating the two sides again does not do: the triangles
+//!    crossed on one side can go round a hole and touch at a vertex; see the tests.)
 //! 3. For every chosen `(a, b, c)`, the triangles at `b` in its closed 180-degree half-plane
 //!    form a fan whose union is a polygon `l_0, l_1, .., l_k` (star-shaped from `b`, with `b`
 //!    inside its side `l_k l_0` on the line `a c`); retriangulating it without `b` turns `k`
@@ -31,10 +30,13 @@
 //! edge, stuck flips, a fan that is not a chain): should a check fail, the polygon gets
 //! [`TriangulateError::MinitriCutFailed`], never a panic or a wrong answer.
 //!
-//! Complexity: O(m log m) to build the mesh of the m = n + 2w - 2 triangles; each insertion
-//! costs the k diagonals its segment crosses, O(k^2) flips at worst (Sloan's bound) and about k
-//! in practice; each fan, its size (its polygon triangulated by `crate::algo::plain`).
-//! Near-linear when the chosen triangles are short, O(d n^2) at worst.
+//! Complexity: O(m log m) to build the mesh of the m = n + 2w - 2 triangles; an insertion whose
+//! segment crosses k diagonals, O(k) when each flip can leave one crossing fewer (almost always)
+//! and O(k^2) at worst ([`crate::algo::mesh`]); each fan, its size (its polygon triangulated by
+//! `crate::algo::plain`). Near-linear when the chosen triangles are short, O(d n^2) at worst.
+//! On a square with 64 x 64 square holes (n = 16,388, d = 16,380, sides crossing 63 diagonals
+//! on average) this step takes 0.16 s, against 0.37-0.41 s when it removed the crossed
+//! triangles and triangulated both sides again.
 
 use super::degenerate::Degenerate;
 use crate::algo::mesh::Mesh;
