@@ -15,6 +15,7 @@ pub mod asano;
 pub mod asano_holes;
 pub mod chords;
 pub mod ear;
+pub(crate) mod mesh;
 pub mod minitri;
 pub mod monotone;
 pub(crate) mod number_hash;
@@ -304,6 +305,17 @@ pub enum TriangulateError {
         edges: usize,
         /// Edges needed, 3n - N - 3.
         target: usize,
+    },
+    /// A self-check of MINITRI's cut step for polygons with holes failed (see
+    /// `algo::minitri::cut`; not seen in the tests).
+    #[error("the minitri cut step for polygons with holes failed a self-check while {step} of the degenerate triangle whose middle is vertex {vertex} {point}; no answer is given rather than a wrong one")]
+    MinitriCutFailed {
+        /// What the step was doing.
+        step: &'static str,
+        /// The input number of the chosen triangle's middle vertex.
+        vertex: usize,
+        /// Its coordinates, as written in the input.
+        point: String,
     },
     /// The polygon is too large for an algorithm with polynomial memory.
     #[error("the asano dynamic program needs about {memory} and {time} for {n} vertices, above its limit of {limit} vertices; use --algorithm minitri, or raise the limit with --dp-limit")]
