@@ -83,3 +83,51 @@ pub(crate) fn xorshift(seed: u64) -> impl FnMut(i64) -> i64 {
         (state % n as u64) as i64
     }
 }
+
+/// The stored index of the vertex at input coordinates `q` (panics if there is none).
+pub(crate) fn vertex_at(p: &Polygon, q: (i64, i64)) -> usize {
+    let text = format!("({}, {})", q.0, q.1);
+    (0..p.len())
+        .find(|&i| p.format_vertex(i) == text)
+        .expect("a vertex there")
+}
+
+/// A polygon with a triangular hole `(0, 10) (2, 2) (-2, 2)` and a hand-made plain
+/// triangulation (11 triangles, stored indices) in which the chord from `S = (-20, 0)` to
+/// `E = (20, 0)` crosses, in order, the triangles `(S p v) (v p q) (p r q) (q r s) (v s r)
+/// (r E v)`, with `p = (-10, -10)` and `r = (10, -10)` below it and the hole's vertices `v =
+/// (0, 10)`, `s = (2, 2)`, `q = (-2, 2)` above: on the upper side the crossed triangles go round
+/// the hole and meet at `v` twice, so the polygon they leave above the chord, `S E v s q v`,
+/// touches itself at `v`. `E` is a reflex vertex with `C = (40, 0)` beyond it: `(S, E, C)` is a
+/// minimally degenerate triangle.
+pub(crate) fn pinched_round_a_hole() -> (Polygon, Vec<[usize; 3]>) {
+    let (s, p, r, e, f, c, u, t) = (
+        (-20, 0),
+        (-10, -10),
+        (10, -10),
+        (20, 0),
+        (30, -10),
+        (40, 0),
+        (40, 20),
+        (0, 20),
+    );
+    let (v, s2, q) = ((0, 10), (2, 2), (-2, 2));
+    let poly = polygon(&[&[s, p, r, e, f, c, u, t], &[v, s2, q]]);
+    let triangles = [
+        [s, p, v],
+        [v, p, q],
+        [p, r, q],
+        [q, r, s2],
+        [v, s2, r],
+        [r, e, v],
+        [s, v, t],
+        [e, f, c],
+        [v, e, c],
+        [v, c, u],
+        [v, u, t],
+    ]
+    .iter()
+    .map(|t| t.map(|x| vertex_at(&poly, x)))
+    .collect();
+    (poly, triangles)
+}

@@ -124,6 +124,34 @@ fn ear_triangulates_polygons_with_holes_into_n_plus_2w_minus_2_and_verifies() {
     }
 }
 
+/// Regression: the default algorithm panicked on this polygon with 2 holes (MINITRI's cut step,
+/// see `tests/holes_dp.rs`); now its minimum, checked and equal to the DP's.
+#[test]
+fn minitri_with_holes_cuts_a_side_pinched_round_a_hole() {
+    let (code, out, err) = run(
+        &["--verify", "fixtures/holes/cut_pinched_round_a_hole.wkt"],
+        None,
+    );
+    assert_eq!(code, 0, "{err}");
+    let p = &json(&out)["polygons"][0];
+    assert_eq!(p["algorithm"], "minitri");
+    assert_eq!(p["optimal"], true);
+    assert_eq!(p["triangle_count"], 12);
+    assert_eq!(p["degenerate_count"], 2);
+    let checks = p["verification"]["checks"].as_array().unwrap();
+    let names: Vec<&str> = checks
+        .iter()
+        .map(|c| c["algorithm"].as_str().unwrap())
+        .collect();
+    assert_eq!(names, ["minitri", "asano"]);
+    assert!(
+        checks
+            .iter()
+            .all(|c| c["valid"] == true && c["triangle_count"] == 12),
+        "{checks:?}"
+    );
+}
+
 #[test]
 fn decimal_input_is_exact_as_written() {
     let (code, out, _) = run(

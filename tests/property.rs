@@ -272,7 +272,8 @@ fn check_all(ring: &[(i64, i64)]) -> Result<(), TestCaseError> {
     );
     prop_assert_eq!(fast.triangles.len(), count, "MINITRI vs DP on {:?}", ring);
     // The general method (for holes: dependency graph, exact search, cuts) on the same polygon.
-    let general = chen_chang::triangulate_general(&poly, None);
+    let general = chen_chang::triangulate_general(&poly, None)
+        .map_err(|e| TestCaseError::fail(e.to_string()))?;
     let report = verify::check(&poly, &general);
     prop_assert!(
         report.valid,

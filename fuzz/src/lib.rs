@@ -55,7 +55,8 @@ pub fn check_polygon(polygon: &Polygon) {
     assert!(minitri.optimal, "minitri without deadline is not optimal");
     let minimum = checked(&minitri);
     if w == 0 {
-        let general = chen_chang::triangulate_general(polygon, None);
+        let general = chen_chang::triangulate_general(polygon, None)
+            .expect("the general method triangulates every valid polygon");
         assert!(
             general.optimal,
             "general method without deadline is not optimal"

@@ -15,6 +15,7 @@ pub mod asano;
 pub mod asano_holes;
 pub mod chords;
 pub mod ear;
+pub(crate) mod mesh;
 pub mod minitri;
 pub mod monotone;
 pub(crate) mod number_hash;
@@ -229,6 +230,41 @@ pub(crate) fn plain_polygon(polygon: &crate::Polygon) -> Vec<[usize; 3]> {
     plain_rings(polygon.points(), polygon.ring_starts())
 }
 
+/// A plain triangulation of a valid polygon, as [`plain_polygon`], swept along the longer side of
+/// its bounding box, for walking ([`minitri::expansion`]).
+///
+/// The monotone pieces are swept bottom to top, so a long horizontal corridor is one wide piece
+/// whose walls, vertices at nearly the same heights, get joined by long fans; walks through
+/// such fans are slow, and flipping them towards Delaunay takes quadratically many flips (the
+/// `bars` benchmark: 10 million flips for 53,000 vertices). Sweeping along the corridor instead
+/// (the polygon turned a quarter-turn, `(x, y) -> (MAX_COORD - y, x)`: exact, orientation and
+/// grid kept, the stored indices unchanged) meets its walls' vertices alternately: short fans
+/// (40,000 flips there). A corridor crossing the sweep elsewhere in the same polygon is still
+/// slow, never wrong.
+pub(crate) fn plain_polygon_for_walking(polygon: &crate::Polygon) -> Vec<[usize; 3]> {
+    use crate::geom::kernel::{Point, MAX_COORD};
+    let pts = polygon.points();
+    if pts.len() <= 16 {
+        return plain_polygon(polygon);
+    }
+    let (mut lo, mut hi) = (pts[0], pts[0]);
+    for p in pts {
+        (lo.x, lo.y) = (lo.x.min(p.x), lo.y.min(p.y));
+        (hi.x, hi.y) = (hi.x.max(p.x), hi.y.max(p.y));
+    }
+    if hi.x - lo.x <= hi.y - lo.y {
+        return plain_polygon(polygon);
+    }
+    let turned: Vec<Point> = pts
+        .iter()
+        .map(|p| Point {
+            x: MAX_COORD - p.y,
+            y: p.x,
+        })
+        .collect();
+    plain_rings(&turned, polygon.ring_starts())
+}
+
 /// Why an algorithm could not triangulate a (valid) polygon.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 #[non_exhaustive]
@@ -269,6 +305,17 @@ pub enum TriangulateError {
         edges: usize,
         /// Edges needed, 3n - N - 3.
         target: usize,
+    },
+    /// A self-check of MINITRI's cut step for polygons with holes failed (see
+    /// `algo::minitri::cut`; not seen in the tests).
+    #[error("the minitri cut step for polygons with holes failed a self-check while {step} of the degenerate triangle whose middle is vertex {vertex} {point}; no answer is given rather than a wrong one")]
+    MinitriCutFailed {
+        /// What the step was doing.
+        step: &'static str,
+        /// The input number of the chosen triangle's middle vertex.
+        vertex: usize,
+        /// Its coordinates, as written in the input.
+        point: String,
     },
     /// The polygon is too large for an algorithm with polynomial memory.
     #[error("the asano dynamic program needs about {memory} and {time} for {n} vertices, above its limit of {limit} vertices; use --algorithm minitri, or raise the limit with --dp-limit")]

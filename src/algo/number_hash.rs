@@ -1,11 +1,11 @@
-//! A fast hash for maps keyed by vertex numbers (the pseudo-hull mesh's half-edges).
+//! A fast hash for maps keyed by vertex numbers (the half-edges of `mesh.rs`).
 //!
 //! The keys are numbers the program makes itself (positions in a polygon, pairs of them), never
 //! chosen by an adversary, so the standard SipHash, built to resist hash flooding, only costs
 //! time: it was a tenth of the MIS's time on small polygons (when the MIS kept its values in
-//! such a map). This is a multiplicative hash in
-//! the manner of rustc's FxHash, with the high half of each word folded down first so that keys
-//! packed as `from << 32 | to` spread over the table by both halves.
+//! such a map). This is a multiplicative hash in the manner of rustc's FxHash, with the high
+//! half of each word folded down first so that keys packed as `from << 32 | to` spread over the
+//! table by both halves.
 
 use std::collections::HashMap;
 use std::hash::{BuildHasherDefault, Hasher};

@@ -26,14 +26,14 @@
 //!
 //! How S is found: the hull is triangulated once (the polygon with its holes by
 //! `algo::plain_polygon`, each hole and pocket by `algo::plain`; O(n log n)), with the edges of
-//! L and of the hull marked fixed (`pseudo_hull/mesh.rs`), and its triangles fattened by Lawson
+//! L and of the hull marked fixed (`algo/mesh.rs`), and its triangles fattened by Lawson
 //! flips (a heuristic for speed only: fat triangles make short sleeves). Walking along A1 just
 //! inside F crosses, at each inner vertex of A1, the diagonals inside F's angle there,
 //! clockwise; with immediate back-and-forth crossings of one diagonal cancelled, this is the
 //! sleeve of Hershberger & Snoeyink, in which the funnel algorithm (`pseudo_hull/funnel.rs`)
 //! gives S, a taut string in the universal cover of F (so a triangle met twice, after going round an obstacle,
 //! is two triangles there). S's new edges are then made edges of the triangulation by flipping
-//! the diagonals they cross (Sloan's insertion; removing the crossed triangles and filling the
+//! the diagonals they cross (`algo/mesh.rs`; removing the crossed triangles and filling the
 //! two sides would not do: with holes, a side can surround a hole and touch itself at a vertex)
 //! and fixed, R's boundary is walked and marked finished, and each new edge of S, with the rest
 //! of F on its left, becomes a place to continue from. A step starts at such an edge, walks
@@ -70,8 +70,9 @@
 //!
 //! O(n log n) for the hull and the first triangulation, O(n) expected flips to fatten it. A step
 //! costs the triangles of F met at the vertices of A1 (walk and sleeve, O(n) at worst), O(1) per
-//! diagonal in the funnel, and for each new edge of S the flips that insert it (O(k^2) at worst
-//! for k crossed diagonals, Sloan's bound; about k in practice). There are at most 2n steps, so
+//! diagonal in the funnel, and for each new edge of S the flips that insert it (O(k) for k
+//! crossed diagonals when each flip can leave one crossing fewer, almost always; O(k^2) at
+//! worst, Sloan's bound). There are at most 2n steps, so
 //! the bounds multiply to O(n^3) in the worst case (flips) and O(n^2) without the flips; neither
 //! is approached on typical polygons, where chains between corners are short and a step
 //! touches a few dozen triangles: on random stars and mazes the time per vertex grows only
@@ -83,13 +84,12 @@
 //! limit.
 
 mod funnel;
-mod mesh;
 
+use super::mesh::{Broken, Half, Mesh};
 use super::TriangulateError;
 use super::{plain, plain_polygon, HullCounts, Pseudotriangle, Pseudotriangulation};
 use crate::geom::kernel::{cmp_angle, cross, Point};
 use crate::geom::polygon::Polygon;
-use mesh::{Broken, Half, Mesh};
 use std::collections::HashSet;
 
 /// A minimum pseudotriangulation of the convex hull of `polygon`'s vertices containing its

@@ -25,7 +25,8 @@
 //! the test population (thousands of random grid polygons, most with flat vertices) K < 2n - 1
 //! still held, which `tests/property.rs` keeps watching.
 //!
-//! Complexity: a plain triangulation (O(n log n)), at most `4 n` edge flips to fatten it, then
+//! Complexity: a plain triangulation (O(n log n), swept along the longer side of the bounding
+//! box: `crate::algo::plain_polygon_for_walking`), at most `4 n` edge flips to fatten it, then
 //! work proportional to the triangles met inside each reflex vertex's double cone where both
 //! cones may still see a vertex: O(n^2) in the worst case (every reflex vertex seeing most of the
 //! polygon in two opposite directions), near-linear on typical polygons (on random star polygons
@@ -138,7 +139,7 @@ pub fn minimally_degenerate(polygon: &Polygon) -> Vec<Degenerate> {
 /// positive triangles, every side an edge or a proper diagonal), so that later steps need not
 /// build another one.
 pub fn minimally_degenerate_and_mesh(polygon: &Polygon) -> (Vec<Degenerate>, Vec<[usize; 3]>) {
-    let mut mesh = Mesh::new(polygon, crate::algo::plain_polygon(polygon));
+    let mut mesh = Mesh::new(polygon, crate::algo::plain_polygon_for_walking(polygon));
     mesh.flip_towards_delaunay(polygon, FLIPS_PER_VERTEX * polygon.len());
     // The vertices are independent searches over a shared mesh: in parallel (on the current
     // rayon pool) by blocks of vertices, concatenated in vertex order, so the result does not

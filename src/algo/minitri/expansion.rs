@@ -35,7 +35,9 @@
 //! O(log n) pruning test): O(n) per vertex, so O(n^2) in the worst case, but far less on typical
 //! polygons. Measured on random star polygons (the `bench/polygon.py star` family), after the
 //! flips: about 37 states per vertex at 10^4 vertices, 42 at 10^5, 48 at 10^6 (before the flips
-//! and the pairing of the cones: 210 at 10^4, 560 at 10^5).
+//! and the pairing of the cones: 210 at 10^4, 560 at 10^5); on the `bars` family (a corridor
+//! the length of the polygon, Theta(n^2) visible pairs), about 10 states per vertex on the mesh
+//! swept along the corridor (`crate::algo::plain_polygon_for_walking`).
 
 use crate::geom::kernel::{cmp_dir_from, cross, incircle_approx, Dir};
 use crate::geom::polygon::Polygon;
@@ -74,21 +76,49 @@ impl Mesh {
     /// # Panics
     /// If the triangles do not share their sides as a triangulation of `polygon` does.
     pub fn new(polygon: &Polygon, triangles: Vec<[usize; 3]>) -> Mesh {
-        // Sides keyed by their unordered end points; the two half-edges of a diagonal are then
-        // adjacent after sorting (an edge map by sorting, no hashing).
-        let mut sides: Vec<(u64, u32)> = Vec::with_capacity(3 * triangles.len());
-        for (t, tri) in triangles.iter().enumerate() {
-            for k in 0..3 {
-                let (u, w) = (tri[k] as u64, tri[(k + 1) % 3] as u64);
-                sides.push(((u.min(w) << 32) | u.max(w), (3 * t + k) as u32));
-            }
+        // The two half-edges of a diagonal are found in the bucket of its lower end: half-edges
+        // bucketed by that end (a counting sort), each bucket then matched by its other ends
+        // (buckets hold a vertex's degree, a few half-edges; large ones are sorted).
+        let lower = |h: usize| {
+            let (u, w) = (triangles[h / 3][h % 3], triangles[h / 3][(h + 1) % 3]);
+            (u.min(w), u.max(w) as u32)
+        };
+        let halves = 3 * triangles.len();
+        let mut start = vec![0u32; polygon.len() + 1];
+        for h in 0..halves {
+            start[lower(h).0 + 1] += 1;
         }
-        sides.sort_unstable();
-        let mut twin = vec![NONE; sides.len()];
-        for pair in sides.windows(2) {
-            if pair[0].0 == pair[1].0 {
-                twin[pair[0].1 as usize] = pair[1].1;
-                twin[pair[1].1 as usize] = pair[0].1;
+        for v in 0..polygon.len() {
+            start[v + 1] += start[v];
+        }
+        let mut bucket: Vec<(u32, u32)> = vec![(0, 0); halves];
+        let mut fill = start.clone();
+        for h in 0..halves {
+            let (v, w) = lower(h);
+            bucket[fill[v] as usize] = (w, h as u32);
+            fill[v] += 1;
+        }
+        drop(fill);
+        let mut twin = vec![NONE; halves];
+        for v in 0..polygon.len() {
+            let group = &mut bucket[start[v] as usize..start[v + 1] as usize];
+            if group.len() > 8 {
+                group.sort_unstable();
+                for pair in group.windows(2) {
+                    if pair[0].0 == pair[1].0 {
+                        twin[pair[0].1 as usize] = pair[1].1;
+                        twin[pair[1].1 as usize] = pair[0].1;
+                    }
+                }
+            } else {
+                for i in 0..group.len() {
+                    for j in i + 1..group.len() {
+                        if group[i].0 == group[j].0 {
+                            twin[group[i].1 as usize] = group[j].1;
+                            twin[group[j].1 as usize] = group[i].1;
+                        }
+                    }
+                }
             }
         }
         let mut mesh = Mesh {
@@ -276,11 +306,15 @@ pub struct Workspace {
 /// with their directions from `b`.
 ///
 /// Only directions `d` whose opposite `-d` is found in the other cone matter to the caller, so
-/// the lists may omit other vertices: the two cones are expanded in turns, one state each, and as
-/// soon as one of them is complete, the other drops every part of itself that holds no direction
-/// opposite to a vertex found (closed ranges, so boundary directions are kept). On polygons
-/// where one side of `b` is a narrow pocket, this turns the expansion of the wide side into a few
-/// ray walks.
+/// the lists may omit other vertices: the two cones sweep down together (see the module doc),
+/// and a part of one cone is dropped as soon as no direction in it (its ends counted only where
+/// they belong to it) has its opposite in a pending part of the other cone or at a vertex found
+/// there. On polygons where one side of `b` is a narrow pocket, this turns the expansion of the
+/// wide side into a few ray walks. An end that belongs to a part is one not defined by a vertex:
+/// a part bounded by the ray through a vertex `x` (beyond `x`) cannot find anything on that ray,
+/// and counting that ray would keep alive, all along a corridor, a part hugging a wall whose
+/// vertex opposite is `b`'s own neighbour (the `bars` benchmark: 9.5 million states for 13,000
+/// vertices, 7 million once ends were exact, 136,000 on the mesh swept along the corridor).
 pub fn double_cone<'w>(
     polygon: &Polygon,
     mesh: &Mesh,
@@ -365,17 +399,20 @@ pub fn double_cone<'w>(
             }
         }
     }
-    // Whether a vertex found so far in cone `side` lies in the closed range from `lo` to `hi`
-    // (inside the cone). Inside one cone, narrower than a half-turn, the sign of a cross product
-    // orders directions by angle; the fan's vertices come first, by increasing angle, then the
-    // others, by decreasing angle (recorded by markers, see below).
+    // Whether a vertex found so far in cone `side` lies in the range from `lo` to `hi` (inside
+    // the cone; each end included when its flag says so). Inside one cone, narrower than a
+    // half-turn, the sign of a cross product orders directions by angle; the fan's vertices come
+    // first, by increasing angle, then the others, by decreasing angle (recorded by markers, see
+    // below).
     let fan_found = [found[0].len(), found[1].len()];
-    let any_found = |found: &[Vec<Sighting>; 2], side: usize, lo: Dir, hi: Dir| {
+    let any_found = |found: &[Vec<Sighting>; 2], side: usize, range: Cone| {
         let (fan_part, walk_part) = found[side].split_at(fan_found[side]);
-        let i = fan_part.partition_point(|&(d, _)| lo.cross(d) < 0);
-        let j = walk_part.partition_point(|&(d, _)| d.cross(hi) < 0);
-        (i < fan_part.len() && fan_part[i].0.cross(hi) >= 0)
-            || (j < walk_part.len() && lo.cross(walk_part[j].0) >= 0)
+        let above_lo = |d: Dir| range.lo.cross(d) > 0 || (range.lo_in && range.lo.cross(d) == 0);
+        let below_hi = |d: Dir| d.cross(range.hi) > 0 || (range.hi_in && d.cross(range.hi) == 0);
+        let i = fan_part.partition_point(|&(d, _)| !above_lo(d));
+        let j = walk_part.partition_point(|&(d, _)| !below_hi(d));
+        (i < fan_part.len() && below_hi(fan_part[i].0))
+            || (j < walk_part.len() && above_lo(walk_part[j].0))
     };
     loop {
         // Both stacks hold disjoint parts sorted by angle, the highest on top, and only parts
@@ -392,11 +429,24 @@ pub fn double_cone<'w>(
         // A direction matters only if its opposite may still be found in the other cone: in a
         // part on the other stack (sorted by angle, lowest first), or at a vertex found there.
         let other = 1 - side;
-        let (lo, hi) = (cone.lo.reversed(), cone.hi.reversed());
+        let opposite = Cone {
+            lo: cone.lo.reversed(),
+            hi: cone.hi.reversed(),
+            ..cone
+        };
         let parts = &stacks[other];
-        let i = parts.partition_point(|part| lo.cross(part.1.hi) < 0);
-        let open = i < parts.len() && parts[i].1.lo.cross(hi) >= 0;
-        if !open && !any_found(found, other, lo, hi) {
+        // The other cone's parts that reach into the opposite range: disjoint and sorted, so
+        // the first not wholly below it is the only candidate (an end shared by two ranges is
+        // common to them only if both include it).
+        let i = parts.partition_point(|(_, part)| {
+            let c = opposite.lo.cross(part.hi);
+            c < 0 || (c == 0 && !(opposite.lo_in && part.hi_in))
+        });
+        let open = i < parts.len() && {
+            let c = parts[i].1.lo.cross(opposite.hi);
+            c > 0 || (c == 0 && opposite.hi_in && parts[i].1.lo_in)
+        };
+        if !open && !any_found(found, other, opposite) {
             continue;
         }
         // Above the other cone's top part, only the directions of vertices found there matter:
@@ -406,7 +456,15 @@ pub fn double_cone<'w>(
             let f = top.1.hi.reversed();
             if cone.lo.cross(f) > 0
                 && f.cross(cone.hi) > 0
-                && !any_found(found, other, top.1.hi, hi)
+                && !any_found(
+                    found,
+                    other,
+                    Cone {
+                        lo: top.1.hi,
+                        lo_in: true,
+                        ..opposite
+                    },
+                )
             {
                 cone.hi = f;
                 cone.hi_in = true;

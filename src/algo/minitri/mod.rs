@@ -44,13 +44,14 @@ pub fn triangulate(polygon: &Polygon) -> Result<Triangulation, TriangulateError>
 /// search); with holes by [`triangulate_general`], searching until `deadline`.
 ///
 /// # Errors
-/// None for valid polygons today; the `Result` keeps the signature of the other algorithms.
+/// Without holes, none for valid polygons; with holes, those of [`triangulate_general`] (not
+/// seen in the tests).
 pub fn triangulate_within(
     polygon: &Polygon,
     deadline: Option<Instant>,
 ) -> Result<Triangulation, TriangulateError> {
     if polygon.holes() > 0 {
-        return Ok(triangulate_general(polygon, deadline));
+        return triangulate_general(polygon, deadline);
     }
     let (mdts, base) = degenerate::minimally_degenerate_and_mesh(polygon);
     let chosen: Vec<degenerate::Degenerate> = {
@@ -86,20 +87,27 @@ pub fn triangulate_within(
 /// triangles cut into a plain triangulation ([`cut`]). `optimal` is true only when the search
 /// finished; otherwise `lower_bound` holds the proved bound `n + 2w - 2 - (upper bound on d)`.
 /// Without holes it gives the same count as [`triangulate`] (the tests compare them).
-pub fn triangulate_general(polygon: &Polygon, deadline: Option<Instant>) -> Triangulation {
+///
+/// # Errors
+/// [`TriangulateError::MinitriCutFailed`] if a self-check of the cut step fails (see [`cut`];
+/// not seen in the tests).
+pub fn triangulate_general(
+    polygon: &Polygon,
+    deadline: Option<Instant>,
+) -> Result<Triangulation, TriangulateError> {
     let (mdts, base) = degenerate::minimally_degenerate_and_mesh(polygon);
     let graph = dependency::graph(polygon, &mdts);
     let found = branch_and_bound::maximum_independent_set(&graph, deadline);
     let chosen: Vec<degenerate::Degenerate> = found.set.iter().map(|&t| mdts[t]).collect();
     let plain_count = base.len();
-    let triangles = cut::triangulate_with_cuts(polygon, base, &chosen);
-    Triangulation {
+    let triangles = cut::triangulate_with_cuts(polygon, base, &chosen)?;
+    Ok(Triangulation {
         algorithm: Algorithm::Minitri,
         triangles,
         degenerate: chosen.iter().map(|m| [m.a, m.b, m.c]).collect(),
         optimal: found.optimal,
         lower_bound: (!found.optimal).then(|| plain_count - found.upper_bound),
-    }
+    })
 }
 
 #[cfg(test)]

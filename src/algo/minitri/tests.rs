@@ -7,7 +7,7 @@ use super::mis::{chains, crossing_components, is_3b_pair, maximum_independent_se
 use super::triangulate;
 use crate::algo::asano;
 use crate::geom::polygon::Polygon;
-use crate::test_support::{polygon, U_SHAPE};
+use crate::test_support::{polygon, vertex_at, U_SHAPE};
 
 /// The minimally degenerate triangle with these three vertices (by coordinates), if found.
 fn find(
@@ -17,18 +17,10 @@ fn find(
     b: (i64, i64),
     c: (i64, i64),
 ) -> Option<usize> {
-    let at = |q: (i64, i64)| vertex(p, q);
+    let at = |q: (i64, i64)| vertex_at(p, q);
     let (a, b, c) = (at(a), at(b), at(c));
     mdts.iter()
         .position(|m| m.b == b && ((m.a, m.c) == (a.min(c), a.max(c))))
-}
-
-/// The stored index of the vertex at input coordinates `q`.
-fn vertex(p: &Polygon, q: (i64, i64)) -> usize {
-    let text = format!("({}, {})", q.0, q.1);
-    (0..p.len())
-        .find(|&i| p.format_vertex(i) == text)
-        .expect("a vertex there")
 }
 
 fn minimum_agrees(p: &Polygon) -> usize {
@@ -155,7 +147,7 @@ fn relationship_iii_b_a_3b_chain_of_length_4() {
     let t = triangulate(&p).unwrap();
     let middles: Vec<usize> = t.degenerate.iter().map(|d| d[1]).collect();
     for x in 2..=5 {
-        let v = vertex(&p, (x, 1));
+        let v = vertex_at(&p, (x, 1));
         assert!(middles.contains(&v), "the whole chain is used: ({x}, 1)");
     }
     minimum_agrees(&p);
@@ -456,6 +448,51 @@ fn bars(columns: usize, seed: u64) -> Polygon {
     polygon(&[&ring])
 }
 
+/// The ring of a [`bars`] polygon, wide (along x) or turned a quarter-turn (tall).
+fn bars_ring(columns: usize, seed: u64, tall: bool) -> Vec<(i64, i64)> {
+    let p = bars(columns, seed);
+    (0..p.len())
+        .map(|v| {
+            let q = p.point(v);
+            if tall {
+                (100 - q.y, q.x)
+            } else {
+                (q.x, q.y)
+            }
+        })
+        .collect()
+}
+
+#[test]
+fn wide_polygons_are_swept_along_their_length_and_found_alike() {
+    // A wide polygon's walking mesh comes from the monotone sweep turned a quarter-turn
+    // (`plain_polygon_for_walking`); its tall twin's from the plain sweep. Both meshes must be
+    // triangulations, and the expansion over either must find what the sweep oracle finds.
+    let mut counts = [0, 0];
+    for seed in 1..=150u64 {
+        let columns = 6 + (seed as usize % 50);
+        let mut found = [0, 0];
+        for tall in [false, true] {
+            let ring = bars_ring(columns, seed, tall);
+            let p = polygon(&[&ring]);
+            let t = crate::algo::Triangulation {
+                algorithm: crate::algo::Algorithm::Ear,
+                triangles: crate::algo::plain_polygon_for_walking(&p),
+                degenerate: Vec::new(),
+                optimal: false,
+                lower_bound: None,
+            };
+            let check = crate::verify::check(&p, &t);
+            assert!(check.valid, "seed {seed} tall {tall}: {:?}", check.problems);
+            found[usize::from(tall)] = checked_against_the_sweep(&p, &ring).len();
+        }
+        assert_eq!(found[0], found[1], "seed {seed}: congruent polygons");
+        counts[0] += found[0];
+        counts[1] += 1;
+    }
+    assert!(counts[0] > 3000, "{counts:?}");
+}
+
 #[test]
 fn staircase_shortcut_matches_listing_every_piece() {
     let (mut stairs_seen, mut long_pieces) = (0, 0);
@@ -525,7 +562,7 @@ fn the_dependency_relation_is_the_circle_crossing_relation_without_holes() {
 #[test]
 fn cutting_a_3b_pair_merges_both_fans() {
     let p = polygon(&[&[(1, 3), (0, 0), (1, 4), (1, 5), (2, 0), (1, 2)]]);
-    let t = super::triangulate_general(&p, None);
+    let t = super::triangulate_general(&p, None).unwrap();
     assert_eq!(t.degenerate.len(), 2);
     assert_eq!(t.triangles.len(), 2);
     assert!(crate::verify::check(&p, &t).valid);
