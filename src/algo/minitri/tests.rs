@@ -194,12 +194,7 @@ fn crossing_components_match_brute_force() {
                 )
             })
             .collect();
-        let mut owner = vec![0; 2 * k];
-        for (t, &(l, r)) in chords.iter().enumerate() {
-            owner[l] = t;
-            owner[r] = t;
-        }
-        let c = Circle { chords, owner };
+        let c = circle_of(chords);
         // Brute force: label propagation over crossing pairs.
         let mut label: Vec<usize> = (0..k).collect();
         loop {
@@ -260,12 +255,7 @@ fn maximum_independent_set_matches_enumeration_on_random_circles() {
                 (x.min(y), x.max(y))
             })
             .collect();
-        let mut owner = vec![0; 2 * k];
-        for (t, &(l, r)) in chords.iter().enumerate() {
-            owner[l] = t;
-            owner[r] = t;
-        }
-        let c = Circle { chords, owner };
+        let c = circle_of(chords);
         let ch = super::mis::Chains {
             paths: (0..k).map(|t| vec![t]).collect(),
             place: (0..k).map(|t| (t, 0)).collect(),
@@ -597,4 +587,14 @@ fn parallel_search_gives_the_sequential_result_in_the_same_order() {
     by_sweep.sort_unstable();
     found.sort_unstable();
     assert_eq!(found, by_sweep);
+}
+
+/// The circle of these chords (`(left, right)` each, every position `0..2K` used once).
+fn circle_of(chords: Vec<(usize, usize)>) -> Circle {
+    let mut owner = vec![0; 2 * chords.len()];
+    for (t, &(l, r)) in chords.iter().enumerate() {
+        owner[l] = t;
+        owner[r] = t;
+    }
+    Circle { chords, owner }
 }
