@@ -44,6 +44,53 @@ use std::collections::VecDeque;
 
 const NONE: u32 = u32::MAX;
 
+/// The neighbour links of a triangulation: for every half-edge `3 t + k` (side `k` of triangle
+/// `t`, from its corner `k` to its corner `k + 1`; `corner(t, k)` gives the vertex, below
+/// `vertices`), the half-edge of the other triangle on the same side, or `u32::MAX` where there
+/// is none (the boundary). Shared with MINITRI's walking mesh (`minitri::expansion`).
+///
+/// The two half-edges of a side are found in the bucket of its lower end: half-edges bucketed
+/// by that end (a counting sort), each bucket, a vertex's few sides, then sorted by the other
+/// end. O(n) for bounded degrees, O(n log n) at worst.
+pub(crate) fn twin_halves(
+    vertices: usize,
+    triangles: usize,
+    corner: impl Fn(usize, usize) -> usize,
+) -> Vec<u32> {
+    let halves = 3 * triangles;
+    let ends = |h: usize| {
+        let (u, w) = (corner(h / 3, h % 3), corner(h / 3, (h + 1) % 3));
+        (u.min(w), u.max(w) as u32)
+    };
+    let mut start = vec![0u32; vertices + 1];
+    for h in 0..halves {
+        start[ends(h).0 + 1] += 1;
+    }
+    for v in 0..vertices {
+        start[v + 1] += start[v];
+    }
+    let mut bucket: Vec<(u32, u32)> = vec![(0, 0); halves];
+    let mut fill = start.clone();
+    for h in 0..halves {
+        let (v, w) = ends(h);
+        bucket[fill[v] as usize] = (w, h as u32);
+        fill[v] += 1;
+    }
+    drop(fill);
+    let mut twin = vec![NONE; halves];
+    for v in 0..vertices {
+        let group = &mut bucket[start[v] as usize..start[v + 1] as usize];
+        group.sort_unstable();
+        for pair in group.windows(2) {
+            if pair[0].0 == pair[1].0 {
+                twin[pair[0].1 as usize] = pair[1].1;
+                twin[pair[1].1 as usize] = pair[0].1;
+            }
+        }
+    }
+    twin
+}
+
 /// An inconsistency a caller's construction must not meet: a segment through a vertex or across a
 /// fixed or boundary edge, stuck flips, a missing edge (see the callers' module docs).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -116,23 +163,10 @@ impl<'a> Mesh<'a> {
         for t in 0..m as u32 {
             mesh.index(t);
         }
-        // Link twins by sorting the half-edges by their undirected edge.
-        let undirected = |a: u32, b: u32| (u64::from(a.min(b)) << 32) | u64::from(a.max(b));
-        let mut halves: Vec<(u64, u32)> = Vec::with_capacity(3 * m);
-        for (t, tri) in mesh.tv.iter().enumerate() {
-            for k in 0..3 {
-                halves.push((
-                    undirected(tri[k], tri[(k + 1) % 3]),
-                    (t as u32) << 2 | k as u32,
-                ));
-            }
-        }
-        halves.sort_unstable();
-        for pair in halves.windows(2) {
-            if pair[0].0 == pair[1].0 {
-                let (a, b) = (pair[0].1, pair[1].1);
-                mesh.tn[(a >> 2) as usize][(a & 3) as usize] = b >> 2;
-                mesh.tn[(b >> 2) as usize][(b & 3) as usize] = a >> 2;
+        let twins = twin_halves(pts.len(), m, |t, k| mesh.tv[t][k] as usize);
+        for (h, &g) in twins.iter().enumerate() {
+            if g != NONE {
+                mesh.tn[h / 3][h % 3] = g / 3;
             }
         }
         for (t, tri) in mesh.tv.iter().enumerate() {

@@ -25,9 +25,9 @@
 //! the test population (thousands of random grid polygons, most with flat vertices) K < 2n - 1
 //! still held, which `tests/property.rs` keeps watching.
 //!
-//! Complexity: a plain triangulation (O(n log n), swept along x when the bounding box is more than
-//! twice as wide as tall: `crate::algo::plain_polygon_for_walking`), at most `4 n` edge flips to fatten it, then
-//! work proportional to the triangles met inside each reflex vertex's double cone where both
+//! Complexity: a plain triangulation (O(n log n), swept along x when the bounding box is more
+//! than twice as wide as tall: `crate::algo::plain_polygon_for_walking`), at most `4 n` edge
+//! flips to fatten it, then work proportional to the triangles met inside each reflex vertex's double cone where both
 //! cones may still see a vertex: O(n^2) in the worst case (every reflex vertex seeing most of the
 //! polygon in two opposite directions), near-linear on typical polygons (on random star polygons
 //! about 40-50 triangle visits per vertex from 10^4 to 10^6 vertices; see [`super::expansion`]

@@ -39,6 +39,7 @@
 //! the length of the polygon, Theta(n^2) visible pairs), about 10 states per vertex on the mesh
 //! swept along the corridor (`crate::algo::plain_polygon_for_walking`).
 
+use crate::algo::mesh::twin_halves;
 use crate::geom::kernel::{cmp_dir_from, cross, incircle_approx, Dir};
 use crate::geom::polygon::Polygon;
 use std::cmp::Ordering;
@@ -76,51 +77,7 @@ impl Mesh {
     /// # Panics
     /// If the triangles do not share their sides as a triangulation of `polygon` does.
     pub fn new(polygon: &Polygon, triangles: Vec<[usize; 3]>) -> Mesh {
-        // The two half-edges of a diagonal are found in the bucket of its lower end: half-edges
-        // bucketed by that end (a counting sort), each bucket then matched by its other ends
-        // (buckets hold a vertex's degree, a few half-edges; large ones are sorted).
-        let lower = |h: usize| {
-            let (u, w) = (triangles[h / 3][h % 3], triangles[h / 3][(h + 1) % 3]);
-            (u.min(w), u.max(w) as u32)
-        };
-        let halves = 3 * triangles.len();
-        let mut start = vec![0u32; polygon.len() + 1];
-        for h in 0..halves {
-            start[lower(h).0 + 1] += 1;
-        }
-        for v in 0..polygon.len() {
-            start[v + 1] += start[v];
-        }
-        let mut bucket: Vec<(u32, u32)> = vec![(0, 0); halves];
-        let mut fill = start.clone();
-        for h in 0..halves {
-            let (v, w) = lower(h);
-            bucket[fill[v] as usize] = (w, h as u32);
-            fill[v] += 1;
-        }
-        drop(fill);
-        let mut twin = vec![NONE; halves];
-        for v in 0..polygon.len() {
-            let group = &mut bucket[start[v] as usize..start[v + 1] as usize];
-            if group.len() > 8 {
-                group.sort_unstable();
-                for pair in group.windows(2) {
-                    if pair[0].0 == pair[1].0 {
-                        twin[pair[0].1 as usize] = pair[1].1;
-                        twin[pair[1].1 as usize] = pair[0].1;
-                    }
-                }
-            } else {
-                for i in 0..group.len() {
-                    for j in i + 1..group.len() {
-                        if group[i].0 == group[j].0 {
-                            twin[group[i].1 as usize] = group[j].1;
-                            twin[group[j].1 as usize] = group[i].1;
-                        }
-                    }
-                }
-            }
-        }
+        let twin = twin_halves(polygon.len(), triangles.len(), |t, k| triangles[t][k]);
         let mut mesh = Mesh {
             triangles,
             twin,
