@@ -21,6 +21,19 @@ pub(crate) const U_SHAPE: [(i64, i64); 12] = [
     (3, 3),
 ];
 
+/// What the independent checker ([`crate::verify::check`]) finds wrong with `triangles` as a plain
+/// triangulation of `p` (no degenerate triangles claimed): nothing when it is one.
+pub(crate) fn plain_problems(p: &Polygon, triangles: Vec<[usize; 3]>) -> Vec<String> {
+    let t = crate::algo::Triangulation {
+        algorithm: crate::algo::Algorithm::Ear,
+        triangles,
+        degenerate: Vec::new(),
+        optimal: false,
+        lower_bound: None,
+    };
+    crate::verify::check(p, &t).problems
+}
+
 /// An exact decimal from its text (panics, naming the text, if it does not parse).
 pub(crate) fn d(s: &str) -> Decimal {
     Decimal::parse(s).expect(s)

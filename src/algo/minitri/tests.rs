@@ -7,7 +7,7 @@ use super::mis::{chains, crossing_components, is_3b_pair, maximum_independent_se
 use super::triangulate;
 use crate::algo::asano;
 use crate::geom::polygon::Polygon;
-use crate::test_support::{polygon, vertex_at, U_SHAPE};
+use crate::test_support::{plain_problems, polygon, vertex_at, U_SHAPE};
 
 /// The minimally degenerate triangle with these three vertices (by coordinates), if found.
 fn find(
@@ -353,7 +353,7 @@ fn expansion_matches_the_sweep_on_stars() {
 #[test]
 fn flipped_mesh_is_a_triangulation() {
     use super::expansion::Mesh;
-    use crate::algo::{monotone, Algorithm, Triangulation};
+    use crate::algo::monotone;
     let mut rnd = crate::test_support::xorshift(0x5eed_f11b_0000_0001u64);
     let mut polygons: Vec<Polygon> = Vec::new();
     for _ in 0..1500 {
@@ -376,16 +376,9 @@ fn flipped_mesh_is_a_triangulation() {
             let mut mesh = Mesh::new(p, monotone::triangulate_cycle(p.points()));
             flipped += mesh.flip_towards_delaunay(p, cap);
             mesh.check_invariants(p);
-            let t = Triangulation {
-                algorithm: Algorithm::Ear,
-                triangles: mesh.triangles().to_vec(),
-                degenerate: Vec::new(),
-                optimal: false,
-                lower_bound: None,
-            };
-            assert_eq!(t.triangles.len(), p.len() - 2);
-            let check = crate::verify::check(p, &t);
-            assert!(check.valid, "cap {cap}: {:?}", check.problems);
+            assert_eq!(mesh.triangles().len(), p.len() - 2);
+            let problems = plain_problems(p, mesh.triangles().to_vec());
+            assert!(problems.is_empty(), "cap {cap}: {problems:?}");
         }
     }
     assert!(flipped > 10_000, "flips happen: {flipped}");
@@ -465,15 +458,8 @@ fn wide_polygons_are_swept_along_their_length_and_found_alike() {
         for tall in [false, true] {
             let ring = bars_ring(columns, seed, tall);
             let p = polygon(&[&ring]);
-            let t = crate::algo::Triangulation {
-                algorithm: crate::algo::Algorithm::Ear,
-                triangles: crate::algo::plain_polygon_for_walking(&p),
-                degenerate: Vec::new(),
-                optimal: false,
-                lower_bound: None,
-            };
-            let check = crate::verify::check(&p, &t);
-            assert!(check.valid, "seed {seed} tall {tall}: {:?}", check.problems);
+            let problems = plain_problems(&p, crate::algo::plain_polygon_for_walking(&p));
+            assert!(problems.is_empty(), "seed {seed} tall {tall}: {problems:?}");
             found[usize::from(tall)] = checked_against_the_sweep(&p, &ring).len();
         }
         assert_eq!(found[0], found[1], "seed {seed}: congruent polygons");
