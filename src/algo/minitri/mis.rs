@@ -30,8 +30,15 @@
 //! meets `v_0, v_1, .., v_{L+1}` in this order. Then a piece's value splits into a part for its
 //! first chord, a part for its last, and a sum over the chain between (see `Staircase`), and
 //! the scan finds the best piece ending at each chord with a running maximum. The shape is
-//! checked for each chain, and a chain that is not a staircase (none has been seen) is handled
-//! by listing all its pieces.
+//! checked for each chain. Two things break it, both met on a "snake" of corridors with a vertex
+//! at every lattice point of the boundary (a raster outline): the chain's end chords, where its
+//! line leaves the pocketed wall and meets the boundary anywhere (so the staircase is the chain
+//! without up to two chords at each end, and the pieces with those chords are listed as units:
+//! O(L)); and the place where the circle is cut into a line, if it falls in a pocket (each
+//! component is cut where its chords' spans sum to the least without cutting a chain's inner
+//! chord, `shortest_cut`). A chain that is still not a staircase has all its pieces listed
+//! (O(L^2) units; before both fixes a 3 x 1000-column snake's wall chains were, and step 3 took
+//! 11 s instead of 0.3 s).
 //!
 //! Complexity: O(K alpha(K)) for the components; then O(K) units and staircase gaps, each valued
 //! by one scan of its span (in endpoint positions of its component): O(sum of spans), which is
@@ -161,13 +168,13 @@ pub fn maximum_independent_set(circle: &Circle, chains: &Chains) -> Vec<usize> {
 
 /// [`maximum_independent_set`], with the staircase shortcut on or off (off: every piece of every
 /// 3b-chain is an explicit unit, the slower and simpler method the tests compare against); also
-/// returns how many staircases were used.
+/// returns what the solving took (for the tests).
 pub(crate) fn maximum_independent_set_with(
     circle: &Circle,
     chains: &Chains,
     staircases: bool,
-) -> (Vec<usize>, usize) {
-    let mut used = 0;
+) -> (Vec<usize>, Effort) {
+    let mut effort = Effort::default();
     let mut chosen = Vec::new();
     let mut local = vec![u32::MAX; circle.owner.len()];
     let mut chain_seen = vec![u32::MAX; chains.paths.len()];
@@ -184,6 +191,22 @@ pub(crate) fn maximum_independent_set_with(
         for (i, &g) in positions.iter().enumerate() {
             local[g] = i as u32;
         }
+        let cut = shortest_cut(&component, |t| {
+            let (l, r) = circle.chords[t];
+            // The chords of a long chain but its ends (which may be irregular, see
+            // `Staircase::find`) must not be cut.
+            let (chain, i) = chains.place[t];
+            let len = chains.paths[chain].len();
+            (
+                local[l] as usize,
+                local[r] as usize,
+                len >= 4 && (1..len - 1).contains(&i),
+            )
+        });
+        let p = positions.len();
+        for &g in &positions {
+            local[g] = ((local[g] as usize + p - cut) % p) as u32;
+        }
         let sub = Sub {
             circle,
             chains,
@@ -191,11 +214,51 @@ pub(crate) fn maximum_independent_set_with(
             local: &local,
             staircases,
         };
-        let (set, stairs) = sub.solve(&mut chain_seen, number as u32);
-        chosen.extend(set);
-        used += stairs;
+        chosen.extend(sub.solve(&mut chain_seen, number as u32, &mut effort));
     }
-    (chosen, used)
+    (chosen, effort)
+}
+
+/// Where to cut a component's circle into a line: the position (among `0..p`, `p` twice the
+/// number of `chords`) that becomes the first. Cutting the circle anywhere gives the same
+/// crossings, hence the same answer, but not the same work: a cut on the short side (the
+/// pocket) of a chain's chord breaks the chain's staircase on the line (see [`Staircase`]; a
+/// chain along a wall through the ring's first vertex took O(L^2) units), and the scans cost
+/// about the total span (Valiente). So the cut falls on the short side of the fewest inner
+/// chords of chains (the flag of `chord`), then where the spans sum to the least. O(p).
+fn shortest_cut(chords: &[usize], chord: impl Fn(usize) -> (usize, usize, bool)) -> usize {
+    let p = 2 * chords.len();
+    // Cutting just before position r, chord (x, y) spans y - x if r is outside x + 1..=y,
+    // p - (y - x) if inside: the change by r, as differences; and how many chords of long
+    // 3b-chains r would cut.
+    let mut change = vec![0i64; p + 1];
+    let mut chain_cuts = vec![0i32; p + 1];
+    for &t in chords {
+        let (x, y, in_chain) = chord(t);
+        let (x, y) = (x.min(y), x.max(y));
+        let delta = p as i64 - 2 * (y - x) as i64;
+        change[x + 1] += delta;
+        change[y + 1] -= delta;
+        // A chain's chord is cut when r falls on its short side (its pocket).
+        if in_chain && 2 * (y - x) <= p {
+            chain_cuts[x + 1] += 1;
+            chain_cuts[y + 1] -= 1;
+        } else if in_chain {
+            chain_cuts[0] += 1;
+            chain_cuts[x + 1] -= 1;
+            chain_cuts[y + 1] += 1;
+        }
+    }
+    let (mut best, mut at) = ((i32::MAX, i64::MAX), 0);
+    let (mut total, mut cuts) = (0, 0);
+    for r in 0..p {
+        total += change[r];
+        cuts += chain_cuts[r];
+        if (cuts, total) < best {
+            (best, at) = ((cuts, total), r);
+        }
+    }
+    at
 }
 
 /// The connected components of the crossing graph of the chords, each a list of triangles.
@@ -260,6 +323,15 @@ struct Sub<'a> {
     staircases: bool,
 }
 
+/// What [`maximum_independent_set_with`] took, for the tests.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Effort {
+    /// Staircases valued in the scans.
+    pub staircases: usize,
+    /// The longest 3b-chain all of whose pieces were listed as units (not a staircase).
+    pub longest_listed: usize,
+}
+
 /// A candidate for the top level of some range: one chord, or a contiguous piece of a 3b-chain
 /// (whose chords cross one after the other), spanning local positions `lo..=hi`.
 struct Unit {
@@ -294,6 +366,26 @@ struct Staircase {
 }
 
 impl Staircase {
+    /// A staircase of at least four chords in the 3b-chain `path`: the whole chain, or the
+    /// chain without up to two chords at either end (the fewest dropped), with the range of
+    /// `path` it covers.
+    ///
+    /// A chain's end chords may be irregular: where the chain's line leaves the walls whose
+    /// pockets make the staircase, its last vertices can be anywhere on the boundary (a snake
+    /// of corridors: `tests::snakes_keep_their_staircases`), so their endpoints there are
+    /// anywhere on the circle. The pieces with such a chord are listed as units (O(L) of them),
+    /// the rest stays a staircase.
+    fn find(
+        path: &[usize],
+        chord: impl Fn(usize) -> (usize, usize),
+    ) -> Option<(std::ops::Range<usize>, Staircase)> {
+        let l = path.len();
+        (0..=4)
+            .flat_map(|trim| (0..=trim).map(move |a| (a, trim - a)))
+            .filter(|&(a, b)| a <= 2 && b <= 2 && l >= a + b + 4)
+            .find_map(|(a, b)| Staircase::new(&path[a..l - b], &chord).map(|s| (a..l - b, s)))
+    }
+
     /// The chords in the chain order, if the chain is a staircase of at least four chords.
     fn new(tris: &[usize], chord: impl Fn(usize) -> (usize, usize)) -> Option<Staircase> {
         if tris.len() < 4 {
@@ -426,7 +518,8 @@ struct Scan {
 impl Sub<'_> {
     fn chord(&self, t: usize) -> (usize, usize) {
         let (l, r) = self.circle.chords[t];
-        (self.local[l] as usize, self.local[r] as usize)
+        let (l, r) = (self.local[l] as usize, self.local[r] as usize);
+        (l.min(r), l.max(r))
     }
 
     /// The gaps between consecutive endpoints of some chords (inside their span), into
@@ -460,13 +553,13 @@ impl Sub<'_> {
     /// of span.
     ///
     /// Pieces of one or two chords are explicit units. The longer pieces of a staircase chain
-    /// (see [`Staircase`]; every 3b-chain we have met is one, the shape is checked, and other
-    /// chains get explicit units for all their pieces) are valued inside the scans instead: at
+    /// (see [`Staircase`]; the shape is checked, pieces with an irregular end chord are explicit
+    /// units, and so are all pieces of a chain that is no staircase) are valued in the scans: at
     /// the end `e_l` of chord `l`, the best start `f <= l - 2` is a running maximum,
     /// `M(l) = max(M(l - 1) + inner[l - 1], start(f = l - 2))`, with `start(f)` the best before
     /// `s_f` plus `left[f] - f`. So a staircase of length L costs O(L) units and gaps, not the
     /// O(L^2) of listing its pieces.
-    fn solve(&self, chain_seen: &mut [u32], component: u32) -> (Vec<usize>, usize) {
+    fn solve(&self, chain_seen: &mut [u32], component: u32, effort: &mut Effort) -> Vec<usize> {
         let p = self.positions.len();
         let mut table = Table {
             units: Vec::new(),
@@ -492,24 +585,63 @@ impl Sub<'_> {
             chain_seen[chain] = component;
             let path = &self.chains.paths[chain];
             let stair = if self.staircases {
-                Staircase::new(path, |t| self.chord(t))
+                Staircase::find(path, |t| self.chord(t))
             } else {
                 None
             };
-            let longest = if stair.is_some() { 2 } else { path.len() };
+            // Pieces of three or more chords of the staircase core are valued in the scans;
+            // every other piece is a unit.
+            if stair.is_none() {
+                effort.longest_listed = effort.longest_listed.max(path.len());
+            }
+            let (core, stair) = match stair {
+                Some((core, stair)) => (core, Some(stair)),
+                None => (0..0, None),
+            };
+            let mut push = |first: usize, last: usize, (lo, hi): (usize, usize)| {
+                jobs.push((hi - lo, 0, Job::Unit(table.units.len())));
+                table.units.push(Unit {
+                    chain,
+                    first,
+                    last,
+                    lo,
+                    hi,
+                });
+            };
+            let span = |(lo, hi): (usize, usize), t: usize| {
+                let (l, r) = self.chord(t);
+                (lo.min(l), hi.max(r))
+            };
+            // Spans of the core's pieces reaching its end, for those going on into an
+            // irregular tail.
+            const EMPTY: (usize, usize) = (usize::MAX, 0);
+            let mut to_core_end = vec![EMPTY; core.end + 1];
+            for i in core.clone().rev() {
+                to_core_end[i] = span(to_core_end[i + 1], path[i]);
+            }
             for first in 0..path.len() {
-                let (mut lo, mut hi) = (usize::MAX, 0);
-                for (last, &c) in path.iter().enumerate().skip(first).take(longest) {
-                    let (l, r) = self.chord(c);
-                    (lo, hi) = (lo.min(l), hi.max(r));
-                    jobs.push((hi - lo, 0, Job::Unit(table.units.len())));
-                    table.units.push(Unit {
-                        chain,
-                        first,
-                        last,
-                        lo,
-                        hi,
-                    });
+                if !core.contains(&first) {
+                    let mut range = EMPTY;
+                    for (last, &t) in path.iter().enumerate().skip(first) {
+                        range = span(range, t);
+                        push(first, last, range);
+                    }
+                    continue;
+                }
+                // Pieces of one or two chords; longer ones inside the core are valued in the
+                // scans; those going on into the tail are units.
+                let mut range = span(EMPTY, path[first]);
+                push(first, first, range);
+                if first + 1 < path.len() {
+                    range = span(range, path[first + 1]);
+                    push(first, first + 1, range);
+                }
+                let mut range = to_core_end[first];
+                for (last, &t) in path.iter().enumerate().skip(core.end) {
+                    range = span(range, t);
+                    if last >= first + 2 {
+                        push(first, last, range);
+                    }
                 }
             }
             if let Some(stair) = stair {
@@ -586,7 +718,8 @@ impl Sub<'_> {
                 );
             }
         }
-        (chosen, table.stairs.len())
+        effort.staircases += table.stairs.len();
+        chosen
     }
 
     /// The ranges (inclusive, local positions) whose best values each job sums: the gaps of a
