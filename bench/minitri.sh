@@ -2,10 +2,11 @@
 # Wall time and peak memory of `minitri` end to end (WKT file in, JSON out to /dev/null, default
 # algorithm) on the generated families of bench/polygon.py: random star-shaped polygons (general
 # position), random rectilinear mazes (many degenerate triangles, local visibility) and bars
-# (many degenerate triangles, an open corridor: quadratic, issue 3); with all cores and with
+# (many degenerate triangles, an open corridor: quadratic, issue 3) and snakes (a winding
+# corridor traced from a raster, the realistic form of the bars); with all cores and with
 # --jobs 1, and a time limit per run (a shape's larger sizes are skipped once a run hit it).
 # Usage, from anywhere: bench/minitri.sh [SIZES...]   (default 1000 10000 100000 1000000)
-# Environment: MINITRI_BENCH_SHAPES (default "star maze bars"), MINITRI_BENCH_LIMIT (seconds,
+# Environment: MINITRI_BENCH_SHAPES (default "star maze bars snake"), MINITRI_BENCH_LIMIT (seconds,
 # default 120). Needs python3 and GNU time (/usr/bin/time).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -13,7 +14,7 @@ cargo build --release --quiet
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 limit=${MINITRI_BENCH_LIMIT:-120}
-read -r -a shapes <<< "${MINITRI_BENCH_SHAPES:-star maze bars}"
+read -r -a shapes <<< "${MINITRI_BENCH_SHAPES:-star maze bars snake}"
 sizes=("$@"); [ ${#sizes[@]} -gt 0 ] || sizes=(1000 10000 100000 1000000)
 printf '| shape | n | file (MB) | time (s) | time, --jobs 1 (s) | peak memory (MB) | bytes per vertex |\n'
 printf '|---|---:|---:|---:|---:|---:|---:|\n'

@@ -13,6 +13,11 @@
                                          bar whose top and bottom follow random step heights from
                                          a small range, so that an open corridor runs its whole
                                          length and Theta(N^2) vertex pairs see each other
+  bench/polygon.py snake N [SEED]        a raster-like winding corridor of about N vertices:
+                                         rows of unit columns (bottoms at heights 0-1, tops 5-6)
+                                         joined at alternate ends, every lattice point of the
+                                         boundary a vertex (long 3b-chains along the walls,
+                                         degenerate triangles across the corridor)
 """
 import math, random, sys
 
@@ -94,6 +99,29 @@ elif kind == "bars":
                 changed = True
         ring = out
     pts = ring
+elif kind == "snake":
+    rows = max(2, round(n ** 0.5 / 8))
+    columns = max(3, round(n / (3 * rows)))
+    cells = set()
+    for r in range(rows):
+        y0 = 10 * r
+        for x in range(columns):
+            f, c = rng.choice([0, 1]), rng.choice([5, 6])
+            cells.update((x, y0 + y) for y in range(f, c))
+        if r + 1 < rows:                      # the connector to the next corridor
+            x = columns - 1 if r % 2 == 0 else 0
+            cells.update((x, y) for y in range(y0 + 1, y0 + 12))
+    nxt = {}                                  # boundary unit edges, inside on the left
+    for (x, y) in cells:
+        if (x, y - 1) not in cells: nxt[(x, y)] = (x + 1, y)
+        if (x + 1, y) not in cells: nxt[(x + 1, y)] = (x + 1, y + 1)
+        if (x, y + 1) not in cells: nxt[(x + 1, y + 1)] = (x, y + 1)
+        if (x - 1, y) not in cells: nxt[(x, y + 1)] = (x, y)
+    start = min(nxt)
+    pts, p = [start], nxt[start]
+    while p != start:                         # every lattice point of the boundary a vertex
+        pts.append(p)
+        p = nxt[p]
 else:
-    sys.exit(f"unknown kind {kind!r}: use star, convex, maze or bars")
+    sys.exit(f"unknown kind {kind!r}: use star, convex, maze, bars or snake")
 print("POLYGON ((" + ", ".join(f"{x} {y}" for x, y in pts + pts[:1]) + "))")

@@ -5,14 +5,14 @@
 //! Run (release build, as every `cargo bench`):
 //!
 //! ```text
-//! cargo bench --bench compare -- [--sizes 1000,10000,100000,1000000] [--shapes star,maze,bars]
+//! cargo bench --bench compare -- [--sizes 1000,10000,100000,1000000] [--shapes star,maze,bars,snake]
 //!     [--max-seconds 10] [--kill-after 120] [--runs 5] [--dp-max 2000] [--seed 1] [--verify]
 //!     [--fixtures water-huge,water-huge2,water-huge3,hilbert] [--fixtures-dir DIR] [--no-fixtures]
 //! ```
 //!
 //! or `bench/compare.sh [options]`. What is measured:
 //!
-//! - Inputs: the families of `benches/common` (`star`, `maze`, `bars`) at each nominal size, and
+//! - Inputs: the families of `benches/common` (`star`, `maze`, `bars`, `snake`) at each nominal size, and
 //!   the largest fixtures of mapbox/earcut (`fixtures/earcut/`). minitri does not do
 //!   holes yet, so a fixture with holes gets earcut alone ("holes: n/a" for the others), then a
 //!   second row with its outer ring alone, for all of them.
@@ -173,7 +173,8 @@ fn parse_shape(name: &str) -> Result<Shape, String> {
         "star" => Ok(Shape::Star),
         "maze" => Ok(Shape::Maze),
         "bars" => Ok(Shape::Bars),
-        _ => Err(format!("unknown shape {name:?} (star, maze, bars)")),
+        "snake" => Ok(Shape::Snake),
+        _ => Err(format!("unknown shape {name:?} (star, maze, bars, snake)")),
     }
 }
 
@@ -298,11 +299,11 @@ struct Config {
 }
 
 const USAGE: &str =
-    "usage: cargo bench --bench compare -- [--sizes N,N,..] [--shapes star,maze,bars]
+    "usage: cargo bench --bench compare -- [--sizes N,N,..] [--shapes star,maze,bars,snake]
     [--max-seconds S] [--kill-after K] [--runs R] [--dp-max N] [--seed N] [--verify]
     [--fixtures NAME,NAME,..] [--fixtures-dir DIR] [--no-fixtures]
   --sizes         nominal sizes (default 1000,10000,100000,1000000; 1e5 and 10^5 work too)
-  --shapes        generated families (default star,maze,bars)
+  --shapes        generated families (default star,maze,bars,snake)
   --max-seconds   skip an algorithm's larger sizes once one run took more than S s (default 10)
   --kill-after    kill a worker still running after K s, input generation included (default 120)
   --runs          at most R runs per measurement, fewer once they add up to 2 s (default 5)
@@ -327,7 +328,7 @@ fn parse_size(s: &str) -> Result<usize, String> {
 
 fn parse_args(args: &[String]) -> Result<Config, String> {
     let mut c = Config {
-        shapes: vec![Shape::Star, Shape::Maze, Shape::Bars],
+        shapes: vec![Shape::Star, Shape::Maze, Shape::Bars, Shape::Snake],
         sizes: vec![1_000, 10_000, 100_000, 1_000_000],
         max_seconds: 10.0,
         kill_after: 120.0,

@@ -17,6 +17,8 @@
 //!   (`n / 4` columns, as in `bench/polygon.py`): the bottom follows random step heights 0..=4
 //!   and the top 6..=12, so an open corridor 4 < y < 6 runs the whole length and Theta(n^2)
 //!   vertex pairs see each other (issue 3). Consecutive equal points and flat vertices are removed.
+//! - [`snake`]: a raster-like winding corridor (rows of a bar joined at alternate ends, every
+//!   lattice point of the boundary a vertex): the realistic form of the bars' quadratic step 3.
 //!
 //! Both give the outer ring counter-clockwise as integer points, which [`polygon`] turns into a
 //! validated [`minitri::Polygon`] through the public API (exact decimals, `Polygon::from_raw`)
@@ -39,6 +41,8 @@ pub enum Shape {
     /// Random rectilinear bar with an open corridor: many degenerate triangles, quadratic
     /// visibility.
     Bars,
+    /// A raster-like winding corridor, every lattice point of the boundary a vertex.
+    Snake,
 }
 
 impl Shape {
@@ -48,6 +52,7 @@ impl Shape {
             Shape::Star => "star",
             Shape::Maze => "maze",
             Shape::Bars => "bars",
+            Shape::Snake => "snake",
         }
     }
 
@@ -57,6 +62,7 @@ impl Shape {
             Shape::Star => star(n, seed),
             Shape::Maze => maze(n, seed),
             Shape::Bars => bars(n, seed),
+            Shape::Snake => snake(n, seed),
         }
     }
 }
@@ -149,6 +155,55 @@ pub fn bars(n: usize, seed: u64) -> Vec<[i64; 2]> {
         }
         ring = kept;
     }
+}
+
+/// A raster-like winding corridor of about `n` vertices (`bench/polygon.py snake` draws the same
+/// family with Python's generator): `rows = max(2, round(sqrt(n) / 8))` corridors of
+/// `columns = max(3, round(n / (3 rows)))` unit columns, bottoms at random heights 0 or 1 and tops
+/// at 5 or 6 (row `r` is shifted up by `10 r`), joined at alternate ends by one-column connectors;
+/// the boundary of the cells, counter-clockwise from its lowest-leftmost point, with every
+/// lattice point a vertex (as an outline traced from a raster keeps them). Degenerate triangles
+/// cross the corridor (nested inside each other along the whole snake: quadratic in step 3 of
+/// MINITRI, as on the bars) and long 3b-chains run along its walls.
+pub fn snake(n: usize, seed: u64) -> Vec<[i64; 2]> {
+    let mut rng = Rng(seed);
+    let rows = ((n as f64).sqrt() / 8.0).round().max(2.0) as i64;
+    let columns = (n as f64 / (3 * rows) as f64).round().max(3.0) as i64;
+    let mut cells = std::collections::HashSet::new();
+    for r in 0..rows {
+        let y0 = 10 * r;
+        for x in 0..columns {
+            let (bottom, top) = (rng.range(0, 1), rng.range(5, 6));
+            cells.extend((bottom..top).map(|y| (x, y0 + y)));
+        }
+        if r + 1 < rows {
+            let x = if r % 2 == 0 { columns - 1 } else { 0 };
+            cells.extend((y0 + 1..y0 + 12).map(|y| (x, y)));
+        }
+    }
+    // Unit edges of the union's boundary, inside on the left: the next point from each point.
+    let mut next = std::collections::HashMap::with_capacity(2 * cells.len());
+    for &(x, y) in &cells {
+        let free = |dx: i64, dy: i64| !cells.contains(&(x + dx, y + dy));
+        for (open, from, to) in [
+            (free(0, -1), (x, y), (x + 1, y)),
+            (free(1, 0), (x + 1, y), (x + 1, y + 1)),
+            (free(0, 1), (x + 1, y + 1), (x, y + 1)),
+            (free(-1, 0), (x, y + 1), (x, y)),
+        ] {
+            if open {
+                next.insert(from, to);
+            }
+        }
+    }
+    let first = *next.keys().min().expect("cells");
+    let mut ring = vec![[first.0, first.1]];
+    let mut at = next[&first];
+    while at != first {
+        ring.push([at.0, at.1]);
+        at = next[&at];
+    }
+    ring
 }
 
 /// A random rectilinear maze of about `n` vertices (`bench/polygon.py maze` draws the same
