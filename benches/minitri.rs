@@ -1,14 +1,15 @@
 //! MINITRI beside minitri's plain triangulation (`ear`), the `earcut` crate and, up to 2000
 //! vertices, the Asano DP, on the same inputs: random star-shaped polygons in general position
-//! and two random rectilinear families (many degenerate triangles): mazes (local visibility) and
-//! bars (an open corridor, quadratic visibility), n = 10^3 .. 10^6 (`benches/common`).
+//! and three random rectilinear families (many degenerate triangles): mazes (local visibility),
+//! bars (an open corridor, quadratic visibility) and snakes (a winding corridor traced from a
+//! raster), n = 10^3 .. 10^6 (`benches/common`).
 //! Only the triangulation is timed: the polygon is built and validated beforehand; `earcut` gets
 //! the same coordinates as `f64`.
 //!
 //! Run: `cargo bench --bench minitri`. Environment:
 //! - `MINITRI_BENCH_MAX_N` (default 100000): the largest size (sizes are 10^3, 10^4, ...);
 //! - `MINITRI_BENCH_BARS_MAX_N` (default 1000): the largest size at which `minitri` itself
-//!   is benchmarked on the bars, where it is quadratic (minutes above ~8000 vertices, issue 3);
+//!   is benchmarked on the bars and snakes, where its step 3 is quadratic (issue 3);
 //!   the other functions follow `MINITRI_BENCH_MAX_N`.
 //!
 //! The one-run table with peak memory and triangle counts is `benches/compare.rs`.
@@ -39,7 +40,7 @@ fn family(c: &mut Criterion, shape: Shape) {
     let max_n = env_usize("MINITRI_BENCH_MAX_N", 100_000);
     let minitri_max_n = match shape {
         Shape::Star | Shape::Maze => max_n,
-        Shape::Bars => env_usize("MINITRI_BENCH_BARS_MAX_N", 1000),
+        Shape::Bars | Shape::Snake => env_usize("MINITRI_BENCH_BARS_MAX_N", 1000),
     };
     let options = Options {
         dp_limit: usize::MAX,
@@ -69,7 +70,7 @@ fn family(c: &mut Criterion, shape: Shape) {
             });
         } else {
             eprintln!(
-                "{}/minitri/{n}: skipped (MINITRI_BENCH_RECTILINEAR_MAX_N = {minitri_max_n})",
+                "{}/minitri/{n}: skipped (MINITRI_BENCH_BARS_MAX_N = {minitri_max_n})",
                 shape.name()
             );
         }
@@ -100,5 +101,9 @@ fn bars(c: &mut Criterion) {
     family(c, Shape::Bars);
 }
 
-criterion_group!(benches, star, maze, bars);
+fn snake(c: &mut Criterion) {
+    family(c, Shape::Snake);
+}
+
+criterion_group!(benches, star, maze, bars, snake);
 criterion_main!(benches);
