@@ -193,15 +193,14 @@ pub(crate) fn maximum_independent_set_with(
         }
         let cut = shortest_cut(&component, |t| {
             let (l, r) = circle.chords[t];
-            // The chords of a long chain but its ends (which may be irregular, see
-            // `Staircase::find`) must not be cut.
             let (chain, i) = chains.place[t];
             let len = chains.paths[chain].len();
-            (
-                local[l] as usize,
-                local[r] as usize,
-                len >= 4 && (1..len - 1).contains(&i),
-            )
+            let class = match () {
+                _ if len < 4 => Protect::No,
+                _ if (1..len - 1).contains(&i) => Protect::Inner,
+                _ => Protect::End,
+            };
+            (local[l] as usize, local[r] as usize, class)
         });
         let p = positions.len();
         for &g in &positions {
@@ -219,43 +218,63 @@ pub(crate) fn maximum_independent_set_with(
     (chosen, effort)
 }
 
+/// How much a chord's pocket must be kept whole when a component's circle is cut
+/// ([`shortest_cut`]).
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Protect {
+    /// Not a chord of a 3b-chain of four or more.
+    No,
+    /// The first or last chord of such a chain: cut through, it becomes an irregular end
+    /// (`Staircase::find`), whose pieces are units with O(L) gaps each.
+    End,
+    /// Any other chord of such a chain: cut through, the chain is no staircase at all.
+    Inner,
+}
+
 /// Where to cut a component's circle into a line: the position (among `0..p`, `p` twice the
 /// number of `chords`) that becomes the first. Cutting the circle anywhere gives the same
 /// crossings, hence the same answer, but not the same work: a cut on the short side (the
 /// pocket) of a chain's chord breaks the chain's staircase on the line (see [`Staircase`]; a
 /// chain along a wall through the ring's first vertex took O(L^2) units), and the scans cost
 /// about the total span (Valiente). So the cut falls on the short side of the fewest inner
-/// chords of chains (the flag of `chord`), then where the spans sum to the least. O(p).
-fn shortest_cut(chords: &[usize], chord: impl Fn(usize) -> (usize, usize, bool)) -> usize {
+/// chords of chains, then of the fewest end chords, then where the spans sum to the least
+/// (`chord` gives each chord's ends and its [`Protect`] class). O(p).
+fn shortest_cut(chords: &[usize], chord: impl Fn(usize) -> (usize, usize, Protect)) -> usize {
     let p = 2 * chords.len();
     // Cutting just before position r, chord (x, y) spans y - x if r is outside x + 1..=y,
     // p - (y - x) if inside: the change by r, as differences; and how many chords of long
-    // 3b-chains r would cut.
+    // 3b-chains r would cut, inner and end chords apart.
     let mut change = vec![0i64; p + 1];
-    let mut chain_cuts = vec![0i32; p + 1];
+    let mut cuts = vec![[0i32; 2]; p + 1];
     for &t in chords {
-        let (x, y, in_chain) = chord(t);
+        let (x, y, class) = chord(t);
         let (x, y) = (x.min(y), x.max(y));
         let delta = p as i64 - 2 * (y - x) as i64;
         change[x + 1] += delta;
         change[y + 1] -= delta;
         // A chain's chord is cut when r falls on its short side (its pocket).
-        if in_chain && 2 * (y - x) <= p {
-            chain_cuts[x + 1] += 1;
-            chain_cuts[y + 1] -= 1;
-        } else if in_chain {
-            chain_cuts[0] += 1;
-            chain_cuts[x + 1] -= 1;
-            chain_cuts[y + 1] += 1;
+        let k = match class {
+            Protect::No => continue,
+            Protect::End => 1,
+            Protect::Inner => 0,
+        };
+        if 2 * (y - x) <= p {
+            cuts[x + 1][k] += 1;
+            cuts[y + 1][k] -= 1;
+        } else {
+            cuts[0][k] += 1;
+            cuts[x + 1][k] -= 1;
+            cuts[y + 1][k] += 1;
         }
     }
-    let (mut best, mut at) = ((i32::MAX, i64::MAX), 0);
-    let (mut total, mut cuts) = (0, 0);
+    let (mut best, mut at) = ((i32::MAX, i32::MAX, i64::MAX), 0);
+    let (mut total, mut inner, mut ends) = (0, 0, 0);
     for r in 0..p {
         total += change[r];
-        cuts += chain_cuts[r];
-        if (cuts, total) < best {
-            (best, at) = ((cuts, total), r);
+        inner += cuts[r][0];
+        ends += cuts[r][1];
+        if (inner, ends, total) < best {
+            (best, at) = ((inner, ends, total), r);
         }
     }
     at
@@ -330,6 +349,9 @@ pub(crate) struct Effort {
     pub staircases: usize,
     /// The longest 3b-chain all of whose pieces were listed as units (not a staircase).
     pub longest_listed: usize,
+    /// The longest 3b-chain valued as a staircase without its first or last chords (irregular
+    /// ends, whose pieces are units).
+    pub longest_trimmed: usize,
 }
 
 /// A candidate for the top level of some range: one chord, or a contiguous piece of a 3b-chain
@@ -591,8 +613,12 @@ impl Sub<'_> {
             };
             // Pieces of three or more chords of the staircase core are valued in the scans;
             // every other piece is a unit.
-            if stair.is_none() {
-                effort.longest_listed = effort.longest_listed.max(path.len());
+            match &stair {
+                None => effort.longest_listed = effort.longest_listed.max(path.len()),
+                Some((core, _)) if core.len() < path.len() => {
+                    effort.longest_trimmed = effort.longest_trimmed.max(path.len());
+                }
+                Some(_) => {}
             }
             let (core, stair) = match stair {
                 Some((core, stair)) => (core, Some(stair)),
