@@ -21,6 +21,22 @@
 """
 import math, random, sys
 
+def boundary(cells):
+    """The boundary of a union of unit cells (simply connected, never pinched), counter-clockwise
+    from its lowest-leftmost point, every lattice point on it a vertex."""
+    nxt = {}                                  # boundary unit edges, inside on the left
+    for (x, y) in cells:
+        if (x, y - 1) not in cells: nxt[(x, y)] = (x + 1, y)
+        if (x + 1, y) not in cells: nxt[(x + 1, y)] = (x + 1, y + 1)
+        if (x, y + 1) not in cells: nxt[(x + 1, y + 1)] = (x, y + 1)
+        if (x - 1, y) not in cells: nxt[(x, y + 1)] = (x, y)
+    start = min(nxt)
+    ring, p = [start], nxt[start]
+    while p != start:
+        ring.append(p)
+        p = nxt[p]
+    return ring
+
 kind, n = sys.argv[1], int(sys.argv[2])
 rng = random.Random(int(sys.argv[3]) if len(sys.argv) > 3 else 1)
 if kind == "star":
@@ -53,16 +69,7 @@ elif kind == "maze":
         if ra != rb:
             parent[ra] = rb
             cells.add((2 * i + 1, 2 * j) if d == 0 else (2 * i, 2 * j + 1))
-    nxt = {}                                  # boundary unit edges, inside on the left
-    for (x, y) in cells:
-        if (x, y - 1) not in cells: nxt[(x, y)] = (x + 1, y)
-        if (x + 1, y) not in cells: nxt[(x + 1, y)] = (x + 1, y + 1)
-        if (x, y + 1) not in cells: nxt[(x + 1, y + 1)] = (x, y + 1)
-        if (x - 1, y) not in cells: nxt[(x, y + 1)] = (x, y)
-    ring, p = [(0, 0)], nxt[(0, 0)]
-    while p != (0, 0):
-        ring.append(p)
-        p = nxt[p]
+    ring = boundary(cells)
     m = len(ring)
     def turn(a, b, c):
         return (b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0]) != 0
@@ -111,17 +118,7 @@ elif kind == "snake":
         if r + 1 < rows:                      # the connector to the next corridor
             x = columns - 1 if r % 2 == 0 else 0
             cells.update((x, y) for y in range(y0 + 1, y0 + 12))
-    nxt = {}                                  # boundary unit edges, inside on the left
-    for (x, y) in cells:
-        if (x, y - 1) not in cells: nxt[(x, y)] = (x + 1, y)
-        if (x + 1, y) not in cells: nxt[(x + 1, y)] = (x + 1, y + 1)
-        if (x, y + 1) not in cells: nxt[(x + 1, y + 1)] = (x, y + 1)
-        if (x - 1, y) not in cells: nxt[(x, y + 1)] = (x, y)
-    start = min(nxt)
-    pts, p = [start], nxt[start]
-    while p != start:                         # every lattice point of the boundary a vertex
-        pts.append(p)
-        p = nxt[p]
+    pts = boundary(cells)                     # every lattice point of the boundary a vertex
 else:
     sys.exit(f"unknown kind {kind!r}: use star, convex, maze, bars or snake")
 print("POLYGON ((" + ", ".join(f"{x} {y}" for x, y in pts + pts[:1]) + "))")

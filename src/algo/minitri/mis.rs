@@ -35,8 +35,8 @@
 //! line leaves the pocketed wall and meets the boundary anywhere (so the staircase is the chain
 //! without up to two chords at each end, and the pieces with those chords are listed as units:
 //! O(L)); and the place where the circle is cut into a line, if it falls in a pocket (each
-//! component is cut where its chords' spans sum to the least without cutting a chain's inner
-//! chord, `shortest_cut`). A chain that is still not a staircase has all its pieces listed
+//! component is cut through the pockets of the fewest chain chords, inner ones first, then where
+//! its chords' spans sum to the least: `shortest_cut`). A chain that is still not a staircase has all its pieces listed
 //! (O(L^2) units; before both fixes a 3 x 1000-column snake's wall chains were, and step 3 took
 //! 11 s instead of 0.3 s).
 //!
