@@ -459,8 +459,6 @@ impl Staircase {
     }
 }
 
-const NOT_IN_STAIRCASE: (u32, u32) = (u32::MAX, u32::MAX);
-
 /// A best value not found yet.
 const UNKNOWN: u32 = u32::MAX;
 
@@ -507,10 +505,31 @@ struct Table {
     asked_start: Vec<u32>,
     asked_end: Vec<u32>,
     stairs: Vec<Staircase>,
-    /// Per local position, for the triangle ending there: (its staircase, its index there), or
-    /// `NOT_IN_STAIRCASE`.
-    stair_of: Vec<(u32, u32)>,
+    /// Per local position, what the scans do there for a staircase (read in every step of
+    /// every scan, so all it needs is in one record).
+    events: Vec<StairEvent>,
 }
+
+/// At a local position, the endpoint of chord `i` of staircase `stair` (`NONE`: nothing to do):
+/// its start `s_i`, where pieces from `i` may begin (`first == STARTS`, only if `i + 2 < L`), or
+/// its end `e_i`, where pieces ending with `i` are valued (`i >= 2`; `first` is then the
+/// position of `s_{i - 2}`, where the latest piece may begin).
+#[derive(Clone, Copy)]
+struct StairEvent {
+    stair: u32,
+    i: u32,
+    first: u32,
+}
+
+/// No staircase event at a position.
+const NO_EVENT: StairEvent = StairEvent {
+    stair: NONE,
+    i: 0,
+    first: 0,
+};
+
+/// [`StairEvent::first`] of a start.
+const STARTS: u32 = u32::MAX;
 
 /// Scratch for [`Sub::gaps`], reused so that valuing a unit allocates nothing.
 #[derive(Default)]
@@ -594,7 +613,7 @@ impl Sub<'_> {
             asked_start: Vec::new(),
             asked_end: Vec::new(),
             stairs: Vec::new(),
-            stair_of: vec![NOT_IN_STAIRCASE; p],
+            events: vec![NO_EVENT; p],
         };
         let mut jobs: Vec<(usize, u8, Job)> = Vec::new(); // (span, units first, job)
         for &g in self.positions {
@@ -685,10 +704,18 @@ impl Sub<'_> {
                     let [g0, g1] = stair.right_gaps(r);
                     jobs.push((span(g0).max(span(g1)), 1, Job::Right(s, r)));
                 }
-                for (i, &t) in stair.tris.iter().enumerate() {
-                    let (lo, hi) = self.chord(t);
-                    table.stair_of[lo] = (s as u32, i as u32);
-                    table.stair_of[hi] = (s as u32, i as u32);
+                for (i, &(lo, hi)) in stair.ends.iter().enumerate() {
+                    let event = |first: usize| StairEvent {
+                        stair: s as u32,
+                        i: i as u32,
+                        first: first as u32,
+                    };
+                    if i + 2 < l {
+                        table.events[lo] = event(STARTS as usize);
+                    }
+                    if i >= 2 {
+                        table.events[hi] = event(stair.ends[i - 2].0);
+                    }
                 }
                 table.stairs.push(stair);
             }
@@ -850,15 +877,12 @@ impl Sub<'_> {
         }
         // A staircase piece `f..=i` ending at `y`, its start `s_f` in the range: the value
         // of the scan's running maximum, summed out for each `f` from `i - 2` down.
-        let (s, i) = table.stair_of[y];
-        if s == NOT_IN_STAIRCASE.0 {
-            return None;
+        let event = table.events[y];
+        if event.stair == NONE || event.first == STARTS {
+            return None; // no piece ends at y
         }
-        let (s, i) = (s as usize, i as usize);
+        let (s, i) = (event.stair as usize, event.i as usize);
         let stair = &table.stairs[s];
-        if y != stair.ends[i].1 || i < 2 {
-            return None;
-        }
         let mut inner = 0; // sum(inner[f + 2 .. i])
         for f in (0..=i - 2).rev() {
             if f + 2 < i {
@@ -905,22 +929,21 @@ impl Sub<'_> {
                 }
                 here = here.max(best[lo - a] + value);
             }
-            let (s, i) = table.stair_of[x];
-            if s != NOT_IN_STAIRCASE.0 {
-                let (s, i) = (s as usize, i as usize);
+            let event = table.events[x];
+            if event.stair != NONE {
+                let (s, i) = (event.stair as usize, event.i as usize);
                 let stair = &table.stairs[s];
-                let l = stair.tris.len();
-                if x == stair.ends[i].0 && i + 2 < l {
+                if event.first == STARTS {
                     let value = best[x - a] as i64 - i as i64 + stair.left[i] as i64;
                     start[x] = (stamp, value);
-                } else if x == stair.ends[i].1 && i >= 2 {
+                } else {
                     // M(i) = max(M(i - 1) + inner[i - 1], start(i - 2)).
                     let last = run[s];
                     let mut m = i64::MIN;
                     if last.0 == stamp && last.1 + 1 == i && last.2 > i64::MIN {
                         m = last.2 + stair.inner[i - 1] as i64;
                     }
-                    let (st, v) = start[stair.ends[i - 2].0];
+                    let (st, v) = start[event.first as usize];
                     if st == stamp {
                         m = m.max(v);
                     }
