@@ -18,6 +18,9 @@
                                          joined at alternate ends, every lattice point of the
                                          boundary a vertex (long 3b-chains along the walls,
                                          degenerate triangles across the corridor)
+  bench/polygon.py zigzag N [SEED]       the same corridor turning right and up alternately
+                                         (segments of about sqrt(12 N) columns), so that it runs
+                                         both ways and its bounding box is square
 """
 import math, random, sys
 
@@ -119,6 +122,22 @@ elif kind == "snake":
             x = columns - 1 if r % 2 == 0 else 0
             cells.update((x, y) for y in range(y0 + 1, y0 + 12))
     pts = boundary(cells)                     # every lattice point of the boundary a vertex
+elif kind == "zigzag":
+    length = max(12, round((12 * n) ** 0.5))  # columns per segment; about 3 vertices per column
+    segments = max(2, round(n / (3 * length)))
+    cells, x0, y0 = set(), 0, 0
+    for s in range(segments):
+        for t in range(length):
+            f, c = rng.choice([0, 1]), rng.choice([5, 6])
+            if s % 2 == 0:                    # along x, from (x0, y0)
+                cells.update((x0 + t, y0 + y) for y in range(f, c))
+            else:                             # along y
+                cells.update((x0 + x, y0 + t) for x in range(f, c))
+        if s % 2 == 0:
+            x0 += length - 6
+        else:
+            y0 += length - 6
+    pts = boundary(cells)
 else:
-    sys.exit(f"unknown kind {kind!r}: use star, convex, maze, bars or snake")
+    sys.exit(f"unknown kind {kind!r}: use star, convex, maze, bars, snake or zigzag")
 print("POLYGON ((" + ", ".join(f"{x} {y}" for x, y in pts + pts[:1]) + "))")
