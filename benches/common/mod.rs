@@ -181,29 +181,9 @@ pub fn snake(n: usize, seed: u64) -> Vec<[i64; 2]> {
             cells.extend((y0 + 1..y0 + 12).map(|y| (x, y)));
         }
     }
-    // Unit edges of the union's boundary, inside on the left: the next point from each point.
-    let mut next = std::collections::HashMap::with_capacity(2 * cells.len());
-    for &(x, y) in &cells {
-        let free = |dx: i64, dy: i64| !cells.contains(&(x + dx, y + dy));
-        for (open, from, to) in [
-            (free(0, -1), (x, y), (x + 1, y)),
-            (free(1, 0), (x + 1, y), (x + 1, y + 1)),
-            (free(0, 1), (x + 1, y + 1), (x, y + 1)),
-            (free(-1, 0), (x, y + 1), (x, y)),
-        ] {
-            if open {
-                next.insert(from, to);
-            }
-        }
-    }
-    let first = *next.keys().min().expect("cells");
-    let mut ring = vec![[first.0, first.1]];
-    let mut at = next[&first];
-    while at != first {
-        ring.push([at.0, at.1]);
-        at = next[&at];
-    }
-    ring
+    // Column 0 is a corridor's first column: its lowest cell's lower-left corner starts the walk.
+    let bottom = (0..).find(|&y| cells.contains(&(0, y))).expect("column 0");
+    outline(|x, y| cells.contains(&(x, y)), [0, bottom], false)
 }
 
 /// A random rectilinear maze of about `n` vertices (`bench/polygon.py maze` draws the same
@@ -253,10 +233,6 @@ pub fn maze(n: usize, seed: u64) -> Vec<[i64; 2]> {
             filled[between] = true;
         }
     }
-    // Walk the boundary with the inside on the left. At lattice point (x, y) heading in
-    // direction d (0 east, 1 north, 2 west, 3 south), the cells ahead-left and ahead-right
-    // decide: turn right if ahead-right is in, go straight if only ahead-left is in, else turn
-    // left.
     let inside = |x: i64, y: i64| {
         x >= 0
             && y >= 0
@@ -264,6 +240,20 @@ pub fn maze(n: usize, seed: u64) -> Vec<[i64; 2]> {
             && (y as usize) < side
             && filled[cell(x as usize, y as usize)]
     };
+    outline(inside, [0, 0], true) // from the lower-left corner of node (0, 0)
+}
+
+/// The boundary of a simply connected, never pinched union of unit cells (`inside(x, y)`: the
+/// cell whose lower-left corner is `(x, y)`), counter-clockwise from `start`, the lower-left
+/// corner of a cell whose neighbour below is outside: its corners only, or every lattice point
+/// on it. At lattice point p heading in direction d (0 east, 1 north, 2 west, 3 south), the
+/// cells ahead-left and ahead-right decide: turn right if ahead-right is in, go straight if only
+/// ahead-left is in, else turn left.
+fn outline(
+    inside: impl Fn(i64, i64) -> bool,
+    start: [i64; 2],
+    corners_only: bool,
+) -> Vec<[i64; 2]> {
     const STEP: [[i64; 2]; 4] = [[1, 0], [0, 1], [-1, 0], [0, -1]];
     // The cell ahead-left / ahead-right of lattice point p in direction d, as its lower-left corner.
     let ahead = |p: [i64; 2], d: usize| -> ([i64; 2], [i64; 2]) {
@@ -274,9 +264,8 @@ pub fn maze(n: usize, seed: u64) -> Vec<[i64; 2]> {
             _ => ([p[0], p[1] - 1], [p[0] - 1, p[1] - 1]),
         }
     };
-    let start = [0i64, 0i64]; // lower-left corner of node (0, 0), heading east
     let (mut p, mut d) = (start, 0usize);
-    let mut ring = Vec::with_capacity(n + 16);
+    let mut ring = Vec::new();
     loop {
         let (left, right) = ahead(p, d);
         let next = if inside(right[0], right[1]) {
@@ -286,7 +275,7 @@ pub fn maze(n: usize, seed: u64) -> Vec<[i64; 2]> {
         } else {
             (d + 1) % 4
         };
-        if next != d || ring.is_empty() {
+        if !corners_only || next != d || ring.is_empty() {
             ring.push(p);
         }
         d = next;
