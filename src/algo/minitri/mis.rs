@@ -220,7 +220,7 @@ pub(crate) fn maximum_independent_set_with(
 
 /// How much a chord's pocket must be kept whole when a component's circle is cut
 /// ([`shortest_cut`]).
-#[derive(Clone, Copy, PartialEq, Eq)]
+#[derive(Clone, Copy)]
 enum Protect {
     /// Not a chord of a 3b-chain of four or more.
     No,
