@@ -73,6 +73,7 @@
 
 use super::circle::Circle;
 use super::degenerate::Degenerate;
+use super::ladder::{clamp, LadderPolicy, Ladders, Level, Reader, Slot, NEG};
 use crate::geom::kernel::{cross, Dir};
 use crate::geom::polygon::Polygon;
 
@@ -163,16 +164,34 @@ pub fn chains(polygon: &Polygon, mdts: &[Degenerate]) -> Chains {
 /// chord is always taken, larger components go through the exact recurrence on their own
 /// endpoints only.
 pub fn maximum_independent_set(circle: &Circle, chains: &Chains) -> Vec<usize> {
-    maximum_independent_set_with(circle, chains, true).0
+    maximum_independent_set_with(circle, chains, Method::default()).0
 }
 
-/// [`maximum_independent_set`], with the staircase shortcut on or off (off: every piece of every
-/// 3b-chain is an explicit unit, the slower and simpler method the tests compare against); also
-/// returns what the solving took (for the tests).
+/// How [`maximum_independent_set_with`] solves (the tests compare the ways).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Method {
+    /// Whether long staircase pieces are valued in the scans (else every piece of every
+    /// 3b-chain is an explicit unit, the slower and simpler method).
+    pub staircases: bool,
+    /// Which ranges the scans jump with a matrix ([`super::ladder`]).
+    pub ladders: LadderPolicy,
+}
+
+impl Default for Method {
+    fn default() -> Self {
+        Method {
+            staircases: true,
+            ladders: LadderPolicy::Auto,
+        }
+    }
+}
+
+/// [`maximum_independent_set`] by the given method; also returns what the solving took (for
+/// the tests).
 pub(crate) fn maximum_independent_set_with(
     circle: &Circle,
     chains: &Chains,
-    staircases: bool,
+    method: Method,
 ) -> (Vec<usize>, Effort) {
     let mut effort = Effort::default();
     let mut chosen = Vec::new();
@@ -211,7 +230,7 @@ pub(crate) fn maximum_independent_set_with(
             chains,
             positions: &positions,
             local: &local,
-            staircases,
+            method,
         };
         chosen.extend(sub.solve(&mut chain_seen, number as u32, &mut effort));
     }
@@ -338,8 +357,7 @@ struct Sub<'a> {
     chains: &'a Chains,
     positions: &'a [usize],
     local: &'a [u32],
-    /// Whether long staircase pieces are valued in the scans (else listed as units).
-    staircases: bool,
+    method: Method,
 }
 
 /// What [`maximum_independent_set_with`] took, for the tests.
@@ -352,6 +370,10 @@ pub(crate) struct Effort {
     /// The longest 3b-chain valued as a staircase without its first or last chords (irregular
     /// ends, whose pieces are units).
     pub longest_trimmed: usize,
+    /// Positions the scans stepped through (not counting jumps).
+    pub scanned: u64,
+    /// Level matrices built ([`super::ladder`]).
+    pub levels: usize,
 }
 
 /// A candidate for the top level of some range: one chord, or a contiguous piece of a 3b-chain
@@ -436,10 +458,26 @@ impl Staircase {
         Some(Staircase {
             tris,
             ends,
-            left: vec![0; l],
-            inner: vec![0; l],
-            right: vec![0; l],
+            left: vec![UNKNOWN; l],
+            inner: vec![UNKNOWN; l],
+            right: vec![UNKNOWN; l],
         })
+    }
+
+    /// One past the furthest start of a gap read at the end of chord `i` (`left[i - 2]`,
+    /// `inner[i - 1]`, `right[i]`) that is not valued yet, or 0.
+    fn unvalued_before(&self, i: usize) -> usize {
+        let mut stale = 0;
+        if self.left[i - 2] == UNKNOWN {
+            stale = self.left_gaps(i - 2)[0].0 + 1;
+        }
+        if i >= 3 && self.inner[i - 1] == UNKNOWN {
+            stale = stale.max(self.inner_gap(i - 1).0 + 1);
+        }
+        if self.right[i] == UNKNOWN {
+            stale = stale.max(self.right_gaps(i)[0].0 + 1);
+        }
+        stale
     }
 
     /// The gaps (open ranges of local positions) that make up `left[f]`, `inner[j]`, `right[l]`.
@@ -459,7 +497,7 @@ impl Staircase {
     }
 }
 
-/// A best value not found yet.
+/// A best value not found yet (also a unit's or staircase gap's value before its job runs).
 const UNKNOWN: u32 = u32::MAX;
 
 /// No unit starts (or ends) at a position.
@@ -510,10 +548,9 @@ struct Table {
     events: Vec<StairEvent>,
 }
 
-/// At a local position, the endpoint of chord `i` of staircase `stair` (`NONE`: nothing to do):
-/// its start `s_i`, where pieces from `i` may begin (`first == STARTS`, only if `i + 2 < L`), or
-/// its end `e_i`, where pieces ending with `i` are valued (`i >= 2`; `first` is then the
-/// position of `s_{i - 2}`, where the latest piece may begin).
+/// At a local position, the end `e_i` of chord `i >= 2` of staircase `stair`, where the pieces
+/// ending with `i` are valued; `first` is the position of `s_{i - 2}`, where the latest of them
+/// begins (`stair == NONE`: nothing to do).
 #[derive(Clone, Copy)]
 struct StairEvent {
     stair: u32,
@@ -528,9 +565,6 @@ const NO_EVENT: StairEvent = StairEvent {
     first: 0,
 };
 
-/// [`StairEvent::first`] of a start.
-const STARTS: u32 = u32::MAX;
-
 /// Scratch for [`Sub::gaps`], reused so that valuing a unit allocates nothing.
 #[derive(Default)]
 struct GapBuffers {
@@ -543,17 +577,69 @@ struct GapBuffers {
 /// Scratch for the scans.
 #[derive(Default)]
 struct Scan {
-    /// `best[i]`: the best value within `a..a + i` (so `best[0] = 0`, and `best[x - a]` is the
-    /// best before position `x`).
-    best: Vec<u32>,
-    /// Per staircase triangle, by the local position of its left end: (stamp, the best before
-    /// it starts, minus its index, plus `left`).
-    start: Vec<(u32, i64)>,
-    /// Per staircase: (stamp, last end index seen, running maximum).
-    run: Vec<(u32, usize, i64)>,
+    /// `before[x]`: the best value within `a..x` of the current scan of `a..` (local
+    /// positions; written where the scan passes, and at the out-slots of the levels it jumps).
+    before: Vec<i64>,
+    /// Per staircase: (stamp of the scan, index of the last end it saw, the running maximum
+    /// `M` there).
+    run: Vec<(u32, u32, i64)>,
     stamp: u32,
     /// The best value within each range of [`Table::asked_end`], or `UNKNOWN`.
     asked_value: Vec<u32>,
+    /// The levels the last scan jumped, by position, each with the start of its in-slot
+    /// values in `entries`.
+    holes: Vec<(u32, u32)>,
+    entries: Vec<i64>,
+    /// A jump's out-slot values.
+    out: Vec<i64>,
+    /// In a level's scan: one past the furthest start of a unit or staircase gap read before
+    /// its job ran (see [`Level::valid_from`]).
+    stale: usize,
+    /// Positions scanned, and level matrices built (for [`Effort`]).
+    scanned: u64,
+    built: usize,
+}
+
+/// Where a scan starts (see [`Sub::scan`]).
+#[derive(Clone, Copy)]
+enum Entry<'e> {
+    /// A range on its own: the best before `a` is 0, nothing before `a` lies within.
+    Alone,
+    /// A level's range, from these values of its in-slots.
+    Level(&'e [Slot], &'e [i64]),
+}
+
+impl Scan {
+    /// The value of a slot; a position before `floor` is minus infinity.
+    fn read(&self, slot: Slot, floor: usize) -> i64 {
+        match slot {
+            Slot::Before(x) if (x as usize) < floor => NEG,
+            Slot::Before(x) => self.before[x as usize],
+            Slot::Run { stair, i } => match self.run[stair as usize] {
+                (seen, last, m) if seen == self.stamp && last == i => m,
+                _ => NEG,
+            },
+        }
+    }
+
+    fn write(&mut self, slot: Slot, v: i64) {
+        match slot {
+            Slot::Before(x) => self.before[x as usize] = v,
+            Slot::Run { stair, i } => self.run[stair as usize] = (self.stamp, i, v),
+        }
+    }
+
+    /// The levels the last scan jumped, each with its in-slot values.
+    fn take_holes(&mut self, ladders: &Ladders) -> Vec<(u32, Vec<i64>)> {
+        self.holes
+            .iter()
+            .map(|&(k, offset)| {
+                let n = ladders.levels[k as usize].ins.len();
+                let offset = offset as usize;
+                (k, self.entries[offset..offset + n].to_vec())
+            })
+            .collect()
+    }
 }
 
 impl Sub<'_> {
@@ -625,7 +711,7 @@ impl Sub<'_> {
             }
             chain_seen[chain] = component;
             let path = &self.chains.paths[chain];
-            let stair = if self.staircases {
+            let stair = if self.method.staircases {
                 Staircase::find(path, |t| self.chord(t))
             } else {
                 None
@@ -704,26 +790,20 @@ impl Sub<'_> {
                     let [g0, g1] = stair.right_gaps(r);
                     jobs.push((span(g0).max(span(g1)), 1, Job::Right(s, r)));
                 }
-                for (i, &(lo, hi)) in stair.ends.iter().enumerate() {
-                    let event = |first: usize| StairEvent {
+                for (i, &(_, hi)) in stair.ends.iter().enumerate().skip(2) {
+                    table.events[hi] = StairEvent {
                         stair: s as u32,
                         i: i as u32,
-                        first: first as u32,
+                        first: stair.ends[i - 2].0 as u32,
                     };
-                    if i + 2 < l {
-                        table.events[lo] = event(STARTS as usize);
-                    }
-                    if i >= 2 {
-                        table.events[hi] = event(stair.ends[i - 2].0);
-                    }
                 }
                 table.stairs.push(stair);
             }
         }
         table.index_ending(p);
         let mut scan = Scan {
-            run: vec![(0, 0, 0); table.stairs.len()],
-            start: vec![(0, 0); p],
+            run: vec![(0, 0, NEG); table.stairs.len()],
+            before: vec![0; p + 1],
             ..Scan::default()
         };
         jobs.sort_by_key(|&(span, kind, _)| (span, kind));
@@ -731,10 +811,13 @@ impl Sub<'_> {
         let (from, ranges) = self.ranges_of(&table, &jobs, &mut buffers);
         table.index_asked(p, &ranges);
         scan.asked_value = vec![UNKNOWN; ranges.len()];
+        let mut ladders = Ladders::choose(p, self.method.ladders, &ranges, || table.readers());
         for (n, &(_, _, job)) in jobs.iter().enumerate() {
             let inside: u32 = ranges[from[n] as usize..from[n + 1] as usize]
                 .iter()
-                .map(|&(a, b)| self.best_value(&table, &mut scan, a as usize, b as usize))
+                .map(|&(a, b)| {
+                    self.best_value(&table, &mut ladders, &mut scan, a as usize, b as usize)
+                })
                 .sum();
             match job {
                 Job::Unit(k) => {
@@ -750,7 +833,7 @@ impl Sub<'_> {
         let mut chosen = Vec::new();
         let mut ranges = vec![(0, p - 1)];
         while let Some((a, b)) = ranges.pop() {
-            let picked = self.best_in(&table, &mut scan, a, b);
+            let picked = self.best_in(&table, &mut ladders, &mut scan, a, b);
             for pick in picked {
                 let piece = match pick {
                     Pick::Unit(k) => {
@@ -772,6 +855,8 @@ impl Sub<'_> {
             }
         }
         effort.staircases += table.stairs.len();
+        effort.scanned += scan.scanned;
+        effort.levels += scan.built;
         chosen
     }
 
@@ -814,9 +899,18 @@ impl Sub<'_> {
 
     /// The best value within `a..=b`, one of the ranges asked for, found once: every unit and
     /// staircase gap inside a range is narrower than it, so it was valued before the range was
-    /// first asked for. The scan's values also give every range asked for with the same start
-    /// and an earlier end (every unit inside it is inside `a..=b`, so valued already).
-    fn best_value(&self, table: &Table, scan: &mut Scan, a: usize, b: usize) -> u32 {
+    /// first asked for. A level's value is an entry of its matrix (built now, if it was not
+    /// yet). The scan's values also give every range asked for with the same start and an
+    /// earlier end (every unit inside it is inside `a..=b`, so valued already), except those
+    /// ending inside a level the scan jumped.
+    fn best_value(
+        &self,
+        table: &Table,
+        ladders: &mut Ladders,
+        scan: &mut Scan,
+        a: usize,
+        b: usize,
+    ) -> u32 {
         let group = table.asked_start[a] as usize..table.asked_start[a + 1] as usize;
         let ends = &table.asked_end[group.clone()];
         let i = ends
@@ -826,36 +920,154 @@ impl Sub<'_> {
         if known != UNKNOWN {
             return known;
         }
-        let v = self.scan(table, scan, a, b);
+        let v = match ladders.level(a, b) {
+            Some(k) => {
+                if !self.ensure(table, ladders, scan, k, a) {
+                    return ladders.levels[k].matrix[0] as u32; // built earlier: no scan now
+                }
+                // The last scan of the build was from `Before(a)` alone: a plain scan.
+                ladders.levels[k].matrix[0]
+            }
+            None => {
+                let jumps = self.prepare(table, ladders, scan, a, b);
+                self.scan(table, ladders, scan, a, b, Entry::Alone, &jumps)
+            }
+        };
+        let mut holes = scan
+            .holes
+            .iter()
+            .map(|&(k, _)| &ladders.levels[k as usize])
+            .peekable();
         for (j, &end) in group.zip(ends) {
             let end = end as usize;
             if end > b {
                 break;
             }
-            if scan.asked_value[j] == UNKNOWN {
-                scan.asked_value[j] = scan.best[end + 1 - a];
+            while holes.peek().is_some_and(|level| level.b < end + 1) {
+                holes.next();
+            }
+            let inside_hole = holes.peek().is_some_and(|level| level.a < end + 1);
+            if scan.asked_value[j] == UNKNOWN && !inside_hole {
+                scan.asked_value[j] = scan.before[end + 1] as u32;
             }
         }
-        v
+        v as u32
+    }
+
+    /// The levels a scan of `a..=b` (not a level itself) jumps, with their matrices built and
+    /// valid for a scan from `a`.
+    fn prepare(
+        &self,
+        table: &Table,
+        ladders: &mut Ladders,
+        scan: &mut Scan,
+        a: usize,
+        b: usize,
+    ) -> Vec<u32> {
+        let mut jumps = Vec::new();
+        ladders.jumps_in(a, b, None, &mut jumps);
+        for &k in &jumps {
+            self.ensure(table, ladders, scan, k as usize, a);
+        }
+        jumps
+    }
+
+    /// Makes the matrix of level `k` valid for scans from `start` (everything within
+    /// `start..` that a scan of the level reads must be valued by now): built, or built again,
+    /// after the levels it jumps (innermost first). True if it was built now.
+    fn ensure(
+        &self,
+        table: &Table,
+        ladders: &mut Ladders,
+        scan: &mut Scan,
+        k: usize,
+        start: usize,
+    ) -> bool {
+        let valid = |level: &Level| !level.matrix.is_empty() && level.valid_from <= start;
+        if valid(&ladders.levels[k]) {
+            return false;
+        }
+        let mut stack = vec![k];
+        while let Some(&top) = stack.last() {
+            let level = &ladders.levels[top];
+            if valid(level) {
+                stack.pop();
+                continue;
+            }
+            let before = stack.len();
+            stack.extend(
+                level
+                    .jumps
+                    .iter()
+                    .map(|&j| j as usize)
+                    .filter(|&j| !valid(&ladders.levels[j])),
+            );
+            if stack.len() == before {
+                self.build(table, ladders, scan, top);
+                debug_assert!(valid(&ladders.levels[top]), "a level read an unvalued item");
+                stack.pop();
+            }
+        }
+        true
+    }
+
+    /// The matrix of level `k` (its jumps built): one scan of its range per in-slot, that slot
+    /// 0 and the others minus infinity; `Before(a)` last, so that `scan.before` then holds the
+    /// plain scan of the range. Units reaching in from outside and staircase gaps across its
+    /// start may not be valued yet: the matrix is then valid only for scans starting after
+    /// them ([`Level::valid_from`]), and built again for a scan from further out.
+    fn build(&self, table: &Table, ladders: &mut Ladders, scan: &mut Scan, k: usize) {
+        let level = &ladders.levels[k];
+        let n = level.ins.len();
+        let mut matrix = vec![NEG; n * level.outs.len()];
+        let mut entry = vec![NEG; n];
+        scan.stale = 0;
+        for c in (0..n).rev() {
+            entry.fill(NEG);
+            entry[c] = 0;
+            let slots = Entry::Level(&level.ins, &entry);
+            self.scan(table, ladders, scan, level.a, level.b, slots, &level.jumps);
+            for (r, &slot) in level.outs.iter().enumerate() {
+                matrix[r * n + c] = clamp(scan.read(slot, 0));
+            }
+        }
+        let level = &mut ladders.levels[k];
+        level.matrix = matrix;
+        level.valid_from = scan.stale;
+        scan.built += 1;
     }
 
     /// Weighted interval scheduling over the units and staircase pieces lying within `a..=b`:
-    /// the picks of a best set. One scan fills `scan.best`; then, walking back from `b`, where
-    /// the best grows at a position some unit or staircase piece ending there achieves the new
-    /// value, and the walk goes on before its start.
-    fn best_in(&self, table: &Table, scan: &mut Scan, a: usize, b: usize) -> Vec<Pick> {
-        self.scan(table, scan, a, b);
-        let best = &scan.best;
+    /// the picks of a best set. One scan fills `scan.before`; then, walking back from `b`,
+    /// where the best grows at a position some unit or staircase piece ending there achieves
+    /// the new value, and the walk goes on before its start. Where the walk needs a value
+    /// inside a level the scan jumped, that level is scanned again from the in-slot values
+    /// saved at the jump (and so on inwards): the walk mostly steps over levels, by a chosen
+    /// rung that spans one.
+    fn best_in(
+        &self,
+        table: &Table,
+        ladders: &mut Ladders,
+        scan: &mut Scan,
+        a: usize,
+        b: usize,
+    ) -> Vec<Pick> {
+        let jumps = self.prepare(table, ladders, scan, a, b);
+        let ladders = &*ladders;
+        self.scan(table, ladders, scan, a, b, Entry::Alone, &jumps);
+        let mut holes = scan.take_holes(ladders);
+        let mut read = |y: usize| self.settled(table, ladders, scan, &mut holes, y);
         let mut picked = Vec::new();
-        let mut x = b + 1; // the best within `a..x` is `best[x - a]`
+        let mut x = b + 1; // the best within `a..x` is `before[x]`
         while x > a {
             let y = x - 1;
-            if best[y + 1 - a] == best[y - a] {
+            let target = read(y + 1);
+            if target == read(y) {
                 x = y;
                 continue;
             }
             let (pick, lo) = self
-                .achieving(table, best, a, y)
+                .achieving(table, a, y, target, &mut read)
                 .expect("the best grows at a position only by a unit or a piece ending there");
             picked.push(pick);
             x = lo;
@@ -863,22 +1075,57 @@ impl Sub<'_> {
         picked
     }
 
+    /// `before[y]` of the scan of [`Self::best_in`], scanning again the levels (in `holes`,
+    /// by position, with their saved in-slot values) that hide it.
+    fn settled(
+        &self,
+        table: &Table,
+        ladders: &Ladders,
+        scan: &mut Scan,
+        holes: &mut Vec<(u32, Vec<i64>)>,
+        y: usize,
+    ) -> i64 {
+        loop {
+            let i = holes.partition_point(|&(k, _)| ladders.levels[k as usize].a < y);
+            if i == 0 {
+                break;
+            }
+            let level = &ladders.levels[holes[i - 1].0 as usize];
+            if y > level.b || level.outs.contains(&Slot::Before(y as u32)) {
+                break; // outside, or written by the jump
+            }
+            let (_, entry) = holes.remove(i - 1);
+            let slots = Entry::Level(&level.ins, &entry);
+            self.scan(table, ladders, scan, level.a, level.b, slots, &level.jumps);
+            let inner = scan.take_holes(ladders);
+            holes.splice(i - 1..i - 1, inner);
+        }
+        scan.before[y]
+    }
+
     /// A unit or staircase piece within `a..` ending at `y` whose value plus the best before its
-    /// start is the best within `a..=y` (from `best` of a scan starting at `a`), with its start.
-    fn achieving(&self, table: &Table, best: &[u32], a: usize, y: usize) -> Option<(Pick, usize)> {
-        let target = best[y + 1 - a];
+    /// start is `target`, the best within `a..=y` (`read` gives the best before a position),
+    /// with its start.
+    fn achieving(
+        &self,
+        table: &Table,
+        a: usize,
+        y: usize,
+        target: i64,
+        read: &mut impl FnMut(usize) -> i64,
+    ) -> Option<(Pick, usize)> {
         let entries = table.ending_start[y] as usize..table.ending_start[y + 1] as usize;
         for e in entries {
             let (lo, value) = table.ending[e];
             let lo = lo as usize;
-            if lo >= a && best[lo - a] + value == target {
+            if lo >= a && read(lo) + value as i64 == target {
                 return Some((Pick::Unit(table.ending_unit[e]), lo));
             }
         }
         // A staircase piece `f..=i` ending at `y`, its start `s_f` in the range: the value
         // of the scan's running maximum, summed out for each `f` from `i - 2` down.
         let event = table.events[y];
-        if event.stair == NONE || event.first == STARTS {
+        if event.stair == NONE {
             return None; // no piece ends at y
         }
         let (s, i) = (event.stair as usize, event.i as usize);
@@ -886,14 +1133,15 @@ impl Sub<'_> {
         let mut inner = 0; // sum(inner[f + 2 .. i])
         for f in (0..=i - 2).rev() {
             if f + 2 < i {
-                inner += stair.inner[f + 2];
+                inner += stair.inner[f + 2] as i64;
             }
             let lo = stair.ends[f].0;
             if lo < a {
                 break;
             }
-            let count = (i - f + 1) as u32;
-            if best[lo - a] + stair.left[f] + inner + count + stair.right[i] == target {
+            let count = (i - f + 1) as i64;
+            let rest = stair.left[f] as i64 + inner + count + stair.right[i] as i64;
+            if read(lo) + rest == target {
                 let piece = Pick::Piece {
                     stair: s as u32,
                     first: f as u32,
@@ -905,57 +1153,112 @@ impl Sub<'_> {
         None
     }
 
-    /// The scan of [`Self::best_in`]: fills `scan.best` for `a..=b` and returns the best total.
-    fn scan(&self, table: &Table, scan: &mut Scan, a: usize, b: usize) -> u32 {
+    /// The scan of `a..=b`: fills `scan.before` (at the positions it passes, and at the
+    /// out-slots of the levels in `jumps`, which it jumps with their matrices) and returns the
+    /// best total. `Entry::Alone`: nothing before `a` lies within the range; `Entry::Level`:
+    /// the range is a level's, and what is read before `a` is its in-slots, given.
+    #[allow(clippy::too_many_arguments)]
+    fn scan(
+        &self,
+        table: &Table,
+        ladders: &Ladders,
+        scan: &mut Scan,
+        a: usize,
+        b: usize,
+        entry: Entry,
+        jumps: &[u32],
+    ) -> i64 {
         scan.stamp += 1;
         let stamp = scan.stamp;
-        let Scan {
-            best, start, run, ..
-        } = scan;
-        best.clear();
-        best.reserve(b + 2 - a);
-        best.push(0);
+        // Reads before `floor` are minus infinity (`Alone`), or in-slots written here.
+        let floor = match entry {
+            Entry::Alone => {
+                scan.before[a] = 0;
+                a
+            }
+            Entry::Level(slots, values) => {
+                for (&slot, &v) in slots.iter().zip(values) {
+                    scan.write(slot, v);
+                }
+                0
+            }
+        };
+        scan.holes.clear();
+        scan.entries.clear();
+        let level_at = |j: usize| jumps.get(j).map(|&k| &ladders.levels[k as usize]);
+        let mut j = 0;
+        let mut next = level_at(0).map_or(usize::MAX, |level| level.a);
         // `here`: the best within `a..x`, then within `a..=x`.
-        let mut here = 0;
+        let mut here = scan.before[a];
         let mut to = table.ending_start[a] as usize;
-        for x in a..b + 1 {
+        let mut x = a;
+        let mut stepped = 0;
+        while x <= b {
+            if x == next {
+                // Jump over the level: out-slots from in-slots.
+                let k = jumps[j] as usize;
+                let level = &ladders.levels[k];
+                scan.stale = scan.stale.max(level.valid_from);
+                let offset = scan.entries.len();
+                for &slot in &level.ins {
+                    let v = clamp(scan.read(slot, floor));
+                    scan.entries.push(v);
+                }
+                let mut out = std::mem::take(&mut scan.out);
+                ladders.apply(k, &scan.entries[offset..], &mut out);
+                for (&slot, &v) in level.outs.iter().zip(&out) {
+                    scan.write(slot, v);
+                }
+                scan.out = out;
+                scan.holes.push((k as u32, offset as u32));
+                x = level.b + 1;
+                here = scan.before[x];
+                to = table.ending_start[x] as usize;
+                j += 1;
+                next = level_at(j).map_or(usize::MAX, |level| level.a);
+                continue;
+            }
+            stepped += 1;
             let from = to;
             to = table.ending_start[x + 1] as usize;
             for e in from..to {
                 let (lo, value) = table.ending[e];
                 let lo = lo as usize;
-                if lo < a {
+                if lo < floor {
                     break;
                 }
-                here = here.max(best[lo - a] + value);
+                if value == UNKNOWN {
+                    // Only in a level's scan: a unit reaching in from outside, not valued yet.
+                    scan.stale = scan.stale.max(lo + 1);
+                }
+                here = here.max(scan.before[lo] + value as i64);
             }
             let event = table.events[x];
             if event.stair != NONE {
+                // The end of chord i: M(i) = max(M(i - 1) + inner[i - 1], start(i - 2)), with
+                // start(f) = the best before s_f, plus left[f] - f.
                 let (s, i) = (event.stair as usize, event.i as usize);
                 let stair = &table.stairs[s];
-                if event.first == STARTS {
-                    let value = best[x - a] as i64 - i as i64 + stair.left[i] as i64;
-                    start[x] = (stamp, value);
-                } else {
-                    // M(i) = max(M(i - 1) + inner[i - 1], start(i - 2)).
-                    let last = run[s];
-                    let mut m = i64::MIN;
-                    if last.0 == stamp && last.1 + 1 == i && last.2 > i64::MIN {
-                        m = last.2 + stair.inner[i - 1] as i64;
-                    }
-                    let (st, v) = start[event.first as usize];
-                    if st == stamp {
-                        m = m.max(v);
-                    }
-                    run[s] = (stamp, i, m);
-                    if m > i64::MIN {
-                        let total = (m + i as i64 + 1 + stair.right[i] as i64) as u32;
-                        here = here.max(total);
-                    }
+                if floor == 0 {
+                    scan.stale = scan.stale.max(stair.unvalued_before(i));
                 }
+                let (seen, last, previous) = scan.run[s];
+                let mut m = NEG;
+                if seen == stamp && last as usize + 1 == i {
+                    m = previous + stair.inner[i - 1] as i64;
+                }
+                let first = event.first as usize;
+                if first >= floor {
+                    let start = scan.before[first] - (i - 2) as i64 + stair.left[i - 2] as i64;
+                    m = m.max(start);
+                }
+                scan.run[s] = (stamp, i as u32, m);
+                here = here.max(m + i as i64 + 1 + stair.right[i] as i64);
             }
-            best.push(here);
+            scan.before[x + 1] = here;
+            x += 1;
         }
+        scan.scanned += stepped;
         here
     }
 }
@@ -983,6 +1286,43 @@ impl Table {
         (self.asked_start, self.asked_end) = (start, end);
     }
 
+    /// What the scans read across positions ([`super::ladder`]): each unit reads the best
+    /// before its start at its end; at the end `e_i` of a staircase chord (`i >= 2`), the best
+    /// before `s_{i - 2}`, and the running maximum `M(i - 1)` settled at `e_{i - 1}`.
+    fn readers(&self) -> Vec<Reader> {
+        let mut readers: Vec<Reader> = self
+            .units
+            .iter()
+            .map(|u| Reader {
+                lo: u.lo as u32,
+                hi: u.hi as u32,
+                slot: Slot::Before(u.lo as u32),
+            })
+            .collect();
+        for (s, stair) in self.stairs.iter().enumerate() {
+            let e = &stair.ends;
+            for i in 2..e.len() {
+                let first = e[i - 2].0 as u32;
+                readers.push(Reader {
+                    lo: first,
+                    hi: e[i].1 as u32,
+                    slot: Slot::Before(first),
+                });
+                if i >= 3 {
+                    readers.push(Reader {
+                        lo: e[i - 1].1 as u32,
+                        hi: e[i].1 as u32,
+                        slot: Slot::Run {
+                            stair: s as u32,
+                            i: i as u32 - 1,
+                        },
+                    });
+                }
+            }
+        }
+        readers
+    }
+
     /// Builds the index of the units by end position (`ending_start`, `ending`, `ending_unit`,
     /// `entry_of`; values are filled in later) and `nearest_end`, `furthest_start`, for a
     /// component with `p` positions, once its units and staircases are listed.
@@ -1005,7 +1345,7 @@ impl Table {
         }
         self.ending = order
             .iter()
-            .map(|&k| (self.units[k as usize].lo as u32, 0))
+            .map(|&k| (self.units[k as usize].lo as u32, UNKNOWN))
             .collect();
         self.ending_unit = order;
         // Units only: staircase pieces add nothing, since each chord is a unit and a piece's

@@ -21,6 +21,7 @@ pub mod cut;
 pub mod degenerate;
 pub mod dependency;
 pub mod expansion;
+pub mod ladder;
 pub mod mis;
 pub mod partition;
 

@@ -3,7 +3,8 @@
 use super::circle::{circle, Circle};
 use super::degenerate::{minimally_degenerate, minimally_degenerate_and_mesh, Degenerate, Kind};
 use super::dependency::dependent;
-use super::mis::{chains, crossing_components, is_3b_pair, maximum_independent_set_with};
+use super::ladder::LadderPolicy;
+use super::mis::{chains, crossing_components, is_3b_pair, maximum_independent_set_with, Method};
 use super::triangulate;
 use crate::algo::asano;
 use crate::geom::polygon::Polygon;
@@ -233,7 +234,7 @@ fn crossing_components_match_brute_force() {
 #[test]
 fn maximum_independent_set_matches_enumeration_on_random_circles() {
     let mut rnd = crate::test_support::xorshift(0x5eed_c1c1e);
-    let mut nested = 0;
+    let (mut nested, mut levels) = (0, 0);
     for _ in 0..1500 {
         let k = 1 + rnd(13) as usize;
         // Half of the time a ladder: chord t joins positions t and 2k - 1 - t before shuffling a
@@ -260,12 +261,17 @@ fn maximum_independent_set_matches_enumeration_on_random_circles() {
             paths: (0..k).map(|t| vec![t]).collect(),
             place: (0..k).map(|t| (t, 0)).collect(),
         };
-        let (set, _) = maximum_independent_set_with(&c, &ch, true);
-        for (i, &s) in set.iter().enumerate() {
-            for &t in &set[..i] {
-                assert!(!c.cross(s, t), "{s} and {t} cross: {:?}", c.chords);
+        let (set, _) = maximum_independent_set_with(&c, &ch, Method::default());
+        let (laddered, effort) = maximum_independent_set_with(&c, &ch, EVERY_LEVEL);
+        levels += effort.levels;
+        for set in [&set, &laddered] {
+            for (i, &s) in set.iter().enumerate() {
+                for &t in &set[..i] {
+                    assert!(!c.cross(s, t), "{s} and {t} cross: {:?}", c.chords);
+                }
             }
         }
+        assert_eq!(set.len(), laddered.len(), "{:?}", c.chords);
         let best = (0u32..1 << k)
             .filter(|&m| {
                 (0..k).all(|s| m >> s & 1 == 0 || (0..s).all(|t| m >> t & 1 == 0 || !c.cross(s, t)))
@@ -286,7 +292,20 @@ fn maximum_independent_set_matches_enumeration_on_random_circles() {
         nested > 600,
         "only {nested} circles with three nested chords"
     );
+    assert!(levels > 1500, "only {levels} level matrices built");
 }
+
+/// A level at every range asked for: the scans jump as often as they can (`super::ladder`).
+const EVERY_LEVEL: Method = Method {
+    staircases: true,
+    ladders: LadderPolicy::Every,
+};
+
+/// Every piece a unit and no levels: the plain method the others are checked against.
+const PLAIN: Method = Method {
+    staircases: false,
+    ladders: LadderPolicy::Off,
+};
 
 /// A random simple polygon on the grid 0..=8 (many collinear points and flat vertices): a
 /// triangle into which up to `inserts` random points are inserted along the boundary, each kept
@@ -471,23 +490,32 @@ fn wide_polygons_are_swept_along_their_length_and_found_alike() {
 
 #[test]
 fn staircase_shortcut_matches_listing_every_piece() {
-    let (mut stairs_seen, mut long_pieces, mut longest_trimmed) = (0, 0, 0);
+    let (mut stairs_seen, mut long_pieces, mut longest_trimmed, mut levels) = (0, 0, 0, 0);
     for seed in 1..=300u64 {
         let p = bars(4 + (seed as usize % 40), seed);
         let mdts = minimally_degenerate(&p);
         let c = circle(&p, &mdts);
         let ch = chains(&p, &mdts);
-        let (fast, effort) = maximum_independent_set_with(&c, &ch, true);
-        let (slow, none) = maximum_independent_set_with(&c, &ch, false);
-        assert_eq!(none.staircases, 0);
+        let (fast, effort) = maximum_independent_set_with(&c, &ch, Method::default());
+        let (laddered, every) = maximum_independent_set_with(&c, &ch, EVERY_LEVEL);
+        let (slow, none) = maximum_independent_set_with(&c, &ch, PLAIN);
+        assert_eq!((none.staircases, none.levels), (0, 0));
         assert_eq!(fast.len(), slow.len(), "seed {seed}");
+        assert_eq!(
+            laddered.len(),
+            slow.len(),
+            "seed {seed}, a level at every range"
+        );
+        levels += every.levels;
         // The set is independent: no two chosen chords cross unless they are a 3b pair.
-        for (i, &s) in fast.iter().enumerate() {
-            for &t in &fast[..i] {
-                assert!(
-                    !c.cross(s, t) || is_3b_pair(&p, &mdts[s], &mdts[t]),
-                    "seed {seed}: {s} and {t} are dependent"
-                );
+        for set in [&fast, &laddered] {
+            for (i, &s) in set.iter().enumerate() {
+                for &t in &set[..i] {
+                    assert!(
+                        !c.cross(s, t) || is_3b_pair(&p, &mdts[s], &mdts[t]),
+                        "seed {seed}: {s} and {t} are dependent"
+                    );
+                }
             }
         }
         stairs_seen += effort.staircases;
@@ -520,6 +548,7 @@ fn staircase_shortcut_matches_listing_every_piece() {
         longest_trimmed <= 6,
         "a chain of {longest_trimmed} was trimmed"
     );
+    assert!(levels >= 10_000, "only {levels} level matrices built");
 }
 
 /// A "snake": `rows` corridors of `columns` unit columns (bottoms at random heights 0 or 1,
@@ -584,9 +613,15 @@ fn snakes_keep_their_staircases() {
             let p = polygon(&[&snake_ring(rows, columns, seed, start)]);
             let mdts = minimally_degenerate(&p);
             let (c, ch) = (circle(&p, &mdts), chains(&p, &mdts));
-            let (fast, effort) = maximum_independent_set_with(&c, &ch, true);
-            let (slow, _) = maximum_independent_set_with(&c, &ch, false);
+            let (fast, effort) = maximum_independent_set_with(&c, &ch, Method::default());
+            let (laddered, _) = maximum_independent_set_with(&c, &ch, EVERY_LEVEL);
+            let (slow, _) = maximum_independent_set_with(&c, &ch, PLAIN);
             assert_eq!(fast.len(), slow.len(), "seed {seed} start {start}");
+            assert_eq!(
+                laddered.len(),
+                slow.len(),
+                "seed {seed} start {start}, every level"
+            );
             assert!(
                 effort.longest_listed <= 8,
                 "seed {seed} start {start}: a chain of {} listed piece by piece",
@@ -672,4 +707,51 @@ fn circle_of(chords: Vec<(usize, usize)>) -> Circle {
         owner[r] = t;
     }
     Circle { chords, owner }
+}
+
+/// On corridors the levels make step 3's scans linear: positions scanned per component
+/// position stay flat as the bars and the snake grow, where plain scans grow with the length
+/// (`super::ladder`; the bars benchmark of the README). Same answers, by construction and as
+/// checked here.
+#[test]
+fn levels_make_corridor_scans_linear() {
+    let mut rows = Vec::new();
+    for columns in [100, 400, 1600] {
+        for (name, p) in [
+            ("bars", bars(columns, 7)),
+            ("snake", polygon(&[&snake_ring(3, columns / 3, 7, 0)])),
+        ] {
+            let mdts = minimally_degenerate(&p);
+            let (c, ch) = (circle(&p, &mdts), chains(&p, &mdts));
+            let (laddered, auto) = maximum_independent_set_with(&c, &ch, Method::default());
+            let plain_scans = Method {
+                staircases: true,
+                ladders: LadderPolicy::Off,
+            };
+            let (plain, off) = maximum_independent_set_with(&c, &ch, plain_scans);
+            assert_eq!(laddered.len(), plain.len(), "{name} {columns}");
+            let positions = 2.0 * mdts.len() as f64;
+            rows.push((
+                name,
+                columns,
+                auto.scanned as f64 / positions,
+                off.scanned as f64 / positions,
+            ));
+        }
+    }
+    for name in ["bars", "snake"] {
+        let per: Vec<_> = rows.iter().filter(|r| r.0 == name).collect();
+        let (small, large) = (per[0], per[per.len() - 1]);
+        // 16 times the length: plain scans grow about as much.
+        assert!(
+            large.3 > 6.0 * small.3,
+            "{name}: plain {small:?} -> {large:?}"
+        );
+        assert!(large.2 * 8.0 < large.3, "{name}: {large:?}");
+    }
+    // The bars' laddered scans stay flat. (The snake's still grow, about as the square root
+    // of the length: its walls' chains have irregular end chords, whose O(L) pieces are units
+    // reaching far out of every range, so few ranges have few slots.)
+    let bars: Vec<_> = rows.iter().filter(|r| r.0 == "bars").collect();
+    assert!(bars[2].2 < 1.5 * bars[0].2, "{bars:?}");
 }
