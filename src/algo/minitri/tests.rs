@@ -755,3 +755,29 @@ fn levels_make_corridor_scans_linear() {
     let bars: Vec<_> = rows.iter().filter(|r| r.0 == "bars").collect();
     assert!(bars[2].2 < 1.5 * bars[0].2, "{bars:?}");
 }
+
+/// Levels on general polygons: random rings on a small grid (flat vertices, collinear runs,
+/// 3b-chains), a level at every range asked for against plain scans with every piece listed.
+#[test]
+fn a_level_at_every_range_changes_no_answer_on_random_polygons() {
+    let mut rnd = crate::test_support::xorshift(0x1add_e125);
+    let mut levels = 0;
+    for case in 0..1500 {
+        let p = polygon(&[&random_ring(&mut rnd, 300)]);
+        let mdts = minimally_degenerate(&p);
+        let (c, ch) = (circle(&p, &mdts), chains(&p, &mdts));
+        let (laddered, every) = maximum_independent_set_with(&c, &ch, EVERY_LEVEL);
+        let (plain, _) = maximum_independent_set_with(&c, &ch, PLAIN);
+        assert_eq!(laddered.len(), plain.len(), "case {case}");
+        for (i, &s) in laddered.iter().enumerate() {
+            for &t in &laddered[..i] {
+                assert!(
+                    !c.cross(s, t) || is_3b_pair(&p, &mdts[s], &mdts[t]),
+                    "case {case}: {s} and {t} are dependent"
+                );
+            }
+        }
+        levels += every.levels;
+    }
+    assert!(levels >= 2000, "only {levels} level matrices built");
+}
