@@ -374,6 +374,8 @@ pub(crate) struct Effort {
     pub scanned: u64,
     /// Level matrices built ([`super::ladder`]).
     pub levels: usize,
+    /// Ranges the jobs asked for (with repeats).
+    pub asked: usize,
 }
 
 /// A candidate for the top level of some range: one chord, or a contiguous piece of a 3b-chain
@@ -385,6 +387,43 @@ struct Unit {
     last: usize,
     lo: usize,
     hi: usize,
+    /// The unit of the piece one chord shorter it is valued from (`NONE`: valued from all its
+    /// gaps), and the gaps that change (`Table::deltas`).
+    pred: u32,
+    deltas: std::ops::Range<u32>,
+}
+
+/// The sorted endpoints of a piece growing one chord at a time, for [`Sub::list_units`].
+struct Growing {
+    ends: std::collections::BTreeSet<usize>,
+}
+
+impl Growing {
+    fn new(chords: impl Iterator<Item = (usize, usize)>) -> Growing {
+        Growing {
+            ends: chords.flat_map(<[usize; 2]>::from).collect(),
+        }
+    }
+
+    /// Adds a chord's endpoints; each splits the gap between its neighbours (if it falls
+    /// between two) and makes new gaps with them: into `deltas` as `(x, y, added)`, the gap
+    /// strictly between endpoints `x` and `y`.
+    fn add(&mut self, chord: (usize, usize), deltas: &mut Vec<(u32, u32, bool)>) {
+        for x in <[usize; 2]>::from(chord) {
+            let before = self.ends.range(..x).next_back().copied();
+            let after = self.ends.range(x + 1..).next().copied();
+            if let (Some(b), Some(a)) = (before, after) {
+                deltas.push((b as u32, a as u32, false));
+            }
+            if let Some(b) = before {
+                deltas.push((b as u32, x as u32, true));
+            }
+            if let Some(a) = after {
+                deltas.push((x as u32, a as u32, true));
+            }
+            self.ends.insert(x);
+        }
+    }
 }
 
 /// A 3b-chain whose pieces of three or more chords are valued inside the scans, not as units.
@@ -543,6 +582,8 @@ struct Table {
     asked_start: Vec<u32>,
     asked_end: Vec<u32>,
     stairs: Vec<Staircase>,
+    /// The gaps that change from a unit's shorter piece to it (see [`Unit::pred`]).
+    deltas: Vec<(u32, u32, bool)>,
     /// Per local position, what the scans do there for a staircase (read in every step of
     /// every scan, so all it needs is in one record).
     events: Vec<StairEvent>,
@@ -668,6 +709,105 @@ impl Sub<'_> {
         );
     }
 
+    /// Lists the pieces of 3b-chain `chain` that are units: all of them but those of three or
+    /// more chords in the staircase `core` (a range of the chain's indices), with their jobs.
+    ///
+    /// A piece of three or more chords is valued from a piece one chord shorter (its `pred`):
+    /// the best in its gaps is the shorter piece's, minus the gaps the new chord's two
+    /// endpoints split, plus the parts (`Growing`). So a family of O(L) such pieces (those with
+    /// an irregular end chord) asks for O(L) ranges, not the O(L^2) of listing each piece's own
+    /// gaps. The shorter piece is `first..last - 1` when `first` is outside the core (then
+    /// it is a unit too), else `first + 1..=last` (then `last` is outside the core). Without
+    /// the staircase method every piece is a unit valued from all its gaps.
+    fn list_units(
+        &self,
+        chain: usize,
+        core: std::ops::Range<usize>,
+        table: &mut Table,
+        jobs: &mut Vec<(usize, u8, usize, Job)>,
+    ) {
+        let path = &self.chains.paths[chain];
+        let n = path.len();
+        let first_unit = table.units.len();
+        let mut push = |table: &mut Table, first: usize, last: usize, pred: u32, deltas: &[_]| {
+            let k = table.units.len();
+            let (mut lo, mut hi) = (usize::MAX, 0);
+            let chords: &[usize] = if pred == NONE {
+                &path[first..=last]
+            } else if last > table.units[pred as usize].last {
+                let u = &table.units[pred as usize];
+                (lo, hi) = (u.lo, u.hi);
+                &path[last..=last]
+            } else {
+                let u = &table.units[pred as usize];
+                (lo, hi) = (u.lo, u.hi);
+                &path[first..=first]
+            };
+            for &t in chords {
+                let (l, r) = self.chord(t);
+                (lo, hi) = (lo.min(l), hi.max(r));
+            }
+            let start = table.deltas.len() as u32;
+            table.deltas.extend_from_slice(deltas);
+            jobs.push((hi - lo, 0, last - first, Job::Unit(k)));
+            table.units.push(Unit {
+                chain,
+                first,
+                last,
+                lo,
+                hi,
+                pred,
+                deltas: start..table.deltas.len() as u32,
+            });
+            k as u32
+        };
+        if !self.method.staircases {
+            for first in 0..n {
+                for last in first..n {
+                    push(table, first, last, NONE, &[]);
+                }
+            }
+            return;
+        }
+        // Units by (first, last), for the shorter pieces.
+        let mut unit_of = std::collections::HashMap::new();
+        for first in 0..n {
+            for last in first..n.min(first + 2) {
+                unit_of.insert((first, last), push(table, first, last, NONE, &[]));
+            }
+        }
+        let mut deltas = Vec::new();
+        for first in (0..n).filter(|f| !core.contains(f)) {
+            let mut growing = Growing::new(
+                path[first..(first + 2).min(n)]
+                    .iter()
+                    .map(|&t| self.chord(t)),
+            );
+            for last in first + 2..n {
+                deltas.clear();
+                growing.add(self.chord(path[last]), &mut deltas);
+                let pred = unit_of[&(first, last - 1)];
+                unit_of.insert((first, last), push(table, first, last, pred, &deltas));
+            }
+        }
+        for last in core.end.max(core.start + 2)..n {
+            let top = (last - 2).min(core.end - 1);
+            if top < core.start {
+                continue;
+            }
+            let mut growing = Growing::new(path[top + 1..=last].iter().map(|&t| self.chord(t)));
+            for first in (core.start..=top).rev() {
+                deltas.clear();
+                growing.add(self.chord(path[first]), &mut deltas);
+                let pred = unit_of[&(first + 1, last)];
+                unit_of.insert((first, last), push(table, first, last, pred, &deltas));
+            }
+        }
+        debug_assert!(table.units[first_unit..]
+            .iter()
+            .all(|u| u.pred == NONE || u.last - u.first >= 2));
+    }
+
     /// A maximum independent set of this component.
     ///
     /// Any independent set splits into groups connected by crossings; each group is a unit (a
@@ -699,9 +839,12 @@ impl Sub<'_> {
             asked_start: Vec::new(),
             asked_end: Vec::new(),
             stairs: Vec::new(),
+            deltas: Vec::new(),
             events: vec![NO_EVENT; p],
         };
-        let mut jobs: Vec<(usize, u8, Job)> = Vec::new(); // (span, units first, job)
+        // (span, units first, pieces by length, job): a unit's shorter piece and all ranges
+        // inside it come before it.
+        let mut jobs: Vec<(usize, u8, usize, Job)> = Vec::new();
         for &g in self.positions {
             let (chain, _) = self.chains.place[self.circle.owner[g]];
             // Each chain once: `chain_seen` is shared by all components, marked with this one's
@@ -729,66 +872,21 @@ impl Sub<'_> {
                 Some((core, stair)) => (core, Some(stair)),
                 None => (0..0, None),
             };
-            let mut push = |first: usize, last: usize, (lo, hi): (usize, usize)| {
-                jobs.push((hi - lo, 0, Job::Unit(table.units.len())));
-                table.units.push(Unit {
-                    chain,
-                    first,
-                    last,
-                    lo,
-                    hi,
-                });
-            };
-            let span = |(lo, hi): (usize, usize), t: usize| {
-                let (l, r) = self.chord(t);
-                (lo.min(l), hi.max(r))
-            };
-            // Spans of the core's pieces reaching its end, for those going on into an
-            // irregular tail.
-            const EMPTY: (usize, usize) = (usize::MAX, 0);
-            let mut to_core_end = vec![EMPTY; core.end + 1];
-            for i in core.clone().rev() {
-                to_core_end[i] = span(to_core_end[i + 1], path[i]);
-            }
-            for first in 0..path.len() {
-                if !core.contains(&first) {
-                    let mut range = EMPTY;
-                    for (last, &t) in path.iter().enumerate().skip(first) {
-                        range = span(range, t);
-                        push(first, last, range);
-                    }
-                    continue;
-                }
-                // Pieces of one or two chords; longer ones inside the core are valued in the
-                // scans; those going on into the tail are units.
-                let mut range = span(EMPTY, path[first]);
-                push(first, first, range);
-                if first + 1 < path.len() {
-                    range = span(range, path[first + 1]);
-                    push(first, first + 1, range);
-                }
-                let mut range = to_core_end[first];
-                for (last, &t) in path.iter().enumerate().skip(core.end) {
-                    range = span(range, t);
-                    if last >= first + 2 {
-                        push(first, last, range);
-                    }
-                }
-            }
+            self.list_units(chain, core, &mut table, &mut jobs);
             if let Some(stair) = stair {
                 let s = table.stairs.len();
                 let l = stair.tris.len();
                 let span = |(x, y): (usize, usize)| y - x;
                 for f in 0..l - 2 {
                     let [g0, g1] = stair.left_gaps(f);
-                    jobs.push((span(g0).max(span(g1)), 1, Job::Left(s, f)));
+                    jobs.push((span(g0).max(span(g1)), 1, 0, Job::Left(s, f)));
                 }
                 for j in 2..l - 1 {
-                    jobs.push((span(stair.inner_gap(j)), 1, Job::Inner(s, j)));
+                    jobs.push((span(stair.inner_gap(j)), 1, 0, Job::Inner(s, j)));
                 }
                 for r in 2..l {
                     let [g0, g1] = stair.right_gaps(r);
-                    jobs.push((span(g0).max(span(g1)), 1, Job::Right(s, r)));
+                    jobs.push((span(g0).max(span(g1)), 1, 0, Job::Right(s, r)));
                 }
                 for (i, &(_, hi)) in stair.ends.iter().enumerate().skip(2) {
                     table.events[hi] = StairEvent {
@@ -806,24 +904,35 @@ impl Sub<'_> {
             before: vec![0; p + 1],
             ..Scan::default()
         };
-        jobs.sort_by_key(|&(span, kind, _)| (span, kind));
+        jobs.sort_by_key(|&(span, kind, length, _)| (span, kind, length));
         let mut buffers = GapBuffers::default();
-        let (from, ranges) = self.ranges_of(&table, &jobs, &mut buffers);
+        let (from, ranges, minus) = self.ranges_of(&table, &jobs, &mut buffers);
         table.index_asked(p, &ranges);
         scan.asked_value = vec![UNKNOWN; ranges.len()];
+        effort.asked += ranges.len();
         let mut ladders = Ladders::choose(p, self.method.ladders, &ranges, || table.readers());
-        for (n, &(_, _, job)) in jobs.iter().enumerate() {
-            let inside: u32 = ranges[from[n] as usize..from[n + 1] as usize]
-                .iter()
-                .map(|&(a, b)| {
-                    self.best_value(&table, &mut ladders, &mut scan, a as usize, b as usize)
-                })
-                .sum();
+        for (n, &(_, _, _, job)) in jobs.iter().enumerate() {
+            let asked = from[n] as usize..from[n + 1] as usize;
+            let mut inside: i64 = 0;
+            for (&(a, b), &minus) in ranges[asked.clone()].iter().zip(&minus[asked]) {
+                let v = self.best_value(&table, &mut ladders, &mut scan, a as usize, b as usize);
+                inside += if minus { -(v as i64) } else { v as i64 };
+            }
+            let count = |u: &Unit| (u.last + 1 - u.first) as i64;
+            if let Job::Unit(k) = job {
+                let u = &table.units[k];
+                if u.pred != NONE {
+                    // The shorter piece's gaps, with the changes listed for this one.
+                    let shorter = &table.units[u.pred as usize];
+                    let value = table.ending[table.entry_of[u.pred as usize] as usize].1;
+                    inside += value as i64 - count(shorter);
+                }
+            }
+            let inside = inside as u32;
             match job {
                 Job::Unit(k) => {
                     let u = &table.units[k];
-                    let count = (u.last + 1 - u.first) as u32;
-                    table.ending[table.entry_of[k] as usize].1 = count + inside;
+                    table.ending[table.entry_of[k] as usize].1 = count(u) as u32 + inside;
                 }
                 Job::Left(s, f) => table.stairs[s].left[f] = inside,
                 Job::Inner(s, j) => table.stairs[s].inner[j] = inside,
@@ -861,26 +970,35 @@ impl Sub<'_> {
     }
 
     /// The ranges (inclusive, local positions) whose best values each job sums: the gaps of a
-    /// unit, or those making up a staircase's `left`, `inner` or `right` value. Job `n` asks for
-    /// `ranges[from[n]..from[n + 1]]`.
+    /// unit (or, for a unit valued from a shorter piece, the gaps that change, those split
+    /// counted with `minus`), or those making up a staircase's `left`, `inner` or `right`
+    /// value. Job `n` asks for `ranges[from[n]..from[n + 1]]`.
     fn ranges_of(
         &self,
         table: &Table,
-        jobs: &[(usize, u8, Job)],
+        jobs: &[(usize, u8, usize, Job)],
         buffers: &mut GapBuffers,
-    ) -> (Vec<u32>, Vec<(u32, u32)>) {
+    ) -> (Vec<u32>, Vec<(u32, u32)>, Vec<bool>) {
         let mut from = Vec::with_capacity(jobs.len() + 1);
-        let mut ranges = Vec::new();
+        let (mut ranges, mut minus) = (Vec::new(), Vec::new());
         from.push(0);
-        for &(_, _, job) in jobs {
-            let mut open = |(x, y): (usize, usize)| {
+        for &(_, _, _, job) in jobs {
+            let mut gap = |(x, y): (usize, usize), subtract: bool| {
                 if y > x + 1 {
                     if let Some((a, b)) = table.tighten(x + 1, y - 1) {
                         ranges.push((a as u32, b as u32));
+                        minus.push(subtract);
                     }
                 }
             };
+            let mut open = |ends| gap(ends, false);
             match job {
+                Job::Unit(k) if table.units[k].pred != NONE => {
+                    let deltas = table.units[k].deltas.clone();
+                    for &(x, y, add) in &table.deltas[deltas.start as usize..deltas.end as usize] {
+                        gap((x as usize, y as usize), !add);
+                    }
+                }
                 Job::Unit(k) => {
                     let u = &table.units[k];
                     self.gaps(&self.chains.paths[u.chain][u.first..=u.last], buffers);
@@ -894,7 +1012,7 @@ impl Sub<'_> {
             }
             from.push(ranges.len() as u32);
         }
-        (from, ranges)
+        (from, ranges, minus)
     }
 
     /// The best value within `a..=b`, one of the ranges asked for, found once: every unit and
