@@ -148,26 +148,11 @@ impl Ladders {
         let readers = readers();
         let readers = &readers[..];
         let limit = max_slots.saturating_mul(3); // readers, several per slot at most
-        let by_hi = Reporter::new(readers, |r| r.hi, |r| r.lo as i64);
-        let by_lo = Reporter::new(readers, |r| r.lo, |r| -(r.hi as i64));
+        let mut by_hi = Reporter::new(readers, |r| r.hi, |r| r.lo as i64);
+        let mut by_lo = Reporter::new(readers, |r| r.lo, |r| -(r.hi as i64));
         let mut found = Vec::new();
         let mut jumps = Vec::new();
         for (a, b) in candidates {
-            let mut ins = vec![Slot::Before(a)];
-            if !by_hi.report(a, b, a as i64, limit, &mut found) {
-                continue;
-            }
-            ins.extend(found.iter().map(|&r| readers[r as usize].slot));
-            let mut outs = vec![Slot::Before(b + 1)];
-            if !by_lo.report(a, b, -(b as i64), limit, &mut found) {
-                continue;
-            }
-            outs.extend(found.iter().map(|&r| readers[r as usize].slot));
-            dedup_after_first(&mut ins);
-            dedup_after_first(&mut outs);
-            if ins.len() > max_slots || outs.len() > max_slots {
-                continue;
-            }
             let (a, b) = (a as usize, b as usize);
             ladders.jumps_in(a, b, None, &mut jumps);
             let jumped: usize = jumps
@@ -175,8 +160,29 @@ impl Ladders {
                 .map(|&k| ladders.levels[k as usize].b + 1 - ladders.levels[k as usize].a)
                 .sum();
             // A level pays when a jump over it (a product) is cheaper than scanning the
-            // positions it does not jump itself.
-            if policy == LadderPolicy::Auto && b + 1 - a - jumped < ins.len() * outs.len() {
+            // positions it does not jump itself: at most `own` in-slots times out-slots (so
+            // the reports stop early where that fails).
+            let own = match policy {
+                LadderPolicy::Auto => b + 1 - a - jumped,
+                _ => usize::MAX,
+            };
+            if own < min_len {
+                continue; // (without a report: most candidates, those just around a level)
+            }
+            let mut ins = vec![Slot::Before(a as u32)];
+            if !by_hi.report(a as u32, b as u32, a as i64, limit.min(own), &mut found) {
+                continue;
+            }
+            ins.extend(found.iter().map(|&r| readers[r as usize].slot));
+            dedup_after_first(&mut ins);
+            let mut outs = vec![Slot::Before(b as u32 + 1)];
+            let most = limit.min(own / ins.len());
+            if !by_lo.report(a as u32, b as u32, -(b as i64), most, &mut found) {
+                continue;
+            }
+            outs.extend(found.iter().map(|&r| readers[r as usize].slot));
+            dedup_after_first(&mut outs);
+            if ins.len() > max_slots || outs.len() > max_slots || ins.len() * outs.len() > own {
                 continue;
             }
             let k = ladders.levels.len() as u32;
@@ -255,11 +261,9 @@ impl Ladders {
 fn dedup_after_first(slots: &mut Vec<Slot>) {
     let first = slots[0];
     slots[1..].sort_unstable();
-    let mut rest: Vec<Slot> = slots[1..].to_vec();
-    rest.dedup();
-    rest.retain(|&s| s != first);
-    slots.truncate(1);
-    slots.extend(rest);
+    slots.dedup();
+    let mut seen = false;
+    slots.retain(|&s| s != first || !std::mem::replace(&mut seen, true));
 }
 
 /// Readers sorted by one position (`at`), with a minimum tree over a key, to report those with
@@ -271,6 +275,8 @@ struct Reporter {
     /// A complete binary tree of minimum keys over `order` (leaves from `size`).
     tree: Vec<i64>,
     size: usize,
+    /// The nodes still to visit in [`Reporter::report`] (kept to save an allocation).
+    stack: Vec<(usize, usize, usize)>,
 }
 
 impl Reporter {
@@ -291,12 +297,13 @@ impl Reporter {
             at,
             tree,
             size,
+            stack: Vec::new(),
         }
     }
 
     /// The readers with `at` in `lo..=hi` and key below `bound`, into `found`; false if there
     /// are more than `limit`.
-    fn report(&self, lo: u32, hi: u32, bound: i64, limit: usize, found: &mut Vec<u32>) -> bool {
+    fn report(&mut self, lo: u32, hi: u32, bound: i64, limit: usize, found: &mut Vec<u32>) -> bool {
         found.clear();
         let first = self.at.partition_point(|&x| x < lo);
         let end = self.at.partition_point(|&x| x <= hi);
@@ -304,7 +311,9 @@ impl Reporter {
             return true;
         }
         // Nodes covering [first, end), visited from the root.
-        let mut stack = vec![(1usize, 0usize, self.size)];
+        let stack = &mut self.stack;
+        stack.clear();
+        stack.push((1, 0, self.size));
         while let Some((node, l, r)) = stack.pop() {
             if r <= first || end <= l || self.tree[node] >= bound {
                 continue;

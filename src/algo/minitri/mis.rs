@@ -40,14 +40,25 @@
 //! (O(L^2) units; before both fixes a 3 x 1000-column snake's wall chains were, and step 3 took
 //! 11 s instead of 0.3 s).
 //!
+//! The pieces that are units (those with an irregular end chord, and all pieces of a chain
+//! that is no staircase) are valued from the piece one chord shorter: only the gaps the new
+//! chord's endpoints split or make are asked for (`Sub::list_units`), O(1) ranges per piece
+//! instead of O(L).
+//!
 //! Complexity: O(K alpha(K)) for the components; then O(K) units and staircase gaps, each valued
 //! by one scan of its span (in endpoint positions of its component): O(sum of spans), which is
-//! Valiente's O(total chord length), near-linear when chords are local, O(K^2) in the worst case
-//! (many long chords nested inside each other in one crossing component: the "bars" benchmark
-//! of the README). Memory O(K) plus the list of ranges asked for (the gaps of the units and
-//! staircase parts) with their values.
+//! Valiente's O(total chord length), near-linear when chords are local, O(K^2) when many long
+//! chords nest inside each other in one crossing component (the triangles across a long
+//! corridor: the "bars" and "snake" benchmarks of the README). That case is what
+//! [`super::ladder`] removes: a range asked for with few values read across its ends is a
+//! level, its scan a max-plus matrix built once, and every longer range jumps over it. On bars
+//! the positions scanned per position stay flat (about 45 from 100 to 1600 columns, against
+//! 150 to 2900 for plain scans); on the snake they grow about as the square root of the length
+//! (bundles of long diagonal chords cross every cut). Memory O(K) plus the ranges asked for
+//! with their values and the levels' matrices (at most 24 x 24 each, a level only where its
+//! own positions pay for a product).
 //! Output-sensitive circle-graph algorithms (Nash & Gregg 2010, O(K min(d, alpha))) do not help
-//! with that worst case either (density and independence number both grow with K).
+//! with the nested case (density and independence number both grow with K).
 //!
 //! The scans are the cost, so they read and write little: the units are indexed by end position
 //! in one flat array, sorted by start within a position (a scan of `a..=b` stops at the first
@@ -59,10 +70,11 @@
 //! range `a..=c` with `c < b` (everything inside it is inside `a..=b`, so valued already); a
 //! start is scanned again only for a longer range. Together these scan a fifth fewer positions
 //! on bars, and cut this step on the Hilbert fixture from 62 to 24 million instructions. The
-//! reconstruction scans the gaps of the chosen units again (a quarter of the positions scanned
-//! on bars) and walks back over those values: where the best grows at a position, a unit or
-//! staircase piece ending there gives the new value (for a piece, its first chord is found by
-//! summing back along the chain).
+//! reconstruction scans the gaps of the chosen units again (jumping the levels inside) and
+//! walks back over those values: where the best grows at a position, a unit or staircase piece
+//! ending there gives the new value (for a piece, its first chord is found by summing back
+//! along the chain); a value inside a jumped level is found by scanning that level again from
+//! the values saved at the jump.
 //!
 //! Exact reductions before the scans (a simplicial triangle, e.g. one of degree 0 or 1 in the
 //! dependency graph, is in some maximum independent set; a triangle whose closed neighbourhood

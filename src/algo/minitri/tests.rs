@@ -757,8 +757,8 @@ fn levels_make_corridor_scans_linear() {
         assert!(large.2 * 8.0 < large.3, "{name}: {large:?}");
     }
     // The bars' laddered scans stay flat. (The snake's still grow, about as the square root
-    // of the length: its walls' chains have irregular end chords, whose O(L) pieces are units
-    // reaching far out of every range, so few ranges have few slots.)
+    // of the length: with a vertex at every lattice point, long diagonal chords across the
+    // corridor cross each other in bundles, and a cut through a bundle has many slots.)
     let bars: Vec<_> = rows.iter().filter(|r| r.0 == "bars").collect();
     assert!(bars[2].2 < 1.5 * bars[0].2, "{bars:?}");
 }
