@@ -109,12 +109,12 @@ pub(super) struct Ladders {
 const NONE: u32 = u32::MAX;
 
 impl Ladders {
-    /// No levels, for a component with `p` positions.
-    pub fn none(p: usize) -> Ladders {
+    /// No levels.
+    pub fn none() -> Ladders {
         Ladders {
             levels: Vec::new(),
             starts: BTreeSet::new(),
-            head: vec![NONE; p + 1],
+            head: Vec::new(),
             shorter: Vec::new(),
         }
     }
@@ -127,7 +127,7 @@ impl Ladders {
         ranges: &[(u32, u32)],
         readers: impl FnOnce() -> Vec<Reader>,
     ) -> Ladders {
-        let mut ladders = Ladders::none(p);
+        let mut ladders = Ladders::none();
         let (min_len, max_slots) = match policy {
             LadderPolicy::Off => return ladders,
             LadderPolicy::Auto => (64, 24),
@@ -142,6 +142,7 @@ impl Ladders {
             return ladders;
         }
         candidates.sort_unstable_by_key(|&(a, b)| (b - a, a));
+        ladders.head = vec![NONE; p + 1];
         candidates.dedup();
         // Readers ending in `a..=b` that start before `a`, and those starting in `a..=b` that
         // end after `b`.
@@ -205,7 +206,7 @@ impl Ladders {
 
     /// The level that is exactly `a..=b`, if any.
     pub fn level(&self, a: usize, b: usize) -> Option<usize> {
-        let mut k = self.head[a];
+        let mut k = *self.head.get(a)?;
         while k != NONE {
             let level = &self.levels[k as usize];
             if level.b == b {

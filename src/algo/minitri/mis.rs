@@ -405,35 +405,43 @@ struct Unit {
     deltas: std::ops::Range<u32>,
 }
 
-/// The sorted endpoints of a piece growing one chord at a time, for [`Sub::list_units`].
+/// The endpoints of a piece growing one chord at a time, for [`Sub::list_units`]: sorted by
+/// `direction * position`, so that the endpoints of a piece growing rightwards (1) or leftwards
+/// (-1) along a staircase mostly go at the end of the list.
 struct Growing {
-    ends: std::collections::BTreeSet<usize>,
+    direction: i64,
+    keys: Vec<i64>,
 }
 
 impl Growing {
-    fn new(chords: impl Iterator<Item = (usize, usize)>) -> Growing {
-        Growing {
-            ends: chords.flat_map(<[usize; 2]>::from).collect(),
-        }
+    fn new(direction: i64, chords: &[usize], chord: impl Fn(usize) -> (usize, usize)) -> Growing {
+        let mut keys: Vec<i64> = chords
+            .iter()
+            .flat_map(|&t| <[usize; 2]>::from(chord(t)))
+            .map(|x| direction * x as i64)
+            .collect();
+        keys.sort_unstable();
+        Growing { direction, keys }
     }
 
     /// Adds a chord's endpoints; each splits the gap between its neighbours (if it falls
     /// between two) and makes new gaps with them: into `deltas` as `(x, y, added)`, the gap
-    /// strictly between endpoints `x` and `y`.
+    /// strictly between endpoints `x < y`.
     fn add(&mut self, chord: (usize, usize), deltas: &mut Vec<(u32, u32, bool)>) {
+        let gap = |x: i64, y: i64, added: bool| (x.min(y) as u32, x.max(y) as u32, added);
         for x in <[usize; 2]>::from(chord) {
-            let before = self.ends.range(..x).next_back().copied();
-            let after = self.ends.range(x + 1..).next().copied();
+            let key = self.direction * x as i64;
+            let at = self.keys.partition_point(|&k| k < key);
+            let position = |k: i64| self.direction * k;
+            let before = at.checked_sub(1).map(|i| position(self.keys[i]));
+            let after = self.keys.get(at).map(|&k| position(k));
             if let (Some(b), Some(a)) = (before, after) {
-                deltas.push((b as u32, a as u32, false));
+                deltas.push(gap(b, a, false));
             }
-            if let Some(b) = before {
-                deltas.push((b as u32, x as u32, true));
+            for neighbour in [before, after].into_iter().flatten() {
+                deltas.push(gap(neighbour, x as i64, true));
             }
-            if let Some(a) = after {
-                deltas.push((x as u32, a as u32, true));
-            }
-            self.ends.insert(x);
+            self.keys.insert(at, key);
         }
     }
 }
@@ -781,43 +789,59 @@ impl Sub<'_> {
             }
             return;
         }
-        // Units by (first, last), for the shorter pieces.
-        let mut unit_of = std::collections::HashMap::new();
+        // Pieces of one and two chords: `(first, first)` is unit `plain + 2 first`, and
+        // `(first, first + 1)` the next one.
+        let plain = table.units.len() as u32;
         for first in 0..n {
             for last in first..n.min(first + 2) {
-                unit_of.insert((first, last), push(table, first, last, NONE, &[]));
+                push(table, first, last, NONE, &[]);
             }
         }
+        let pair = |first: usize| plain + 2 * first as u32 + 1;
+        // Growing `first..=last` from the pair, for each `first` outside the core: the unit of
+        // `(first, last)` is `grown + last - first - 2` for that family's `grown`.
+        let mut families: Vec<(usize, u32)> = Vec::new();
         let mut deltas = Vec::new();
         for first in (0..n).filter(|f| !core.contains(f)) {
-            let mut growing = Growing::new(
-                path[first..(first + 2).min(n)]
-                    .iter()
-                    .map(|&t| self.chord(t)),
-            );
-            for last in first + 2..n {
+            families.push((first, table.units.len() as u32));
+            let mut growing = Growing::new(1, &path[first..(first + 2).min(n)], |t| self.chord(t));
+            let mut pred = pair(first);
+            for (last, &t) in path.iter().enumerate().skip(first + 2) {
                 deltas.clear();
-                growing.add(self.chord(path[last]), &mut deltas);
-                let pred = unit_of[&(first, last - 1)];
-                unit_of.insert((first, last), push(table, first, last, pred, &deltas));
+                growing.add(self.chord(t), &mut deltas);
+                pred = push(table, first, last, pred, &deltas);
             }
         }
-        for last in core.end.max(core.start + 2)..n {
+        // Growing `first..=last` leftwards into the core, for each `last` after it (not when
+        // there is no core: every piece is listed above then).
+        for last in (core.end..n).filter(|&last| !core.is_empty() && last >= core.start + 2) {
             let top = (last - 2).min(core.end - 1);
-            if top < core.start {
-                continue;
-            }
-            let mut growing = Growing::new(path[top + 1..=last].iter().map(|&t| self.chord(t)));
+            let mut pred = if top + 1 == last - 1 {
+                pair(top + 1)
+            } else {
+                // `(core.end, last)`, grown from the pair of `core.end` (outside the core).
+                let (_, grown) = families
+                    .iter()
+                    .find(|&&(first, _)| first == top + 1)
+                    .expect("the first chord after the core starts a family");
+                grown + (last - top - 3) as u32
+            };
+            let mut growing = Growing::new(-1, &path[top + 1..=last], |t| self.chord(t));
             for first in (core.start..=top).rev() {
                 deltas.clear();
                 growing.add(self.chord(path[first]), &mut deltas);
-                let pred = unit_of[&(first + 1, last)];
-                unit_of.insert((first, last), push(table, first, last, pred, &deltas));
+                pred = push(table, first, last, pred, &deltas);
             }
         }
-        debug_assert!(table.units[first_unit..]
-            .iter()
-            .all(|u| u.pred == NONE || u.last - u.first >= 2));
+        debug_assert!(table.units[first_unit..].iter().all(|u| u.pred == NONE
+            || (
+                table.units[u.pred as usize].first,
+                table.units[u.pred as usize].last
+            ) == if core.contains(&u.first) {
+                (u.first + 1, u.last)
+            } else {
+                (u.first, u.last - 1)
+            }));
     }
 
     /// A maximum independent set of this component.
