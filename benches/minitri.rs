@@ -7,10 +7,7 @@
 //! the same coordinates as `f64`.
 //!
 //! Run: `cargo bench --bench minitri`. Environment:
-//! - `MINITRI_BENCH_MAX_N` (default 100000): the largest size (sizes are 10^3, 10^4, ...);
-//! - `MINITRI_BENCH_BARS_MAX_N` (default 1000): the largest size at which `minitri` itself
-//!   is benchmarked on the bars and snakes, where its step 3 is quadratic (issue 3);
-//!   the other functions follow `MINITRI_BENCH_MAX_N`.
+//! - `MINITRI_BENCH_MAX_N` (default 100000): the largest size (sizes are 10^3, 10^4, ...).
 //!
 //! The one-run table with peak memory and triangle counts is `benches/compare.rs`.
 
@@ -38,10 +35,6 @@ fn env_usize(name: &str, default: usize) -> usize {
 
 fn family(c: &mut Criterion, shape: Shape) {
     let max_n = env_usize("MINITRI_BENCH_MAX_N", 100_000);
-    let minitri_max_n = match shape {
-        Shape::Star | Shape::Maze => max_n,
-        Shape::Bars | Shape::Snake => env_usize("MINITRI_BENCH_BARS_MAX_N", 1000),
-    };
     let options = Options {
         dp_limit: usize::MAX,
         ..Options::default()
@@ -62,18 +55,11 @@ fn family(c: &mut Criterion, shape: Shape) {
             group.warm_up_time(Duration::from_secs(1));
             group.measurement_time(Duration::from_secs(3));
         }
-        if n <= minitri_max_n {
-            group.bench_with_input(BenchmarkId::new("minitri", n), &polygon, |b, p| {
-                b.iter(|| {
-                    triangulate_with(black_box(p), Algorithm::Minitri, &options).expect("hole-free")
-                })
-            });
-        } else {
-            eprintln!(
-                "{}/minitri/{n}: skipped (MINITRI_BENCH_BARS_MAX_N = {minitri_max_n})",
-                shape.name()
-            );
-        }
+        group.bench_with_input(BenchmarkId::new("minitri", n), &polygon, |b, p| {
+            b.iter(|| {
+                triangulate_with(black_box(p), Algorithm::Minitri, &options).expect("hole-free")
+            })
+        });
         group.bench_with_input(BenchmarkId::new("ear", n), &polygon, |b, p| {
             b.iter(|| triangulate_with(black_box(p), Algorithm::Ear, &options).expect("hole-free"))
         });
