@@ -149,8 +149,8 @@ impl Ladders {
         let readers = readers();
         let readers = &readers[..];
         let limit = max_slots.saturating_mul(3); // readers, several per slot at most
-        let mut by_hi = Reporter::new(readers, |r| r.hi, |r| r.lo as i64);
-        let mut by_lo = Reporter::new(readers, |r| r.lo, |r| -(r.hi as i64));
+        let mut by_hi = Reporter::new(readers, |r| r.hi, |r| r.lo);
+        let mut by_lo = Reporter::new(readers, |r| r.lo, |r| u32::MAX - r.hi);
         let mut found = Vec::new();
         let mut jumps = Vec::new();
         for (a, b) in candidates {
@@ -171,14 +171,14 @@ impl Ladders {
                 continue; // (without a report: most candidates, those just around a level)
             }
             let mut ins = vec![Slot::Before(a as u32)];
-            if !by_hi.report(a as u32, b as u32, a as i64, limit.min(own), &mut found) {
+            if !by_hi.report(a as u32, b as u32, a as u32, limit.min(own), &mut found) {
                 continue;
             }
             ins.extend(found.iter().map(|&r| readers[r as usize].slot));
             dedup_after_first(&mut ins);
             let mut outs = vec![Slot::Before(b as u32 + 1)];
             let most = limit.min(own / ins.len());
-            if !by_lo.report(a as u32, b as u32, -(b as i64), most, &mut found) {
+            if !by_lo.report(a as u32, b as u32, u32::MAX - b as u32, most, &mut found) {
                 continue;
             }
             outs.extend(found.iter().map(|&r| readers[r as usize].slot));
@@ -274,18 +274,18 @@ struct Reporter {
     order: Vec<u32>,
     at: Vec<u32>,
     /// A complete binary tree of minimum keys over `order` (leaves from `size`).
-    tree: Vec<i64>,
+    tree: Vec<u32>,
     size: usize,
     /// The nodes still to visit in [`Reporter::report`] (kept to save an allocation).
     stack: Vec<(usize, usize, usize)>,
 }
 
 impl Reporter {
-    fn new(readers: &[Reader], at: impl Fn(&Reader) -> u32, key: impl Fn(&Reader) -> i64) -> Self {
+    fn new(readers: &[Reader], at: impl Fn(&Reader) -> u32, key: impl Fn(&Reader) -> u32) -> Self {
         let mut order: Vec<u32> = (0..readers.len() as u32).collect();
         order.sort_unstable_by_key(|&r| at(&readers[r as usize]));
         let size = order.len().next_power_of_two().max(1);
-        let mut tree = vec![i64::MAX; 2 * size];
+        let mut tree = vec![u32::MAX; 2 * size];
         for (i, &r) in order.iter().enumerate() {
             tree[size + i] = key(&readers[r as usize]);
         }
@@ -304,7 +304,7 @@ impl Reporter {
 
     /// The readers with `at` in `lo..=hi` and key below `bound`, into `found`; false if there
     /// are more than `limit`.
-    fn report(&mut self, lo: u32, hi: u32, bound: i64, limit: usize, found: &mut Vec<u32>) -> bool {
+    fn report(&mut self, lo: u32, hi: u32, bound: u32, limit: usize, found: &mut Vec<u32>) -> bool {
         found.clear();
         let first = self.at.partition_point(|&x| x < lo);
         let end = self.at.partition_point(|&x| x <= hi);
