@@ -488,6 +488,18 @@ fn wide_polygons_are_swept_along_their_length_and_found_alike() {
     assert!(counts[0] > 3000, "{counts:?}");
 }
 
+/// No two triangles of `set` are dependent: their chords do not cross unless they are a 3b pair.
+fn assert_independent(p: &Polygon, mdts: &[Degenerate], c: &Circle, set: &[usize], what: &str) {
+    for (i, &s) in set.iter().enumerate() {
+        for &t in &set[..i] {
+            assert!(
+                !c.cross(s, t) || is_3b_pair(p, &mdts[s], &mdts[t]),
+                "{what}: {s} and {t} are dependent"
+            );
+        }
+    }
+}
+
 #[test]
 fn staircase_shortcut_matches_listing_every_piece() {
     let (mut stairs_seen, mut long_pieces, mut longest_trimmed, mut levels) = (0, 0, 0, 0);
@@ -507,16 +519,8 @@ fn staircase_shortcut_matches_listing_every_piece() {
             "seed {seed}, a level at every range"
         );
         levels += every.levels;
-        // The set is independent: no two chosen chords cross unless they are a 3b pair.
         for set in [&fast, &laddered] {
-            for (i, &s) in set.iter().enumerate() {
-                for &t in &set[..i] {
-                    assert!(
-                        !c.cross(s, t) || is_3b_pair(&p, &mdts[s], &mdts[t]),
-                        "seed {seed}: {s} and {t} are dependent"
-                    );
-                }
-            }
+            assert_independent(&p, &mdts, &c, set, &format!("seed {seed}"));
         }
         stairs_seen += effort.staircases;
         longest_trimmed = longest_trimmed.max(effort.longest_trimmed);
@@ -776,14 +780,7 @@ fn a_level_at_every_range_changes_no_answer_on_random_polygons() {
         let (laddered, every) = maximum_independent_set_with(&c, &ch, EVERY_LEVEL);
         let (plain, _) = maximum_independent_set_with(&c, &ch, PLAIN);
         assert_eq!(laddered.len(), plain.len(), "case {case}");
-        for (i, &s) in laddered.iter().enumerate() {
-            for &t in &laddered[..i] {
-                assert!(
-                    !c.cross(s, t) || is_3b_pair(&p, &mdts[s], &mdts[t]),
-                    "case {case}: {s} and {t} are dependent"
-                );
-            }
-        }
+        assert_independent(&p, &mdts, &c, &laddered, &format!("case {case}"));
         levels += every.levels;
     }
     assert!(levels >= 2000, "only {levels} level matrices built");
