@@ -392,17 +392,30 @@ pub(crate) struct Effort {
 
 /// A candidate for the top level of some range: one chord, or a contiguous piece of a 3b-chain
 /// (whose chords cross one after the other), spanning local positions `lo..=hi`.
+/// (Indices and positions as `u32`: there are about two units per chord.)
 struct Unit {
     /// The piece `paths[chain][first..=last]` of a 3b-chain (a lone chord is a piece of one).
-    chain: usize,
-    first: usize,
-    last: usize,
-    lo: usize,
-    hi: usize,
+    chain: u32,
+    first: u32,
+    last: u32,
+    lo: u32,
+    hi: u32,
     /// The unit of the piece one chord shorter it is valued from (`NONE`: valued from all its
     /// gaps), and the gaps that change (`Table::deltas`).
     pred: u32,
     deltas: std::ops::Range<u32>,
+}
+
+impl Unit {
+    /// Its triangles.
+    fn piece<'c>(&self, chains: &'c Chains) -> &'c [usize] {
+        &chains.paths[self.chain as usize][self.first as usize..=self.last as usize]
+    }
+
+    /// Its chords, less one.
+    fn length(&self) -> usize {
+        (self.last - self.first) as usize
+    }
 }
 
 /// The endpoints of a piece growing one chord at a time, for [`Sub::list_units`]: sorted by
@@ -571,14 +584,19 @@ enum Pick {
     Piece { stair: u32, first: u32, last: u32 },
 }
 
-/// Jobs in order of span: units to value, and staircase gap values to fill in.
+/// Jobs in order of span: units to value, and staircase gap values to fill in (indices as
+/// `u32`: there are about two per chord).
 #[derive(Clone, Copy, Debug)]
 enum Job {
-    Unit(usize),
-    Left(usize, usize),
-    Inner(usize, usize),
-    Right(usize, usize),
+    Unit(u32),
+    Left(u32, u32),
+    Inner(u32, u32),
+    Right(u32, u32),
 }
+
+/// A job with what orders it: its span, 0 for a unit (units first), and a unit's number of
+/// chords less one (a unit after the shorter piece it is valued from).
+type Queued = (u32, u8, u32, Job);
 
 /// What the scans read: the valued units, by end position, and the staircases.
 struct Table {
@@ -744,7 +762,7 @@ impl Sub<'_> {
         chain: usize,
         core: std::ops::Range<usize>,
         table: &mut Table,
-        jobs: &mut Vec<(usize, u8, usize, Job)>,
+        jobs: &mut Vec<Queued>,
     ) {
         let path = &self.chains.paths[chain];
         let n = path.len();
@@ -754,14 +772,14 @@ impl Sub<'_> {
             let (mut lo, mut hi) = (usize::MAX, 0);
             let chords: &[usize] = if pred == NONE {
                 &path[first..=last]
-            } else if last > table.units[pred as usize].last {
-                let u = &table.units[pred as usize];
-                (lo, hi) = (u.lo, u.hi);
-                &path[last..=last]
             } else {
                 let u = &table.units[pred as usize];
-                (lo, hi) = (u.lo, u.hi);
-                &path[first..=first]
+                (lo, hi) = (u.lo as usize, u.hi as usize);
+                if last > u.last as usize {
+                    &path[last..=last]
+                } else {
+                    &path[first..=first]
+                }
             };
             for &t in chords {
                 let (l, r) = self.chord(t);
@@ -769,13 +787,18 @@ impl Sub<'_> {
             }
             let start = table.deltas.len() as u32;
             table.deltas.extend_from_slice(deltas);
-            jobs.push((hi - lo, 0, last - first, Job::Unit(k)));
+            jobs.push((
+                (hi - lo) as u32,
+                0,
+                (last - first) as u32,
+                Job::Unit(k as u32),
+            ));
             table.units.push(Unit {
-                chain,
-                first,
-                last,
-                lo,
-                hi,
+                chain: chain as u32,
+                first: first as u32,
+                last: last as u32,
+                lo: lo as u32,
+                hi: hi as u32,
                 pred,
                 deltas: start..table.deltas.len() as u32,
             });
@@ -837,7 +860,7 @@ impl Sub<'_> {
             || (
                 table.units[u.pred as usize].first,
                 table.units[u.pred as usize].last
-            ) == if core.contains(&u.first) {
+            ) == if core.contains(&(u.first as usize)) {
                 (u.first + 1, u.last)
             } else {
                 (u.first, u.last - 1)
@@ -880,7 +903,7 @@ impl Sub<'_> {
         };
         // (span, units first, pieces by length, job): a unit's shorter piece and all ranges
         // inside it come before it.
-        let mut jobs: Vec<(usize, u8, usize, Job)> = Vec::new();
+        let mut jobs: Vec<Queued> = Vec::new();
         for &g in self.positions {
             let (chain, _) = self.chains.place[self.circle.owner[g]];
             // Each chain once: `chain_seen` is shared by all components, marked with this one's
@@ -912,17 +935,18 @@ impl Sub<'_> {
             if let Some(stair) = stair {
                 let s = table.stairs.len();
                 let l = stair.tris.len();
-                let span = |(x, y): (usize, usize)| y - x;
+                let span = |(x, y): (usize, usize)| (y - x) as u32;
+                let s32 = s as u32;
                 for f in 0..l - 2 {
                     let [g0, g1] = stair.left_gaps(f);
-                    jobs.push((span(g0).max(span(g1)), 1, 0, Job::Left(s, f)));
+                    jobs.push((span(g0).max(span(g1)), 1, 0, Job::Left(s32, f as u32)));
                 }
                 for j in 2..l - 1 {
-                    jobs.push((span(stair.inner_gap(j)), 1, 0, Job::Inner(s, j)));
+                    jobs.push((span(stair.inner_gap(j)), 1, 0, Job::Inner(s32, j as u32)));
                 }
                 for r in 2..l {
                     let [g0, g1] = stair.right_gaps(r);
-                    jobs.push((span(g0).max(span(g1)), 1, 0, Job::Right(s, r)));
+                    jobs.push((span(g0).max(span(g1)), 1, 0, Job::Right(s32, r as u32)));
                 }
                 for (i, &(_, hi)) in stair.ends.iter().enumerate().skip(2) {
                     table.events[hi] = StairEvent {
@@ -954,9 +978,9 @@ impl Sub<'_> {
                 let v = self.best_value(&table, &mut ladders, &mut scan, a as usize, b as usize);
                 inside += if minus { -(v as i64) } else { v as i64 };
             }
-            let count = |u: &Unit| (u.last + 1 - u.first) as i64;
+            let count = |u: &Unit| u.length() as i64 + 1;
             if let Job::Unit(k) = job {
-                let u = &table.units[k];
+                let u = &table.units[k as usize];
                 if u.pred != NONE {
                     // The shorter piece's gaps, with the changes listed for this one.
                     let shorter = &table.units[u.pred as usize];
@@ -967,12 +991,12 @@ impl Sub<'_> {
             let inside = inside as u32;
             match job {
                 Job::Unit(k) => {
-                    let u = &table.units[k];
-                    table.ending[table.entry_of[k] as usize].1 = count(u) as u32 + inside;
+                    let u = &table.units[k as usize];
+                    table.ending[table.entry_of[k as usize] as usize].1 = count(u) as u32 + inside;
                 }
-                Job::Left(s, f) => table.stairs[s].left[f] = inside,
-                Job::Inner(s, j) => table.stairs[s].inner[j] = inside,
-                Job::Right(s, r) => table.stairs[s].right[r] = inside,
+                Job::Left(s, f) => table.stairs[s as usize].left[f as usize] = inside,
+                Job::Inner(s, j) => table.stairs[s as usize].inner[j as usize] = inside,
+                Job::Right(s, r) => table.stairs[s as usize].right[r as usize] = inside,
             }
         }
         let mut chosen = Vec::new();
@@ -981,10 +1005,7 @@ impl Sub<'_> {
             let picked = self.best_in(&table, &mut ladders, &mut scan, a, b);
             for pick in picked {
                 let piece = match pick {
-                    Pick::Unit(k) => {
-                        let u = &table.units[k as usize];
-                        &self.chains.paths[u.chain][u.first..=u.last]
-                    }
+                    Pick::Unit(k) => table.units[k as usize].piece(self.chains),
                     Pick::Piece { stair, first, last } => {
                         &table.stairs[stair as usize].tris[first as usize..=last as usize]
                     }
@@ -1012,7 +1033,7 @@ impl Sub<'_> {
     fn ranges_of(
         &self,
         table: &Table,
-        jobs: &[(usize, u8, usize, Job)],
+        jobs: &[Queued],
         buffers: &mut GapBuffers,
     ) -> (Vec<u32>, Vec<(u32, u32)>, Vec<bool>) {
         let mut from = Vec::with_capacity(jobs.len() + 1);
@@ -1029,22 +1050,28 @@ impl Sub<'_> {
             };
             let mut open = |ends| gap(ends, false);
             match job {
-                Job::Unit(k) if table.units[k].pred != NONE => {
-                    let deltas = table.units[k].deltas.clone();
+                Job::Unit(k) if table.units[k as usize].pred != NONE => {
+                    let deltas = table.units[k as usize].deltas.clone();
                     for &(x, y, add) in &table.deltas[deltas.start as usize..deltas.end as usize] {
                         gap((x as usize, y as usize), !add);
                     }
                 }
                 Job::Unit(k) => {
-                    let u = &table.units[k];
-                    self.gaps(&self.chains.paths[u.chain][u.first..=u.last], buffers);
+                    let u = &table.units[k as usize];
+                    self.gaps(u.piece(self.chains), buffers);
                     for &(a, b) in &buffers.gaps {
                         open((a - 1, b + 1));
                     }
                 }
-                Job::Left(s, f) => table.stairs[s].left_gaps(f).into_iter().for_each(open),
-                Job::Inner(s, j) => open(table.stairs[s].inner_gap(j)),
-                Job::Right(s, r) => table.stairs[s].right_gaps(r).into_iter().for_each(open),
+                Job::Left(s, f) => {
+                    let gaps = table.stairs[s as usize].left_gaps(f as usize);
+                    gaps.into_iter().for_each(open);
+                }
+                Job::Inner(s, j) => open(table.stairs[s as usize].inner_gap(j as usize)),
+                Job::Right(s, r) => {
+                    let gaps = table.stairs[s as usize].right_gaps(r as usize);
+                    gaps.into_iter().for_each(open);
+                }
             }
             from.push(ranges.len() as u32);
         }
@@ -1448,9 +1475,9 @@ impl Table {
             .units
             .iter()
             .map(|u| Reader {
-                lo: u.lo as u32,
-                hi: u.hi as u32,
-                slot: Slot::Before(u.lo as u32),
+                lo: u.lo,
+                hi: u.hi,
+                slot: Slot::Before(u.lo),
             })
             .collect();
         for (s, stair) in self.stairs.iter().enumerate() {
@@ -1488,7 +1515,7 @@ impl Table {
         });
         self.ending_start = vec![0; p + 1];
         for u in &self.units {
-            self.ending_start[u.hi + 1] += 1;
+            self.ending_start[u.hi as usize + 1] += 1;
         }
         for x in 0..p {
             self.ending_start[x + 1] += self.ending_start[x];
@@ -1499,7 +1526,7 @@ impl Table {
         }
         self.ending = order
             .iter()
-            .map(|&k| (self.units[k as usize].lo as u32, UNKNOWN))
+            .map(|&k| (self.units[k as usize].lo, UNKNOWN))
             .collect();
         self.ending_unit = order;
         // Units only: staircase pieces add nothing, since each chord is a unit and a piece's
@@ -1507,10 +1534,10 @@ impl Table {
         // where it ends and starts within it.
         let (mut nearest_end, mut furthest_start) = (vec![NONE; p], vec![NONE; p]);
         for u in &self.units {
-            let (lo, hi) = (u.lo as u32, u.hi as u32);
-            nearest_end[u.lo] = nearest_end[u.lo].min(hi);
-            if furthest_start[u.hi] == NONE || furthest_start[u.hi] < lo {
-                furthest_start[u.hi] = lo;
+            let (lo, hi) = (u.lo, u.hi);
+            nearest_end[lo as usize] = nearest_end[lo as usize].min(hi);
+            if furthest_start[hi as usize] == NONE || furthest_start[hi as usize] < lo {
+                furthest_start[hi as usize] = lo;
             }
         }
         (self.nearest_end, self.furthest_start) = (nearest_end, furthest_start);
