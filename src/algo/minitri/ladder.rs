@@ -24,12 +24,24 @@
 //! reporting trees, not by walking the range), and only where the positions a level saves
 //! (its length minus the levels it jumps itself) pay for a matrix product. Nothing depends on
 //! the choice for exactness: every choice gives the values of plain scans, which the tests
-//! check with a level at every range asked for ([`LadderPolicy::Every`]) against no levels.
+//! check with a level at every range asked for (`LadderPolicy::Every`) against no levels.
+//!
+//! One thing breaks "built once": values are found in order of span, so when a level is first
+//! needed, a unit reaching into it from outside (or a staircase gap across its start) may not
+//! be valued yet. Its column of the matrix is then wrong, but only a scan starting at or before
+//! that unit's start multiplies that column by a finite value; so a level records the furthest
+//! such start (`valid_from`), and a scan from further out builds it again (by then everything
+//! within the scan's range is valued). Values are `i64`: counts are below 2^32, minus infinity
+//! is -2^50, and a sum never adds more than two of them before it is clamped.
 //!
 //! Costs: with at most `sigma` slots per level and levels every `sigma^2` positions or more,
 //! building all matrices costs O(n sigma) and each range asked for at most O(sigma^2) beyond
 //! its own positions before its first level. On the corridors the slots are the diagonal rungs
-//! reaching into the level and the pieces of the two walls' 3b-chains across its cuts: 7 to 25.
+//! reaching into the level and the pieces of the two walls' 3b-chains across its cuts: 7 to 25
+//! on the bars, whose scans then stay linear. On the snake (a vertex at every lattice point)
+//! bundles of long diagonal triangles cross each other, cuts through a bundle have hundreds of
+//! slots and are no levels, and the positions scanned grow about as the square root of the
+//! length per position.
 //! The reconstruction scans again and, where its walk back needs a value inside a level it
 //! jumped, scans that level from the values saved at the jump (see `mis::Sub::best_in`).
 
