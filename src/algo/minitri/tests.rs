@@ -785,3 +785,38 @@ fn a_level_at_every_range_changes_no_answer_on_random_polygons() {
     }
     assert!(levels >= 2000, "only {levels} level matrices built");
 }
+
+/// A longer run of the level checks, once per change to step 3 (`cargo test --release --lib
+/// levels_soak -- --ignored`): random rings, bars and snakes of many sizes and seeds, the
+/// default method and a level at every range against plain scans.
+#[test]
+#[ignore]
+fn levels_soak() {
+    let mut rnd = crate::test_support::xorshift(0x50a4_1e7e);
+    let mut cases: Vec<Polygon> = Vec::new();
+    for _ in 0..20_000 {
+        cases.push(polygon(&[&random_ring(&mut rnd, 400)]));
+    }
+    for seed in 1..=2_000u64 {
+        cases.push(bars(4 + (seed as usize * 7) % 300, seed));
+    }
+    for seed in 1..=400u64 {
+        let (rows, columns) = (2 + seed as usize % 4, 5 + (seed as usize * 13) % 120);
+        let length = snake_ring(rows, columns, seed, 0).len();
+        let start = (seed as usize * 31) % length;
+        cases.push(polygon(&[&snake_ring(rows, columns, seed, start)]));
+    }
+    let mut levels = 0;
+    for (case, p) in cases.iter().enumerate() {
+        let mdts = minimally_degenerate(p);
+        let (c, ch) = (circle(p, &mdts), chains(p, &mdts));
+        let (plain, _) = maximum_independent_set_with(&c, &ch, PLAIN);
+        for method in [Method::default(), EVERY_LEVEL] {
+            let (set, effort) = maximum_independent_set_with(&c, &ch, method);
+            assert_eq!(set.len(), plain.len(), "case {case}, {method:?}");
+            assert_independent(p, &mdts, &c, &set, &format!("case {case}"));
+            levels += effort.levels;
+        }
+    }
+    eprintln!("{} polygons, {levels} level matrices", cases.len());
+}
