@@ -885,6 +885,9 @@ impl Sub<'_> {
     /// `M(l) = max(M(l - 1) + inner[l - 1], start(f = l - 2))`, with `start(f)` the best before
     /// `s_f` plus `left[f] - f`. So a staircase of length L costs O(L) units and gaps, not the
     /// O(L^2) of listing its pieces.
+    ///
+    /// The scans jump the levels chosen among the ranges asked for ([`super::ladder`]), and
+    /// the reconstruction scans a level again only where its walk back needs a value inside.
     fn solve(&self, chain_seen: &mut [u32], component: u32, effort: &mut Effort) -> Vec<usize> {
         let p = self.positions.len();
         let mut table = Table {
