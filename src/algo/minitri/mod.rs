@@ -16,6 +16,7 @@
 //! 4. and 5. [`partition`]: cut P along the chosen triangles and triangulate every piece.
 
 pub mod branch_and_bound;
+pub mod chains;
 pub mod circle;
 pub mod cut;
 pub mod degenerate;
@@ -24,6 +25,7 @@ pub mod expansion;
 pub mod ladder;
 pub mod mis;
 pub mod partition;
+mod staircase;
 
 use super::{Algorithm, TriangulateError, Triangulation};
 use crate::geom::polygon::Polygon;
@@ -57,7 +59,7 @@ pub fn triangulate_within(
     let (mdts, base) = degenerate::minimally_degenerate_and_mesh(polygon);
     let chosen: Vec<degenerate::Degenerate> = {
         let circle = circle::circle(polygon, &mdts);
-        let chains = mis::chains(polygon, &mdts);
+        let chains = chains::chains(polygon, &mdts);
         mis::maximum_independent_set(&circle, &chains)
             .into_iter()
             .map(|t| mdts[t])

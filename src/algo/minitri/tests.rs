@@ -1,10 +1,11 @@
 //! Unit tests of the MINITRI steps on hand-made polygons.
 
+use super::chains::{chains, is_3b_pair};
 use super::circle::{circle, Circle};
 use super::degenerate::{minimally_degenerate, minimally_degenerate_and_mesh, Degenerate, Kind};
 use super::dependency::dependent;
 use super::ladder::LadderPolicy;
-use super::mis::{chains, crossing_components, is_3b_pair, maximum_independent_set_with, Method};
+use super::mis::{crossing_components, maximum_independent_set_with, Method};
 use super::triangulate;
 use crate::algo::asano;
 use crate::geom::polygon::Polygon;
@@ -257,7 +258,7 @@ fn maximum_independent_set_matches_enumeration_on_random_circles() {
             })
             .collect();
         let c = circle_of(chords);
-        let ch = super::mis::Chains {
+        let ch = super::chains::Chains {
             paths: (0..k).map(|t| vec![t]).collect(),
             place: (0..k).map(|t| (t, 0)).collect(),
         };
