@@ -20,9 +20,11 @@
 //! inside in turn. A range containing a level then costs its positions outside the level plus
 //! one matrix product, instead of its whole length.
 //!
-//! The levels are chosen among the ranges asked for: only those with few slots (found with two
-//! reporting trees, not by walking the range), and only where the positions a level saves
-//! (its length minus the levels it jumps itself) pay for a matrix product. Nothing depends on
+//! The levels are chosen among the ranges asked for: only those with few slots (at most 24
+//! each way, found with two reporting trees, not by walking the range), and only where the
+//! positions a level owns (its length minus the levels it jumps itself) are at least 128 and
+//! pay for a matrix product (at least ins x outs). Both numbers were measured best among
+//! 12-256 slots and 32-512 positions (instruction counts on bars and snakes). Nothing depends on
 //! the choice for exactness: every choice gives the values of plain scans, which the tests
 //! check with a level at every range asked for (`LadderPolicy::Every`) against no levels.
 //!
@@ -142,7 +144,7 @@ impl Ladders {
         let mut ladders = Ladders::none();
         let (min_len, max_slots) = match policy {
             LadderPolicy::Off => return ladders,
-            LadderPolicy::Auto => (64, 24),
+            LadderPolicy::Auto => (128, 24),
             LadderPolicy::Every => (1, usize::MAX),
         };
         let mut candidates: Vec<(u32, u32)> = ranges
