@@ -169,7 +169,7 @@ impl Ladders {
         let mut jumps = Vec::new();
         for (a, b) in candidates {
             let (a, b) = (a as usize, b as usize);
-            ladders.jumps_in(a, b, None, &mut jumps);
+            ladders.jumps_in(a, b, &mut jumps);
             let jumped: usize = jumps
                 .iter()
                 .map(|&k| ladders.levels[k as usize].b + 1 - ladders.levels[k as usize].a)
@@ -232,9 +232,8 @@ impl Ladders {
     }
 
     /// The levels a scan of `a..=b` jumps, into `out` in order: from the left, the longest
-    /// level starting at each position and lying within `a..=b` (not `exclude`, the range being
-    /// scanned itself).
-    pub fn jumps_in(&self, a: usize, b: usize, exclude: Option<usize>, out: &mut Vec<u32>) {
+    /// level starting at each position and lying within `a..=b`.
+    pub fn jumps_in(&self, a: usize, b: usize, out: &mut Vec<u32>) {
         out.clear();
         let mut x = a as u32;
         while x as usize <= b {
@@ -242,7 +241,7 @@ impl Ladders {
                 break;
             };
             let mut k = self.head[s as usize];
-            while k != NONE && (self.levels[k as usize].b > b || exclude == Some(k as usize)) {
+            while k != NONE && self.levels[k as usize].b > b {
                 k = self.shorter[k as usize];
             }
             if k == NONE {

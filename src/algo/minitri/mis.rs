@@ -36,9 +36,9 @@
 //! without up to two chords at each end, and the pieces with those chords are listed as units:
 //! O(L)); and the place where the circle is cut into a line, if it falls in a pocket (each
 //! component is cut through the pockets of the fewest chain chords, inner ones first, then where
-//! its chords' spans sum to the least: `shortest_cut`). A chain that is still not a staircase has all its pieces listed
-//! (O(L^2) units; before both fixes a 3 x 1000-column snake's wall chains were, and step 3 took
-//! 11 s instead of 0.3 s).
+//! its chords' spans sum to the least: `shortest_cut`). A chain that is still not a staircase
+//! has all its pieces listed (O(L^2) units; before both fixes a 3 x 1000-column snake's wall
+//! chains were, and step 3 took 11 s instead of 0.3 s).
 //!
 //! The pieces that are units (those with an irregular end chord, and all pieces of a chain
 //! that is no staircase) are valued from the piece one chord shorter: only the gaps the new
@@ -176,7 +176,7 @@ enum Protect {
     /// Not a chord of a 3b-chain of four or more.
     No,
     /// The first or last chord of such a chain: cut through, it becomes an irregular end
-    /// (`Staircase::find`), whose pieces are units with O(L) gaps each.
+    /// (`Staircase::find`), whose pieces are O(L) units.
     End,
     /// Any other chord of such a chain: cut through, the chain is no staircase at all.
     Inner,
@@ -916,11 +916,15 @@ impl Sub<'_> {
         }
         let v = match ladders.level(a, b) {
             Some(k) => {
-                if !self.ensure(table, ladders, scan, k, a) {
-                    return ladders.levels[k].matrix[0] as u32; // built earlier: no scan now
+                let built_now = self.ensure(table, ladders, scan, k, a);
+                let v = ladders.levels[k].matrix[0];
+                if !built_now {
+                    // No scan now: only this range's value is known.
+                    scan.asked_value[group.start + i] = v as u32;
+                    return v as u32;
                 }
                 // The last scan of the build was from `Before(a)` alone: a plain scan.
-                ladders.levels[k].matrix[0]
+                v
             }
             None => {
                 let jumps = self.prepare(table, ladders, scan, a, b);
@@ -959,7 +963,7 @@ impl Sub<'_> {
         b: usize,
     ) -> Vec<u32> {
         let mut jumps = Vec::new();
-        ladders.jumps_in(a, b, None, &mut jumps);
+        ladders.jumps_in(a, b, &mut jumps);
         for &k in &jumps {
             self.ensure(table, ladders, scan, k as usize, a);
         }
