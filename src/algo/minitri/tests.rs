@@ -547,7 +547,7 @@ fn staircase_shortcut_matches_listing_every_piece() {
         "only {long_pieces} sets with a staircase piece of three or more chords"
     );
     // The bars' chains run along straight walls: a chain trimmed of an end chord would mean the
-    // circle was cut in its end's pocket (its pieces then have O(L) gaps each: bars of 82,000
+    // circle was cut in its end's pocket (its pieces are then O(L) units: bars of 82,000
     // vertices held 3 times the memory).
     assert!(
         longest_trimmed <= 6,
@@ -773,18 +773,30 @@ fn levels_make_corridor_scans_linear() {
 #[test]
 fn a_level_at_every_range_changes_no_answer_on_random_polygons() {
     let mut rnd = crate::test_support::xorshift(0x1add_e125);
-    let mut levels = 0;
-    for case in 0..1500 {
-        let p = polygon(&[&random_ring(&mut rnd, 300)]);
-        let mdts = minimally_degenerate(&p);
-        let (c, ch) = (circle(&p, &mdts), chains(&p, &mdts));
-        let (laddered, every) = maximum_independent_set_with(&c, &ch, EVERY_LEVEL);
-        let (plain, _) = maximum_independent_set_with(&c, &ch, PLAIN);
-        assert_eq!(laddered.len(), plain.len(), "case {case}");
-        assert_independent(&p, &mdts, &c, &laddered, &format!("case {case}"));
-        levels += every.levels;
-    }
+    let levels: usize = (0..1500)
+        .map(|case| {
+            let p = polygon(&[&random_ring(&mut rnd, 300)]);
+            agree_with_plain(&p, &[EVERY_LEVEL], &format!("case {case}"))
+        })
+        .sum();
     assert!(levels >= 2000, "only {levels} level matrices built");
+}
+
+/// Each of `methods` gives a largest independent set of `p`'s triangles as large as plain
+/// scans with every piece listed, and a truly independent one; returns the level matrices
+/// built.
+fn agree_with_plain(p: &Polygon, methods: &[Method], what: &str) -> usize {
+    let mdts = minimally_degenerate(p);
+    let (c, ch) = (circle(p, &mdts), chains(p, &mdts));
+    let (plain, _) = maximum_independent_set_with(&c, &ch, PLAIN);
+    let mut levels = 0;
+    for &method in methods {
+        let (set, effort) = maximum_independent_set_with(&c, &ch, method);
+        assert_eq!(set.len(), plain.len(), "{what}, {method:?}");
+        assert_independent(p, &mdts, &c, &set, what);
+        levels += effort.levels;
+    }
+    levels
 }
 
 /// A longer run of the level checks, once per change to step 3 (`cargo test --release --lib
@@ -807,17 +819,16 @@ fn levels_soak() {
         let start = (seed as usize * 31) % length;
         cases.push(polygon(&[&snake_ring(rows, columns, seed, start)]));
     }
-    let mut levels = 0;
-    for (case, p) in cases.iter().enumerate() {
-        let mdts = minimally_degenerate(p);
-        let (c, ch) = (circle(p, &mdts), chains(p, &mdts));
-        let (plain, _) = maximum_independent_set_with(&c, &ch, PLAIN);
-        for method in [Method::default(), EVERY_LEVEL] {
-            let (set, effort) = maximum_independent_set_with(&c, &ch, method);
-            assert_eq!(set.len(), plain.len(), "case {case}, {method:?}");
-            assert_independent(p, &mdts, &c, &set, &format!("case {case}"));
-            levels += effort.levels;
-        }
-    }
+    let levels: usize = cases
+        .iter()
+        .enumerate()
+        .map(|(case, p)| {
+            agree_with_plain(
+                p,
+                &[Method::default(), EVERY_LEVEL],
+                &format!("case {case}"),
+            )
+        })
+        .sum();
     eprintln!("{} polygons, {levels} level matrices", cases.len());
 }
