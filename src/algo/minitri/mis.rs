@@ -19,8 +19,9 @@
 //!
 //! Computation: the paper fills the table `MIS(i, j)` (O(K^2) memory). Here the circle is first
 //! split into the connected components of its crossing graph (dependent chords cross, so the
-//! components are independent problems; a lone chord is always taken), and each component is
-//! solved by weighted interval scheduling over "units" (a chord, or a contiguous piece of a
+//! components are independent problems; a lone chord is always taken, and a component of at
+//! most 64 chords is first searched over bit sets, [`super::small`], which gives up past a
+//! budget), and each component left is solved by weighted interval scheduling over "units" (a chord, or a contiguous piece of a
 //! 3b-chain) taken in order of span, in the manner of G. Valiente, "A new simple algorithm for
 //! the maximum-weight independent set problem on circle graphs", ISAAC 2003: each unit's value
 //! needs only the best sets in the gaps inside it, found by one scan each.
@@ -93,8 +94,8 @@ use super::staircase::Staircase;
 ///
 /// The dependency graph has no edge between different connected components of the crossing
 /// graph on the circle (dependent chords cross), so each component is solved on its own: a lone
-/// chord is always taken, larger components go through the exact recurrence on their own
-/// endpoints only.
+/// chord is always taken, small components are searched ([`super::small`]), the others go
+/// through the exact recurrence on their own endpoints only.
 pub fn maximum_independent_set(circle: &Circle, chains: &Chains) -> Vec<usize> {
     maximum_independent_set_with(circle, chains, Method::default()).0
 }
@@ -107,6 +108,9 @@ pub(crate) struct Method {
     pub staircases: bool,
     /// Which ranges the scans jump with a matrix ([`super::ladder`]).
     pub ladders: LadderPolicy,
+    /// The largest crossing component solved by [`super::small`]'s search instead of the
+    /// scans (lone chords are always just taken).
+    pub small: usize,
 }
 
 impl Default for Method {
@@ -114,6 +118,7 @@ impl Default for Method {
         Method {
             staircases: true,
             ladders: LadderPolicy::Auto,
+            small: super::small::SMALL,
         }
     }
 }
@@ -133,6 +138,13 @@ pub(crate) fn maximum_independent_set_with(
         if component.len() == 1 {
             chosen.push(component[0]);
             continue;
+        }
+        if component.len() <= method.small {
+            if let Some(set) = super::small::maximum_independent_set(circle, chains, &component) {
+                chosen.extend(set);
+                effort.searched += 1;
+                continue;
+            }
         }
         let mut positions: Vec<usize> = component
             .iter()
@@ -308,6 +320,8 @@ pub(crate) struct Effort {
     pub levels: usize,
     /// Ranges the jobs asked for (with repeats).
     pub asked: usize,
+    /// Components solved by [`super::small`]'s search.
+    pub searched: usize,
 }
 
 /// A candidate for the top level of some range: one chord, or a contiguous piece of a 3b-chain

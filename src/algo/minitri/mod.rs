@@ -25,6 +25,7 @@ pub mod expansion;
 pub mod ladder;
 pub mod mis;
 pub mod partition;
+pub mod small;
 mod staircase;
 
 use super::{Algorithm, TriangulateError, Triangulation};

@@ -5,7 +5,7 @@ use super::circle::{circle, Circle};
 use super::degenerate::{minimally_degenerate, minimally_degenerate_and_mesh, Degenerate, Kind};
 use super::dependency::dependent;
 use super::ladder::LadderPolicy;
-use super::mis::{crossing_components, maximum_independent_set_with, Method};
+use super::mis::{crossing_components, maximum_independent_set_with, Effort, Method};
 use super::triangulate;
 use crate::algo::asano;
 use crate::geom::polygon::Polygon;
@@ -235,7 +235,7 @@ fn crossing_components_match_brute_force() {
 #[test]
 fn maximum_independent_set_matches_enumeration_on_random_circles() {
     let mut rnd = crate::test_support::xorshift(0x5eed_c1c1e);
-    let (mut nested, mut levels) = (0, 0);
+    let (mut nested, mut levels, mut searches) = (0, 0, 0);
     for _ in 0..1500 {
         let k = 1 + rnd(13) as usize;
         // Half of the time a ladder: chord t joins positions t and 2k - 1 - t before shuffling a
@@ -262,10 +262,13 @@ fn maximum_independent_set_matches_enumeration_on_random_circles() {
             paths: (0..k).map(|t| vec![t]).collect(),
             place: (0..k).map(|t| (t, 0)).collect(),
         };
-        let (set, _) = maximum_independent_set_with(&c, &ch, Method::default());
+        let (set, searched) = maximum_independent_set_with(&c, &ch, Method::default());
         let (laddered, effort) = maximum_independent_set_with(&c, &ch, EVERY_LEVEL);
+        let (plain, _) = maximum_independent_set_with(&c, &ch, PLAIN);
         levels += effort.levels;
-        for set in [&set, &laddered] {
+        searches += searched.searched;
+        assert_eq!(plain.len(), laddered.len(), "{:?}", c.chords);
+        for set in [&set, &laddered, &plain] {
             for (i, &s) in set.iter().enumerate() {
                 for &t in &set[..i] {
                     assert!(!c.cross(s, t), "{s} and {t} cross: {:?}", c.chords);
@@ -294,18 +297,24 @@ fn maximum_independent_set_matches_enumeration_on_random_circles() {
         "only {nested} circles with three nested chords"
     );
     assert!(levels > 1500, "only {levels} level matrices built");
+    assert!(searches > 1000, "only {searches} components searched");
 }
 
-/// A level at every range asked for: the scans jump as often as they can (`super::ladder`).
+/// A level at every range asked for: the scans jump as often as they can (`super::ladder`);
+/// every component of two or more chords goes through the scans (none through
+/// [`super::small`]'s search).
 const EVERY_LEVEL: Method = Method {
     staircases: true,
     ladders: LadderPolicy::Every,
+    small: 1,
 };
 
-/// Every piece a unit and no levels: the plain method the others are checked against.
+/// Every piece a unit, no levels, no search of small components: the plain method the others
+/// are checked against.
 const PLAIN: Method = Method {
     staircases: false,
     ladders: LadderPolicy::Off,
+    small: 1,
 };
 
 /// A random simple polygon on the grid 0..=8 (many collinear points and flat vertices): a
@@ -732,6 +741,7 @@ fn levels_make_corridor_scans_linear() {
             let plain_scans = Method {
                 staircases: true,
                 ladders: LadderPolicy::Off,
+                small: 1,
             };
             let (plain, off) = maximum_independent_set_with(&c, &ch, plain_scans);
             assert_eq!(laddered.len(), plain.len(), "{name} {columns}");
@@ -773,30 +783,34 @@ fn levels_make_corridor_scans_linear() {
 #[test]
 fn a_level_at_every_range_changes_no_answer_on_random_polygons() {
     let mut rnd = crate::test_support::xorshift(0x1add_e125);
-    let levels: usize = (0..1500)
-        .map(|case| {
-            let p = polygon(&[&random_ring(&mut rnd, 300)]);
-            agree_with_plain(&p, &[EVERY_LEVEL], &format!("case {case}"))
-        })
-        .sum();
+    let (mut levels, mut searched) = (0, 0);
+    for case in 0..1500 {
+        let p = polygon(&[&random_ring(&mut rnd, 300)]);
+        let effort = agree_with_plain(&p, &[EVERY_LEVEL, Method::default()], &format!("{case}"));
+        levels += effort[0].levels;
+        searched += effort[1].searched;
+    }
     assert!(levels >= 2000, "only {levels} level matrices built");
+    // The default method searches the small components (`super::small`): checked against
+    // the plain scans, two independent exact algorithms, on components with 3b-chains.
+    assert!(searched >= 2000, "only {searched} components searched");
 }
 
 /// Each of `methods` gives a largest independent set of `p`'s triangles as large as plain
-/// scans with every piece listed, and a truly independent one; returns the level matrices
-/// built.
-fn agree_with_plain(p: &Polygon, methods: &[Method], what: &str) -> usize {
+/// scans with every piece listed, and a truly independent one; returns what each took.
+fn agree_with_plain(p: &Polygon, methods: &[Method], what: &str) -> Vec<Effort> {
     let mdts = minimally_degenerate(p);
     let (c, ch) = (circle(p, &mdts), chains(p, &mdts));
     let (plain, _) = maximum_independent_set_with(&c, &ch, PLAIN);
-    let mut levels = 0;
-    for &method in methods {
-        let (set, effort) = maximum_independent_set_with(&c, &ch, method);
-        assert_eq!(set.len(), plain.len(), "{what}, {method:?}");
-        assert_independent(p, &mdts, &c, &set, what);
-        levels += effort.levels;
-    }
-    levels
+    methods
+        .iter()
+        .map(|&method| {
+            let (set, effort) = maximum_independent_set_with(&c, &ch, method);
+            assert_eq!(set.len(), plain.len(), "{what}, {method:?}");
+            assert_independent(p, &mdts, &c, &set, what);
+            effort
+        })
+        .collect()
 }
 
 /// A longer run of the level checks, once per change to step 3 (`cargo test --release --lib
@@ -823,12 +837,56 @@ fn levels_soak() {
         .iter()
         .enumerate()
         .map(|(case, p)| {
-            agree_with_plain(
-                p,
-                &[Method::default(), EVERY_LEVEL],
-                &format!("case {case}"),
-            )
+            let methods = [Method::default(), EVERY_LEVEL];
+            let effort = agree_with_plain(p, &methods, &format!("case {case}"));
+            effort.iter().map(|e| e.levels).sum::<usize>()
         })
         .sum();
     eprintln!("{} polygons, {levels} level matrices", cases.len());
+}
+
+/// The search of small components (`super::small`) on larger random circles (40 to 64 chords,
+/// each joining positions at most a few apart among those left, so the crossing graphs are
+/// sparse, the hardest case for the search): as large as the plain scans, independent, and
+/// some components over the search's budget (given back to the scans) among them.
+#[test]
+fn small_component_search_agrees_with_the_scans_on_random_circles() {
+    let mut rnd = crate::test_support::xorshift(0x5eed_5a11);
+    let (mut searched, mut over_budget) = (0, 0);
+    for trial in 0..2000 {
+        let k = 40 + rnd(25) as usize;
+        let window = [2, 4, 6, 10][trial % 4];
+        let mut free: Vec<usize> = (0..2 * k).collect();
+        let mut chords = Vec::new();
+        while !free.is_empty() {
+            let j = 1 + rnd(window) as usize % (free.len() - 1);
+            let (a, b) = (free[0], free.remove(j));
+            free.remove(0);
+            chords.push((a, b));
+        }
+        let c = circle_of(chords);
+        let ch = super::chains::Chains {
+            paths: (0..k).map(|t| vec![t]).collect(),
+            place: (0..k).map(|t| (t, 0)).collect(),
+        };
+        for component in crossing_components(&c) {
+            if component.len() > 1
+                && super::small::maximum_independent_set(&c, &ch, &component).is_none()
+            {
+                over_budget += 1;
+            }
+        }
+        let (set, effort) = maximum_independent_set_with(&c, &ch, Method::default());
+        let (plain, _) = maximum_independent_set_with(&c, &ch, PLAIN);
+        assert_eq!(set.len(), plain.len(), "{:?}", c.chords);
+        for (i, &s) in set.iter().enumerate() {
+            assert!(set[..i].iter().all(|&t| !c.cross(s, t)), "{:?}", c.chords);
+        }
+        searched += effort.searched;
+    }
+    assert!(searched >= 2000, "only {searched} components searched");
+    assert!(
+        over_budget >= 3,
+        "only {over_budget} components over the budget"
+    );
 }
