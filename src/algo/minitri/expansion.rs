@@ -40,9 +40,8 @@
 //! swept along the corridor (`crate::algo::plain_polygon_for_walking`).
 
 use crate::algo::mesh::twin_halves;
-use crate::geom::kernel::{cmp_dir_from, cross, incircle_approx, Dir};
+use crate::geom::kernel::{cross, incircle_approx, Dir};
 use crate::geom::polygon::Polygon;
-use std::cmp::Ordering;
 
 /// A cone of directions from `lo` counter-clockwise to `hi` (narrower than a half-turn); a bound
 /// marked `_in` is not defined by a vertex, so a vertex exactly on it is seen.
@@ -242,20 +241,54 @@ enum Step {
     Found(usize),
 }
 
+impl Cone {
+    /// The zero-width part at direction `d` (both ends included).
+    fn at(d: Dir) -> Cone {
+        Cone {
+            lo: d,
+            hi: d,
+            lo_in: true,
+            hi_in: true,
+        }
+    }
+
+    /// The same directions turned by a half-turn (the other cone's view of them).
+    fn reversed(self) -> Cone {
+        Cone {
+            lo: self.lo.reversed(),
+            hi: self.hi.reversed(),
+            ..self
+        }
+    }
+
+    /// Whether every direction of `self` lies below every direction of `other` (an end shared
+    /// by both is common to them only if both include it). Both parts in one cone.
+    fn wholly_below(self, other: Cone) -> bool {
+        let c = other.lo.cross(self.hi);
+        c < 0 || (c == 0 && !(other.lo_in && self.hi_in))
+    }
+
+    /// Whether direction `d` (in the same cone) lies in `self`, ends as flagged.
+    fn holds(self, d: Dir) -> bool {
+        let (right, left) = (self.lo.cross(d), d.cross(self.hi));
+        (right > 0 || (right == 0 && self.lo_in)) && (left > 0 || (left == 0 && self.hi_in))
+    }
+}
+
 /// Reusable buffers for [`double_cone`], so that searching from many vertices allocates once.
 #[derive(Default)]
 pub struct Workspace {
-    /// Half-edges `b -> u` of the fan around `b`.
-    fan: Vec<usize>,
+    /// The fan around `b`: its vertices counter-clockwise from `next(b)` to `prev(b)`, with
+    /// their directions from `b`, and for each fan triangle `b u_i u_(i+1)` the half-edge
+    /// `u_i -> u_(i+1)`.
+    fan: Vec<Sighting>,
+    far_sides: Vec<usize>,
     /// Per cone: the parts still to expand, disjoint and sorted by angle (the highest on top),
     /// each with what to do with it.
     stacks: [Vec<(Step, Cone)>; 2],
-    /// Per cone: the vertices found with their directions from `b`, first those of the fan (by
-    /// increasing angle), then those found by walking (by decreasing angle); merged into one
-    /// list by angle at the end.
+    /// Per cone: the vertices found with their directions from `b`, by decreasing angle while
+    /// searching, by increasing angle when handed out.
     found: [Vec<Sighting>; 2],
-    /// The merged list of one cone.
-    merged: Vec<Sighting>,
 }
 
 /// The vertices seen from reflex vertex `b` that are nearest in their direction, in the two
@@ -272,6 +305,16 @@ pub struct Workspace {
 /// and counting that ray would keep alive, all along a corridor, a part hugging a wall whose
 /// vertex opposite is `b`'s own neighbour (the `bars` benchmark: 9.5 million states for 13,000
 /// vertices, 7 million once ends were exact, 136,000 on the mesh swept along the corridor).
+///
+/// The sweep: every part on either stack is a range of directions, the vertices of the fan
+/// around `b` are zero-width parts among them, and each round pops the part reaching highest
+/// over both cones (the other cone's directions turned by a half-turn). So parts are popped,
+/// and vertices found, in decreasing angle in each cone, and a popped part lies above or at
+/// everything pending in the other cone and below or at everything found there: whether the
+/// other cone still has a pending part or a found vertex opposite it is read off the top of
+/// its stack and the end of its list, in O(1) (the loops below step over at most a part or a
+/// vertex sharing an end; `debug_assertions` builds check this against a search of the whole
+/// stack and list).
 pub fn double_cone<'w>(
     polygon: &Polygon,
     mesh: &Mesh,
@@ -299,83 +342,89 @@ pub fn double_cone<'w>(
     ];
     let Workspace {
         fan,
+        far_sides,
         stacks,
         found,
-        merged,
     } = work;
-    // The fan around b, counter-clockwise from the edge to next(b) to the edge from prev(b).
+    // The fan around b, counter-clockwise from the edge to next(b) to the edge from prev(b):
+    // its vertices u_0 = next(b), .., u_m = prev(b) by increasing angle (from 0 to b's interior
+    // angle, more than a half-turn), and the far side of each of its triangles.
     fan.clear();
+    far_sides.clear();
     let mut h = mesh.first[b] as usize;
+    fan.push((to_next, polygon.next(b)));
     loop {
-        fan.push(h);
+        let w = mesh.apex(h);
+        fan.push((dir(w), w));
+        far_sides.push(Mesh::next_in_triangle(h));
         // Across the side w -> b; its twin is b -> w in the next triangle of the fan.
         match mesh.twin[Mesh::next_in_triangle(Mesh::next_in_triangle(h))] {
             NONE => break,
             g => h = g as usize,
         }
     }
-    // Directions around b compared by their angle from the direction of next(b); inside either
-    // cone this is the order by angle.
-    let cmp = |a: Dir, b: Dir| cmp_dir_from(to_next, a, b);
     for (side, cone) in cones.iter().enumerate() {
         found[side].clear();
-        stacks[side].clear();
-        for &h in fan.iter() {
-            let (u, w) = (mesh.head(h), mesh.apex(h));
-            let (du, dw) = (dir(u), dir(w));
-            for (v, d) in [(u, du), (w, dw)] {
-                if cmp(cone.lo, d) != Ordering::Greater && cmp(d, cone.hi) != Ordering::Greater {
-                    found[side].push((d, v));
+        let stack = &mut stacks[side];
+        stack.clear();
+        // Where each fan vertex lies against the closed cone: -1 below, 0 inside, 1 above. The
+        // cone is [0, a - pi] (side 0) or [pi, a] (side 1) in angles from next(b), a the
+        // interior angle; the fan's angles run from 0 to a.
+        let start = if side == 0 { to_next } else { cone.lo };
+        let place = |d: Dir| -> i8 {
+            let s = start.cross(d);
+            let from_start = s > 0 || (s == 0 && start.dot(d) > 0);
+            if !from_start {
+                // Angles in (pi, 2 pi) from `start`: side 0's fan has none below its cone;
+                // side 1's fan vertices there are below pi.
+                if side == 0 {
+                    1
+                } else {
+                    -1
                 }
-            }
-            // The part of the cone inside this fan triangle's angle; a bound taken from u or w
-            // is defined by a vertex.
-            let (lo, lo_in) = if cmp(du, cone.lo) == Ordering::Less {
-                (cone.lo, cone.lo_in)
+            } else if d.cross(cone.hi) >= 0 {
+                0
             } else {
-                (du, false)
-            };
-            let (hi, hi_in) = if cmp(dw, cone.hi) == Ordering::Greater {
-                (cone.hi, cone.hi_in)
-            } else {
-                (dw, false)
-            };
-            if cmp(lo, hi) == Ordering::Less {
-                let next = mesh.twin[Mesh::next_in_triangle(h)];
-                if next != NONE {
-                    stacks[side].push((
-                        Step::Enter(next as usize),
-                        Cone {
-                            lo,
-                            hi,
-                            lo_in,
-                            hi_in,
-                        },
-                    ));
-                }
+                1
             }
+        };
+        let mut before = place(fan[0].0);
+        if before == 0 {
+            stack.push((Step::Found(fan[0].1), Cone::at(fan[0].0)));
+        }
+        for (i, &far) in far_sides.iter().enumerate() {
+            let ((du, _), (dw, w)) = (fan[i], fan[i + 1]);
+            let after = place(dw);
+            if before <= 0 && after >= 0 {
+                // The part of the cone inside this fan triangle's angle; a bound taken from u
+                // or w is defined by a vertex.
+                let (lo, lo_in) = if before < 0 {
+                    (cone.lo, cone.lo_in)
+                } else {
+                    (du, false)
+                };
+                let (hi, hi_in) = if after > 0 {
+                    (cone.hi, cone.hi_in)
+                } else {
+                    (dw, false)
+                };
+                let part = Cone {
+                    lo,
+                    hi,
+                    lo_in,
+                    hi_in,
+                };
+                enter(stack, mesh, far, part);
+            }
+            if after == 0 {
+                stack.push((Step::Found(w), Cone::at(dw)));
+            }
+            before = after;
         }
     }
-    // Whether a vertex found so far in cone `side` lies in the range from `lo` to `hi` (inside
-    // the cone; each end included when its flag says so). Inside one cone, narrower than a
-    // half-turn, the sign of a cross product orders directions by angle; the fan's vertices come
-    // first, by increasing angle, then the others, by decreasing angle (recorded by markers, see
-    // below).
-    let fan_found = [found[0].len(), found[1].len()];
-    let any_found = |found: &[Vec<Sighting>; 2], side: usize, range: Cone| {
-        let (fan_part, walk_part) = found[side].split_at(fan_found[side]);
-        let above_lo = |d: Dir| range.lo.cross(d) > 0 || (range.lo_in && range.lo.cross(d) == 0);
-        let below_hi = |d: Dir| d.cross(range.hi) > 0 || (range.hi_in && d.cross(range.hi) == 0);
-        let i = fan_part.partition_point(|&(d, _)| !above_lo(d));
-        let j = walk_part.partition_point(|&(d, _)| !below_hi(d));
-        (i < fan_part.len() && below_hi(fan_part[i].0))
-            || (j < walk_part.len() && above_lo(walk_part[j].0))
-    };
     loop {
-        // Both stacks hold disjoint parts sorted by angle, the highest on top, and only parts
-        // on a stack can still find vertices: every direction of a cone above its top part is
-        // settled. Expand the cone whose top part reaches higher (comparing the other cone's
-        // directions turned by a half-turn), so that both sweep down together.
+        // Expand the cone whose top part reaches higher (comparing the other cone's directions
+        // turned by a half-turn), so that both sweep down together.
         let side = match (stacks[0].last(), stacks[1].last()) {
             (None, None) => break,
             (Some(_), None) => 0,
@@ -384,26 +433,11 @@ pub fn double_cone<'w>(
         };
         let (step, mut cone) = stacks[side].pop().expect("the chosen cone has a part");
         // A direction matters only if its opposite may still be found in the other cone: in a
-        // part on the other stack (sorted by angle, lowest first), or at a vertex found there.
+        // part on the other stack, or at a vertex found there.
         let other = 1 - side;
-        let opposite = Cone {
-            lo: cone.lo.reversed(),
-            hi: cone.hi.reversed(),
-            ..cone
-        };
-        let parts = &stacks[other];
-        // The other cone's parts that reach into the opposite range: disjoint and sorted, so
-        // the first not wholly below it is the only candidate (an end shared by two ranges is
-        // common to them only if both include it).
-        let i = parts.partition_point(|(_, part)| {
-            let c = opposite.lo.cross(part.hi);
-            c < 0 || (c == 0 && !(opposite.lo_in && part.hi_in))
-        });
-        let open = i < parts.len() && {
-            let c = parts[i].1.lo.cross(opposite.hi);
-            c > 0 || (c == 0 && opposite.hi_in && parts[i].1.lo_in)
-        };
-        if !open && !any_found(found, other, opposite) {
+        let opposite = cone.reversed();
+        let (parts, seen) = (&stacks[other], &found[other]);
+        if !pending_in(parts, opposite) && !found_in(seen, opposite) {
             continue;
         }
         // Above the other cone's top part, only the directions of vertices found there matter:
@@ -413,9 +447,8 @@ pub fn double_cone<'w>(
             let f = top.1.hi.reversed();
             if cone.lo.cross(f) > 0
                 && f.cross(cone.hi) > 0
-                && !any_found(
-                    found,
-                    other,
+                && !found_in(
+                    seen,
                     Cone {
                         lo: top.1.hi,
                         lo_in: true,
@@ -439,11 +472,8 @@ pub fn double_cone<'w>(
         let k_ux = Mesh::next_in_triangle(g);
         let k_xw = Mesh::next_in_triangle(k_ux);
         let dx = dir(x);
-        let (right, left) = (cone.lo.cross(dx), dx.cross(cone.hi));
-        let inside =
-            (right > 0 || (right == 0 && cone.lo_in)) && (left > 0 || (left == 0 && cone.hi_in));
         let stack = &mut stacks[side];
-        if inside {
+        if cone.holds(dx) {
             enter(
                 stack,
                 mesh,
@@ -456,15 +486,7 @@ pub fn double_cone<'w>(
             );
             // x is recorded once every direction above it is settled: by a zero-width part
             // between the two halves.
-            stack.push((
-                Step::Found(x),
-                Cone {
-                    lo: dx,
-                    hi: dx,
-                    lo_in: true,
-                    hi_in: true,
-                },
-            ));
+            stack.push((Step::Found(x), Cone::at(dx)));
             enter(
                 stack,
                 mesh,
@@ -475,41 +497,50 @@ pub fn double_cone<'w>(
                     ..cone
                 },
             );
-        } else if right <= 0 {
+        } else if cone.lo.cross(dx) <= 0 {
             enter(stack, mesh, k_xw, cone); // the whole cone passes right of x: through x -> w
         } else {
             enter(stack, mesh, k_ux, cone); // through u -> x
         }
     }
-    for (list, fan_count) in found.iter_mut().zip(fan_found) {
-        merge_by_angle(list, fan_count, merged);
+    for list in found.iter_mut() {
+        list.reverse();
+        debug_assert!(list.windows(2).all(|w| w[0].0.cross(w[1].0) > 0));
     }
     let [first, second] = found;
     (first, second)
 }
 
-/// Sorts one cone's `list` by angle, given that its first `fan_count` entries are sorted by
-/// increasing angle and the rest by decreasing angle, in linear time (a merge); entries for the
-/// same vertex met twice (the fan's triangles share their sides) are kept once. Inside a cone,
-/// narrower than a half-turn, `d` comes before `e` exactly when `d x e > 0`.
-fn merge_by_angle(list: &mut Vec<Sighting>, fan_count: usize, merged: &mut Vec<Sighting>) {
-    list[fan_count..].reverse();
-    let (fan, walk) = list.split_at(fan_count);
-    merged.clear();
-    let (mut i, mut j) = (0, 0);
-    while i < fan.len() || j < walk.len() {
-        let take_fan = j == walk.len() || (i < fan.len() && fan[i].0.cross(walk[j].0) >= 0);
-        let next = if take_fan { fan[i] } else { walk[j] };
-        if take_fan {
-            i += 1;
-        } else {
-            j += 1;
-        }
-        if merged.last().map(|&(_, v)| v) != Some(next.1) {
-            merged.push(next);
-        }
-    }
-    std::mem::swap(list, merged);
+/// Whether a part of `parts` (disjoint, sorted by angle, the highest last) shares a direction
+/// with `range`. Stepping down from the top: parts wholly above `range` are skipped (at most
+/// one, sharing an end not included by both, since the part popped lies above or at all pending
+/// ones), then the first one not wholly above decides.
+fn pending_in(parts: &[(Step, Cone)], range: Cone) -> bool {
+    let answer = parts
+        .iter()
+        .rev()
+        .find(|(_, part)| !range.wholly_below(*part))
+        .is_some_and(|(_, part)| !part.wholly_below(range));
+    debug_assert_eq!(
+        answer,
+        parts
+            .iter()
+            .any(|(_, p)| !p.wholly_below(range) && !range.wholly_below(*p)),
+    );
+    answer
+}
+
+/// Whether a vertex of `seen` (by decreasing angle) lies in `range`: stepping back from the
+/// lowest, past those below `range` (at most one sharing its end, see [`double_cone`]).
+fn found_in(seen: &[Sighting], range: Cone) -> bool {
+    let below = |d: Dir| Cone::at(d).wholly_below(range);
+    let answer = seen
+        .iter()
+        .rev()
+        .find(|&&(d, _)| !below(d))
+        .is_some_and(|&(d, _)| range.holds(d));
+    debug_assert_eq!(answer, seen.iter().any(|&(d, _)| range.holds(d)));
+    answer
 }
 
 /// Pushes the part of a cone that leaves a triangle through its half-edge `k`, unless that is a
