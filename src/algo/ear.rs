@@ -158,6 +158,9 @@ impl Grid {
     }
 
     fn cell(&self, p: Point) -> (usize, usize) {
+        if self.side == 1 {
+            return (0, 0); // small polygons: one cell, no division
+        }
         let cx = (i128::from(p.x - self.min.x) / self.cell_w) as usize;
         let cy = (i128::from(p.y - self.min.y) / self.cell_h) as usize;
         (cx.min(self.side - 1), cy.min(self.side - 1))

@@ -53,9 +53,11 @@ pub fn chains(polygon: &Polygon, mdts: &[Degenerate]) -> Chains {
         by_middle[fill[m.b]] = t;
         fill[m.b] += 1;
     }
-    let mut partners: Vec<Vec<usize>> = vec![Vec::new(); mdts.len()];
+    // Each triangle's 3b-partners: at most one through each end (`NONE` for none).
+    const NONE: usize = usize::MAX;
+    let mut partners: Vec<[usize; 2]> = vec![[NONE; 2]; mdts.len()];
     for (s, m) in mdts.iter().enumerate() {
-        for end in [m.a, m.c] {
+        for (k, end) in [m.a, m.c].into_iter().enumerate() {
             // The triangle with middle `end` and an end at `m.b`, if any (one at most: the
             // nearest vertex in a direction is unique).
             let found = by_middle[start[end]..start[end + 1]]
@@ -63,7 +65,7 @@ pub fn chains(polygon: &Polygon, mdts: &[Degenerate]) -> Chains {
                 .find(|&&t| mdts[t].a == m.b || mdts[t].c == m.b);
             if let Some(&t) = found {
                 if is_3b_pair(polygon, m, &mdts[t]) {
-                    partners[s].push(t);
+                    partners[s][k] = t;
                 }
             }
         }
@@ -71,12 +73,12 @@ pub fn chains(polygon: &Polygon, mdts: &[Degenerate]) -> Chains {
     let mut place = vec![(usize::MAX, 0); mdts.len()];
     let mut paths = Vec::new();
     for start in 0..mdts.len() {
-        if place[start].0 != usize::MAX || partners[start].len() == 2 {
+        if place[start].0 != usize::MAX || !partners[start].contains(&NONE) {
             continue; // already placed, or inside a path (paths start at an end)
         }
         let mut path = vec![start];
-        let (mut prev, mut at) = (usize::MAX, start);
-        while let Some(&next) = partners[at].iter().find(|&&p| p != prev) {
+        let (mut prev, mut at) = (NONE, start);
+        while let Some(&next) = partners[at].iter().find(|&&p| p != prev && p != NONE) {
             path.push(next);
             (prev, at) = (at, next);
         }

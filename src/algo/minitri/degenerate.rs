@@ -129,6 +129,12 @@ fn reflex_or_flat(polygon: &Polygon, b: usize, out: &mut Vec<Degenerate>) -> boo
 /// rectilinear polygons need at most about 3.5 flips per vertex.
 const FLIPS_PER_VERTEX: usize = 4;
 
+/// The smallest polygon whose triangulation is flipped before walking: in smaller ones the walks
+/// are short whatever the triangles' shapes, and the flips cost more than they save (4% of all
+/// the work on the batch benchmark's 8- to 40-vertex rectilinear polygons; about even at 50
+/// vertices, flipping saves 13% on 200-vertex stars).
+const FLIPS_FROM: usize = 48;
+
 /// All minimally degenerate triangles of a polygon (holes allowed), by triangular expansion from
 /// each reflex vertex inside its double cone ([`super::expansion`]) over a plain triangulation.
 pub fn minimally_degenerate(polygon: &Polygon) -> Vec<Degenerate> {
@@ -140,7 +146,9 @@ pub fn minimally_degenerate(polygon: &Polygon) -> Vec<Degenerate> {
 /// build another one.
 pub fn minimally_degenerate_and_mesh(polygon: &Polygon) -> (Vec<Degenerate>, Vec<[usize; 3]>) {
     let mut mesh = Mesh::new(polygon, crate::algo::plain_polygon_for_walking(polygon));
-    mesh.flip_towards_delaunay(polygon, FLIPS_PER_VERTEX * polygon.len());
+    if polygon.len() >= FLIPS_FROM {
+        mesh.flip_towards_delaunay(polygon, FLIPS_PER_VERTEX * polygon.len());
+    }
     // The vertices are independent searches over a shared mesh: in parallel (on the current
     // rayon pool) by blocks of vertices, concatenated in vertex order, so the result does not
     // depend on the number of threads. A polygon of one block skips the pool altogether.

@@ -17,11 +17,12 @@
 //!
 //! and abandons a branch that cannot beat the largest set found (`chosen` plus all of `left`
 //! is no larger). Exact, since the rules keep a maximum set reachable and the bound only drops
-//! branches no better than one found. Time: O(k) per node; branching happens only on a chord
+//! branches no better than one found. Time: O(k) per pass of the first rule (at most k passes)
+//! per node; branching happens only on a chord
 //! with two or more dependents left, so the tree is small where the graph is dense or a forest
 //! of paths, and can grow as 1.38^k on sparse graphs in between: after [`BUDGET`] nodes the
 //! search gives up and the component goes to the scans (which are polynomial). On the batch
-//! benchmark's polygons (components of 2 to 38 chords) it visits 1 to 19 nodes, 2 on average.
+//! benchmark's polygons (components of 2 to 38 chords) it visits 1 to 37 nodes, 3 on average.
 
 use super::chains::Chains;
 use super::circle::Circle;
@@ -46,10 +47,17 @@ pub fn maximum_independent_set(
         component.len() <= 64,
         "a small component fits a u64 bit set"
     );
+    // The chords' ends and chains, read once.
+    let mut chords = [(0, 0, 0); 64];
+    for (slot, &t) in chords.iter_mut().zip(component) {
+        let (l, r) = circle.chords[t];
+        *slot = (l, r, chains.place[t].0);
+    }
     let mut dependents = [0u64; 64];
-    for (i, &s) in component.iter().enumerate() {
-        for (j, &t) in component[..i].iter().enumerate() {
-            if circle.cross(s, t) && chains.place[s].0 != chains.place[t].0 {
+    for (i, &(a, b, chain)) in chords[..component.len()].iter().enumerate() {
+        for (j, &(c, d, other)) in chords[..i].iter().enumerate() {
+            let cross = (a < c && c < b && b < d) || (c < a && a < d && d < b);
+            if cross && chain != other {
                 dependents[i] |= 1 << j;
                 dependents[j] |= 1 << i;
             }
@@ -58,6 +66,7 @@ pub fn maximum_independent_set(
     let mut search = Search {
         dependents: &dependents[..component.len()],
         best: 0,
+        best_size: 0,
         nodes: 0,
     };
     search.run(0, u64::MAX >> (64 - component.len()))?;
@@ -75,8 +84,9 @@ pub fn maximum_independent_set(
 /// The search over bit sets of the component's chords.
 struct Search<'a> {
     dependents: &'a [u64],
-    /// The largest independent set found so far.
+    /// The largest independent set found so far, and its size.
     best: u64,
+    best_size: u32,
     /// Nodes visited.
     nodes: usize,
 }
@@ -89,38 +99,46 @@ impl Search<'_> {
         if self.nodes > BUDGET {
             return None;
         }
+        // Take every chord with at most one dependent left (`d & (d - 1) == 0`: at most one
+        // bit), until none is left.
         loop {
-            if chosen.count_ones() + left.count_ones() <= self.best.count_ones() {
-                return Some(()); // cannot beat the best found
-            }
-            if left == 0 {
-                self.best = chosen;
-                return Some(());
-            }
-            // The chord with the fewest dependents left and the one with the most (lowest
-            // index first among equals, so the result is deterministic).
-            let (mut fewest, mut most) = ((u32::MAX, 0), (0, 0));
+            let before = left;
             let mut bits = left;
             while bits != 0 {
                 let v = bits.trailing_zeros() as usize;
                 bits &= bits - 1;
-                let degree = (self.dependents[v] & left).count_ones();
-                if degree < fewest.0 {
-                    fewest = (degree, v);
-                }
-                if degree > most.0 {
-                    most = (degree, v);
+                let d = self.dependents[v] & left;
+                if left >> v & 1 == 1 && d & d.wrapping_sub(1) == 0 {
+                    chosen |= 1 << v;
+                    left &= !(1 << v | d);
                 }
             }
-            if fewest.0 > 1 {
-                let v = most.1;
-                self.run(chosen | 1 << v, left & !(1 << v | self.dependents[v]))?;
-                left &= !(1 << v);
-                continue; // the branch without v
+            if left == before {
+                break;
             }
-            let v = fewest.1;
-            chosen |= 1 << v;
-            left &= !(1 << v | self.dependents[v]);
         }
+        let size = chosen.count_ones();
+        if size + left.count_ones() <= self.best_size {
+            return Some(()); // cannot beat the best found
+        }
+        if left == 0 {
+            (self.best, self.best_size) = (chosen, size);
+            return Some(());
+        }
+        // Branch on the chord with the most dependents left (the lowest index among equals,
+        // so the result is deterministic): chosen, then dropped.
+        let mut most = (0, 0);
+        let mut bits = left;
+        while bits != 0 {
+            let v = bits.trailing_zeros() as usize;
+            bits &= bits - 1;
+            let degree = (self.dependents[v] & left).count_ones();
+            if degree > most.0 {
+                most = (degree, v);
+            }
+        }
+        let v = most.1;
+        self.run(chosen | 1 << v, left & !(1 << v | self.dependents[v]))?;
+        self.run(chosen, left & !(1 << v))
     }
 }
