@@ -198,7 +198,7 @@ pub(crate) fn t_junctions(polygon: &crate::Polygon, triangles: &[[usize; 3]]) ->
 /// (flat vertices allowed): `len - 2` positive triangles as indices into `pts`. Ear clipping for
 /// small polygons, where it is quickest, monotone pieces (O(n log n)) otherwise.
 pub(crate) fn plain(pts: &[crate::geom::kernel::Point]) -> Vec<[usize; 3]> {
-    if pts.len() <= 16 {
+    if pts.len() <= ear::CLIP_UP_TO {
         ear::clip(pts)
     } else {
         monotone::triangulate_cycle(pts)
@@ -246,7 +246,7 @@ pub(crate) fn plain_polygon(polygon: &crate::Polygon) -> Vec<[usize; 3]> {
 pub(crate) fn plain_polygon_for_walking(polygon: &crate::Polygon) -> Vec<[usize; 3]> {
     use crate::geom::kernel::{Point, MAX_COORD};
     let pts = polygon.points();
-    if pts.len() <= 16 {
+    if pts.len() <= ear::CLIP_UP_TO {
         return plain_polygon(polygon);
     }
     let (mut lo, mut hi) = (pts[0], pts[0]);

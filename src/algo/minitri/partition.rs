@@ -15,7 +15,7 @@
 
 use super::degenerate::Degenerate;
 use crate::algo::plain;
-use crate::geom::kernel::{cmp_angle, cross, Point, WideSum};
+use crate::geom::kernel::{cmp_angle, cross, WideSum};
 use crate::geom::polygon::Polygon;
 
 /// The triangles of all pieces, in stored vertex indices, counter-clockwise.
@@ -43,7 +43,7 @@ pub fn triangulate_pieces(polygon: &Polygon, chosen: &[Degenerate]) -> Vec<[usiz
     // just clockwise of v -> u. Each directed edge (a slot of `graph`) is walked once.
     let mut used = vec![false; graph.to.len()];
     let mut triangles = Vec::with_capacity(n);
-    let mut face = Vec::new();
+    let (mut face, mut keep, mut piece) = (Vec::new(), Vec::new(), Vec::new());
     for start in 0..graph.to.len() {
         if used[start] {
             continue;
@@ -68,18 +68,18 @@ pub fn triangulate_pieces(polygon: &Polygon, chosen: &[Degenerate]) -> Vec<[usiz
             continue;
         }
         // Drop chosen middles where they are straight (their 180-degree side).
-        let keep: Vec<usize> = (0..k)
-            .filter(|&i| {
-                let (p, q) = (point((i + k - 1) % k), point((i + 1) % k));
-                !(straight_middle[face[i]] && cross(p, point(i), q) == 0)
-            })
-            .map(|i| face[i])
-            .collect();
+        keep.clear();
+        keep.extend((0..k).filter_map(|i| {
+            let (p, q) = (point((i + k - 1) % k), point((i + 1) % k));
+            let straight = straight_middle[face[i]] && cross(p, point(i), q) == 0;
+            (!straight).then_some(face[i])
+        }));
         if let [a, b, c] = keep[..] {
             triangles.push([a, b, c]); // already a triangle (of positive area: a piece)
             continue;
         }
-        let piece: Vec<Point> = keep.iter().map(|&i| polygon.point(i)).collect();
+        piece.clear();
+        piece.extend(keep.iter().map(|&i| polygon.point(i)));
         triangles.extend(plain(&piece).into_iter().map(|t| t.map(|i| keep[i])));
     }
     triangles
