@@ -28,9 +28,14 @@ pub struct Circle {
 impl Circle {
     /// Whether the chords of triangles `s` and `t` cross on the circle.
     pub fn cross(&self, s: usize, t: usize) -> bool {
-        let ((a, b), (c, d)) = (self.chords[s], self.chords[t]);
-        (a < c && c < b && b < d) || (c < a && a < d && d < b)
+        chords_cross(self.chords[s], self.chords[t])
     }
+}
+
+/// Whether two chords `(left, right)` (`left < right`, four distinct positions) cross: exactly
+/// one end of each lies strictly between the ends of the other.
+pub fn chords_cross((a, b): (usize, usize), (c, d): (usize, usize)) -> bool {
+    (a < c && c < b && b < d) || (c < a && a < d && d < b)
 }
 
 /// Builds C(P) for the triangles `mdts` of `polygon`.

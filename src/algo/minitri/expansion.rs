@@ -31,10 +31,10 @@
 //! Every decision is an exact sign of a cross product of two [`Dir`]s; the only floating point
 //! (which diagonals to flip) affects the running time, never what is found.
 //! Complexity: O(n log n) to build the mesh, at most `max_flips` O(1) flips, then per vertex work
-//! proportional to the triangles met by the parts of its cones still alive (each with an
-//! O(log n) pruning test): O(n) per vertex, so O(n^2) in the worst case, but far less on typical
-//! polygons. Measured on random star polygons (the `bench/polygon.py star` family), after the
-//! flips: about 37 states per vertex at 10^4 vertices, 42 at 10^5, 48 at 10^6 (before the flips
+//! proportional to the triangles met by the parts of its cones still alive (each with an O(1)
+//! pruning test, see [`double_cone`]): O(n) per vertex, so O(n^2) in the worst case, but far
+//! less on typical polygons. Measured on random star polygons (the `bench/polygon.py star`
+//! family), after the flips: about 37 states per vertex at 10^4 vertices, 42 at 10^5, 48 at 10^6 (before the flips
 //! and the pairing of the cones: 210 at 10^4, 560 at 10^5); on the `bars` family (a corridor
 //! the length of the polygon, Theta(n^2) visible pairs), about 10 states per vertex on the mesh
 //! swept along the corridor (`crate::algo::plain_polygon_for_walking`).
@@ -51,6 +51,40 @@ struct Cone {
     hi: Dir,
     lo_in: bool,
     hi_in: bool,
+}
+
+impl Cone {
+    /// The zero-width part at direction `d` (both ends included).
+    fn at(d: Dir) -> Cone {
+        Cone {
+            lo: d,
+            hi: d,
+            lo_in: true,
+            hi_in: true,
+        }
+    }
+
+    /// The same directions turned by a half-turn (the other cone's view of them).
+    fn reversed(self) -> Cone {
+        Cone {
+            lo: self.lo.reversed(),
+            hi: self.hi.reversed(),
+            ..self
+        }
+    }
+
+    /// Whether every direction of `self` lies below every direction of `other` (an end shared
+    /// by both is common to them only if both include it). Both parts in one cone.
+    fn wholly_below(self, other: Cone) -> bool {
+        let c = other.lo.cross(self.hi);
+        c < 0 || (c == 0 && !(other.lo_in && self.hi_in))
+    }
+
+    /// Whether direction `d` (in the same cone) lies in `self`, ends as flagged.
+    fn holds(self, d: Dir) -> bool {
+        let (right, left) = (self.lo.cross(d), d.cross(self.hi));
+        (right > 0 || (right == 0 && self.lo_in)) && (left > 0 || (left == 0 && self.hi_in))
+    }
 }
 
 /// A triangulation of a polygon without holes with neighbours, for walking.
@@ -241,47 +275,13 @@ enum Step {
     Found(usize),
 }
 
-impl Cone {
-    /// The zero-width part at direction `d` (both ends included).
-    fn at(d: Dir) -> Cone {
-        Cone {
-            lo: d,
-            hi: d,
-            lo_in: true,
-            hi_in: true,
-        }
-    }
-
-    /// The same directions turned by a half-turn (the other cone's view of them).
-    fn reversed(self) -> Cone {
-        Cone {
-            lo: self.lo.reversed(),
-            hi: self.hi.reversed(),
-            ..self
-        }
-    }
-
-    /// Whether every direction of `self` lies below every direction of `other` (an end shared
-    /// by both is common to them only if both include it). Both parts in one cone.
-    fn wholly_below(self, other: Cone) -> bool {
-        let c = other.lo.cross(self.hi);
-        c < 0 || (c == 0 && !(other.lo_in && self.hi_in))
-    }
-
-    /// Whether direction `d` (in the same cone) lies in `self`, ends as flagged.
-    fn holds(self, d: Dir) -> bool {
-        let (right, left) = (self.lo.cross(d), d.cross(self.hi));
-        (right > 0 || (right == 0 && self.lo_in)) && (left > 0 || (left == 0 && self.hi_in))
-    }
-}
-
 /// Reusable buffers for [`double_cone`], so that searching from many vertices allocates once.
 #[derive(Default)]
 pub struct Workspace {
-    /// The fan around `b`: its vertices counter-clockwise from `next(b)` to `prev(b)`, with
-    /// their directions from `b`, and for each fan triangle `b u_i u_(i+1)` the half-edge
-    /// `u_i -> u_(i+1)`.
+    /// The fan around `b`: its vertices `u_0 = next(b), .., u_m = prev(b)` counter-clockwise,
+    /// with their directions from `b`.
     fan: Vec<Sighting>,
+    /// For each fan triangle `b u_i u_(i+1)`, its far side: the half-edge `u_i -> u_(i+1)`.
     far_sides: Vec<usize>,
     /// Per cone: the parts still to expand, disjoint and sorted by angle (the highest on top),
     /// each with what to do with it.

@@ -25,7 +25,7 @@
 //! benchmark's polygons (components of 2 to 38 chords) it visits 1 to 37 nodes, 3 on average.
 
 use super::chains::Chains;
-use super::circle::Circle;
+use super::circle::{chords_cross, Circle};
 
 /// The largest component searched here (a bit set per chord, `u64`).
 pub const SMALL: usize = 64;
@@ -47,17 +47,18 @@ pub fn maximum_independent_set(
         component.len() <= 64,
         "a small component fits a u64 bit set"
     );
-    // The chords' ends and chains, read once.
-    let mut chords = [(0, 0, 0); 64];
+    if component.is_empty() {
+        return Some(Vec::new());
+    }
+    // The chords and their chains, read once.
+    let mut chords = [((0, 0), 0); 64];
     for (slot, &t) in chords.iter_mut().zip(component) {
-        let (l, r) = circle.chords[t];
-        *slot = (l, r, chains.place[t].0);
+        *slot = (circle.chords[t], chains.place[t].0);
     }
     let mut dependents = [0u64; 64];
-    for (i, &(a, b, chain)) in chords[..component.len()].iter().enumerate() {
-        for (j, &(c, d, other)) in chords[..i].iter().enumerate() {
-            let cross = (a < c && c < b && b < d) || (c < a && a < d && d < b);
-            if cross && chain != other {
+    for (i, &(chord, chain)) in chords[..component.len()].iter().enumerate() {
+        for (j, &(other, other_chain)) in chords[..i].iter().enumerate() {
+            if chords_cross(chord, other) && chain != other_chain {
                 dependents[i] |= 1 << j;
                 dependents[j] |= 1 << i;
             }
