@@ -18,7 +18,7 @@ use super::tally::Tally;
 use crate::io::read::geojson::JSON_WHITESPACE;
 use crate::io::read::geojson_stream::{self, Event, Stop};
 use crate::io::read::{self, detect_start, Format, ParseError, RawPolygon};
-use crate::io::write::{OutputFormat, Sink};
+use crate::io::write::{OutputFormat, Renderer, Sink};
 use crate::pipeline::{process_raw, unreadable, Error, Options, Outcome};
 use rayon::prelude::*;
 use std::collections::BTreeMap;
@@ -96,14 +96,15 @@ pub fn run_document(
     let mut tally = Tally::default();
     let mut complete = true;
     {
-        let mut deliver = |outcome: Outcome| {
+        let renderer = sink.renderer();
+        let mut deliver = |outcome: Outcome, rendered: Option<String>| {
             tally.add(&outcome);
             for line in outcome.messages(settings.quiet) {
                 observer.message(&line);
             }
-            sink.push(outcome)
+            sink.push_rendered(outcome, rendered)
         };
-        let mut chunker = Chunker::new(&settings.options, &mut deliver, observer);
+        let mut chunker = Chunker::new(&settings.options, renderer, &mut deliver, observer);
         for input in inputs {
             complete &= match input {
                 Ok(input) => read_input(input, settings.from, &mut chunker)?,
@@ -254,12 +255,13 @@ fn run_file(
     let written = (|| {
         let mut sink = format.sink(&mut file)?;
         let complete = {
-            let mut deliver = |outcome: Outcome| {
+            let renderer = sink.renderer();
+            let mut deliver = |outcome: Outcome, rendered: Option<String>| {
                 report.tally.add(&outcome);
                 report.messages.extend(outcome.messages(settings.quiet));
-                sink.push(outcome)
+                sink.push_rendered(outcome, rendered)
             };
-            let mut chunker = Chunker::new(&settings.options, &mut deliver, observer);
+            let mut chunker = Chunker::new(&settings.options, renderer, &mut deliver, observer);
             let complete = read_input(input, settings.from, &mut chunker)?;
             chunker.flush()?;
             complete
@@ -304,25 +306,32 @@ enum Parsed {
     Line(Arc<str>, Result<Vec<RawPolygon>, ParseError>),
 }
 
-/// Gathers items into chunks, triangulates each chunk in parallel, delivers outcomes in order.
+/// Where a chunk's outcomes go, in order, each with what the sink's renderer made of it.
+type Deliver<'a> = dyn FnMut(Outcome, Option<String>) -> io::Result<()> + 'a;
+
+/// Gathers items into chunks, triangulates (and renders) each chunk in parallel, delivers
+/// outcomes in order.
 struct Chunker<'a> {
     options: &'a Options,
+    renderer: Option<Renderer>,
     items: Vec<Item>,
     vertices: usize,
     /// The source of the last line numbered, and the index its next polygon gets.
     lines: Option<(Arc<str>, usize)>,
-    deliver: &'a mut dyn FnMut(Outcome) -> io::Result<()>,
+    deliver: &'a mut Deliver<'a>,
     observer: &'a dyn Observer,
 }
 
 impl<'a> Chunker<'a> {
     fn new(
         options: &'a Options,
-        deliver: &'a mut dyn FnMut(Outcome) -> io::Result<()>,
+        renderer: Option<Renderer>,
+        deliver: &'a mut Deliver<'a>,
         observer: &'a dyn Observer,
     ) -> Chunker<'a> {
         Chunker {
             options,
+            renderer,
             items: Vec::new(),
             vertices: 0,
             lines: None,
@@ -390,21 +399,27 @@ impl<'a> Chunker<'a> {
         if items.iter().any(|item| matches!(item, Item::Line { .. })) {
             items = self.read_lines(items);
         }
-        let options = self.options;
-        let outcomes: Vec<Outcome> = items
+        let (options, renderer) = (self.options, self.renderer);
+        let outcomes: Vec<(Outcome, Option<String>)> = items
             .into_par_iter()
-            .map(|item| match item {
-                Item::Polygon { source, index, raw } => process_raw(&source, index, raw, options),
-                Item::Failed(outcome) => *outcome,
-                Item::Line { source, .. } => {
-                    unreadable(&source, Error::Read("line not read".into()))
-                }
+            .map(|item| {
+                let outcome = match item {
+                    Item::Polygon { source, index, raw } => {
+                        process_raw(&source, index, raw, options)
+                    }
+                    Item::Failed(outcome) => *outcome,
+                    Item::Line { source, .. } => {
+                        unreadable(&source, Error::Read("line not read".into()))
+                    }
+                };
+                let rendered = renderer.and_then(|render| render(&outcome));
+                (outcome, rendered)
             })
             .collect();
-        let polygons = outcomes.iter().filter(|o| o.index.is_some()).count();
+        let polygons = outcomes.iter().filter(|(o, _)| o.index.is_some()).count();
         self.observer.polygons(polygons);
-        for outcome in outcomes {
-            (self.deliver)(outcome)?;
+        for (outcome, rendered) in outcomes {
+            (self.deliver)(outcome, rendered)?;
         }
         Ok(())
     }

@@ -63,36 +63,29 @@ impl<W: Write> JsonWriter<W> {
     /// # Errors
     /// Any I/O error of the output.
     pub fn push(&mut self, outcome: &Outcome) -> io::Result<()> {
-        let (solved, polygon, index) = match (&outcome.result, &outcome.polygon, outcome.index) {
-            (Ok(s), Some(p), Some(i)) => (s, p, i),
-            (Err(e), _, _) => {
+        let text = render(outcome);
+        self.push_rendered(outcome, text)
+    }
+
+    /// [`JsonWriter::push`] with the outcome's text made already ([`render`] of it, on any
+    /// thread).
+    ///
+    /// # Errors
+    /// Any I/O error of the output.
+    pub fn push_rendered(&mut self, outcome: &Outcome, text: Option<String>) -> io::Result<()> {
+        let Some(text) = text else {
+            if let Err(e) = &outcome.result {
                 self.errors.push(ErrorEntry {
                     source: outcome.source.clone(),
                     index: outcome.index,
                     message: e.to_string(),
                 });
-                return Ok(());
             }
-            _ => return Ok(()),
+            return Ok(());
         };
-        let out = &mut self.out;
-        writeln!(out, "{}", if self.polygons == 0 { "" } else { "," })?;
+        let separator = if self.polygons == 0 { "" } else { "," };
         self.polygons += 1;
-        let t = &solved.triangulation;
-        let fields: Vec<(&str, String)> = match &solved.pseudo {
-            Some(p) => pseudo_fields(outcome, index, polygon, t.algorithm, p),
-            None => triangle_fields(outcome, index, polygon, t),
-        };
-        writeln!(out, "    {{")?;
-        for (name, value) in &fields {
-            writeln!(out, "      \"{name}\": {value},")?;
-        }
-        let warnings: Vec<String> = outcome.warnings.iter().map(ToString::to_string).collect();
-        write!(out, "      \"warnings\": {}", json(&warnings))?;
-        if let Some(v) = &solved.verification {
-            write!(out, ",\n      \"verification\": {}", json(v))?;
-        }
-        write!(out, "\n    }}")
+        write!(self.out, "{separator}\n{text}")
     }
 
     /// Ends the document: closes `polygons`, writes `errors`, and flushes.
@@ -110,6 +103,33 @@ impl<W: Write> JsonWriter<W> {
         writeln!(out, "}}")?;
         out.flush()
     }
+}
+
+/// The text of a solved outcome in the `polygons` list (`None` for an error, which goes to the
+/// `errors` list at the end). Depends on the outcome only, so a batch makes it in parallel.
+pub fn render(outcome: &Outcome) -> Option<String> {
+    use std::fmt::Write as _;
+    let (Ok(solved), Some(polygon), Some(index)) =
+        (&outcome.result, &outcome.polygon, outcome.index)
+    else {
+        return None;
+    };
+    let t = &solved.triangulation;
+    let fields: Vec<(&str, String)> = match &solved.pseudo {
+        Some(p) => pseudo_fields(outcome, index, polygon, t.algorithm, p),
+        None => triangle_fields(outcome, index, polygon, t),
+    };
+    let mut out = String::from("    {\n");
+    for (name, value) in &fields {
+        let _ = writeln!(out, "      \"{name}\": {value},");
+    }
+    let warnings: Vec<String> = outcome.warnings.iter().map(ToString::to_string).collect();
+    let _ = write!(out, "      \"warnings\": {}", json(&warnings));
+    if let Some(v) = &solved.verification {
+        let _ = write!(out, ",\n      \"verification\": {}", json(v));
+    }
+    out.push_str("\n    }");
+    Some(out)
 }
 
 /// The fields of a triangulated polygon, in order.

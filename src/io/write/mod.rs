@@ -61,6 +61,21 @@ pub trait Sink {
     /// Any I/O error of the output.
     fn push(&mut self, outcome: Outcome) -> io::Result<()>;
 
+    /// What this sink can make of an outcome before taking it, on any thread and in any order
+    /// (a batch renders its outcomes in parallel): by default nothing.
+    fn renderer(&self) -> Option<Renderer> {
+        None
+    }
+
+    /// Takes the next outcome with what [`Sink::renderer`] made of it.
+    ///
+    /// # Errors
+    /// Any I/O error of the output.
+    fn push_rendered(&mut self, outcome: Outcome, rendered: Option<String>) -> io::Result<()> {
+        let _ = rendered;
+        self.push(outcome)
+    }
+
     /// Ends the document and flushes the output.
     ///
     /// # Errors
@@ -68,9 +83,20 @@ pub trait Sink {
     fn finish(self: Box<Self>) -> io::Result<()>;
 }
 
+/// Text made of an outcome ahead of writing it ([`Sink::renderer`]).
+pub type Renderer = fn(&Outcome) -> Option<String>;
+
 impl<W: Write> Sink for json::JsonWriter<W> {
     fn push(&mut self, outcome: Outcome) -> io::Result<()> {
         json::JsonWriter::push(self, &outcome)
+    }
+
+    fn renderer(&self) -> Option<Renderer> {
+        Some(json::render)
+    }
+
+    fn push_rendered(&mut self, outcome: Outcome, rendered: Option<String>) -> io::Result<()> {
+        json::JsonWriter::push_rendered(self, &outcome, rendered)
     }
 
     fn finish(self: Box<Self>) -> io::Result<()> {
