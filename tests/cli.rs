@@ -558,3 +558,20 @@ fn a_search_cut_short_reports_not_optimal_with_a_lower_bound() {
     assert!(p.get("lower_bound").is_none());
     assert_eq!(p["triangle_count"].as_u64(), count);
 }
+
+/// The README's first example is what the binary prints: the JSON under "What it does" is the
+/// output of its first command (`cargo run --release -- fixtures/valid/u_shape.wkt`) byte for
+/// byte, run from the repository's root as the README says.
+#[test]
+fn the_readme_example_is_what_the_binary_prints() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let readme = std::fs::read_to_string(root.join("README.md")).expect("README.md");
+    let start = readme
+        .find("```json\n{\n  \"polygons\"")
+        .expect("the README's JSON example")
+        + "```json\n".len();
+    let end = start + readme[start..].find("```").expect("the end of the example");
+    let (code, out, err) = run(&["fixtures/valid/u_shape.wkt"], None);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(out, readme[start..end], "README example out of date");
+}
