@@ -370,13 +370,13 @@ pub fn double_cone<'w>(
         // Where each fan vertex lies against the closed cone: -1 below, 0 inside, 1 above. The
         // cone is [0, a - pi] (side 0) or [pi, a] (side 1) in angles from next(b), a the
         // interior angle; the fan's angles run from 0 to a.
-        let start = if side == 0 { to_next } else { cone.lo };
+        let start = cone.lo; // next(b) or its opposite
         let place = |d: Dir| -> i8 {
             let s = start.cross(d);
             let from_start = s > 0 || (s == 0 && start.dot(d) > 0);
             if !from_start {
-                // Angles in (pi, 2 pi) from `start`: side 0's fan has none below its cone;
-                // side 1's fan vertices there are below pi.
+                // Angles in [pi, 2 pi) from `start`: side 0's fan vertices there are above its
+                // cone (which ends before pi), side 1's are below pi.
                 if side == 0 {
                     1
                 } else {
