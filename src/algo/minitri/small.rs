@@ -22,7 +22,7 @@
 //! small where the graph is dense or a forest of paths, and can grow as 1.38^k on sparse graphs
 //! in between: after [`BUDGET`] nodes the search gives up and the component goes to the scans
 //! (which are polynomial). On the batch benchmark's polygons (components of 2 to 38 chords) it
-//! visits 1 to 37 nodes, 3 on average; step 3 went from about 80,000 to 20,000 instructions per
+//! visits 1 to 37 nodes, 3 on average; step 3 went from about 80,000 to 22,000 instructions per
 //! polygon there.
 
 use super::chains::Chains;
