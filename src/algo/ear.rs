@@ -109,6 +109,8 @@ pub(crate) fn clip(pts: &[Point]) -> Vec<[usize; 3]> {
             v = p; // p may have become an ear
         } else {
             misses += 1;
+            // A valid polygon always has an ear (see the module documentation); the guard only
+            // keeps a broken invariant from looping forever.
             assert!(
                 misses <= remaining,
                 "no ear in a valid polygon: invariant broken"

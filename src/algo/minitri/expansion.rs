@@ -32,10 +32,10 @@
 //! (which diagonals to flip) affects the running time, never what is found.
 //! Complexity: O(n log n) to build the mesh, at most `max_flips` O(1) flips, then per vertex work
 //! proportional to the triangles met by the parts of its cones still alive (each with an O(1)
-//! pruning test, see [`double_cone`]): O(n) per vertex, so O(n^2) in the worst case, but far
-//! less on typical polygons. Measured on random star polygons (the `bench/polygon.py star`
-//! family), after the flips: about 37 states per vertex at 10^4 vertices, 42 at 10^5, 48 at 10^6 (before the flips
-//! and the pairing of the cones: 210 at 10^4, 560 at 10^5); on the `bars` family (a corridor
+//! pruning test, see [`double_cone`]): O(n) per vertex, so O(n^2) in the worst case, but far less
+//! on typical polygons. Measured on random star polygons (the `bench/polygon.py star` family),
+//! after the flips: about 37 states per vertex at 10^4 vertices, 42 at 10^5, 48 at 10^6 (before the
+//! flips and the pairing of the cones: 210 at 10^4, 560 at 10^5); on the `bars` family (a corridor
 //! the length of the polygon, Theta(n^2) visible pairs), about 10 states per vertex on the mesh
 //! swept along the corridor (`crate::algo::plain_polygon_for_walking`).
 
@@ -82,7 +82,12 @@ impl Cone {
 
     /// Whether direction `d` (in the same cone) lies in `self`, ends as flagged.
     fn holds(self, d: Dir) -> bool {
-        let (right, left) = (self.lo.cross(d), d.cross(self.hi));
+        self.holds_given(d, self.lo.cross(d))
+    }
+
+    /// [`Cone::holds`] with `right = lo x d` computed already (the walk needs it again).
+    fn holds_given(self, d: Dir, right: i128) -> bool {
+        let left = d.cross(self.hi);
         (right > 0 || (right == 0 && self.lo_in)) && (left > 0 || (left == 0 && self.hi_in))
     }
 }
@@ -473,7 +478,8 @@ pub fn double_cone<'w>(
         let k_xw = Mesh::next_in_triangle(k_ux);
         let dx = dir(x);
         let stack = &mut stacks[side];
-        if cone.holds(dx) {
+        let right = cone.lo.cross(dx);
+        if cone.holds_given(dx, right) {
             enter(
                 stack,
                 mesh,
@@ -497,7 +503,7 @@ pub fn double_cone<'w>(
                     ..cone
                 },
             );
-        } else if cone.lo.cross(dx) <= 0 {
+        } else if right <= 0 {
             enter(stack, mesh, k_xw, cone); // the whole cone passes right of x: through x -> w
         } else {
             enter(stack, mesh, k_ux, cone); // through u -> x

@@ -19,12 +19,12 @@
 //!
 //! Computation: the paper fills the table `MIS(i, j)` (O(K^2) memory). Here the circle is first
 //! split into the connected components of its crossing graph (dependent chords cross, so the
-//! components are independent problems; a lone chord is always taken, and a component of at
-//! most 64 chords is first searched over bit sets, [`super::small`], which gives up past a
-//! budget), and each component left is solved by weighted interval scheduling over "units" (a chord, or a contiguous piece of a
-//! 3b-chain) taken in order of span, in the manner of G. Valiente, "A new simple algorithm for
-//! the maximum-weight independent set problem on circle graphs", ISAAC 2003: each unit's value
-//! needs only the best sets in the gaps inside it, found by one scan each.
+//! components are independent problems; a lone chord is always taken, and a component of at most 64
+//! chords is first searched over bit sets, [`super::small`], which gives up past a budget), and
+//! each component left is solved by weighted interval scheduling over "units" (a chord, or a
+//! contiguous piece of a 3b-chain) taken in order of span, in the manner of G. Valiente, "A new
+//! simple algorithm for the maximum-weight independent set problem on circle graphs", ISAAC 2003:
+//! each unit's value needs only the best sets in the gaps inside it, found by one scan each.
 //!
 //! 3b-chains in the plane are staircases on the circle: the chain's line cuts off one pocket of
 //! the polygon between consecutive chain vertices (on the non-180-degree side), so the boundary

@@ -28,35 +28,35 @@
 use super::chains::Chains;
 use super::circle::{chords_cross, Circle};
 
-/// The largest component searched here (a bit set per chord, `u64`).
-pub const SMALL: usize = 64;
+/// The largest component searched here (a bit set over the chords, `u64`).
+pub const SMALL: usize = u64::BITS as usize;
 
 /// The most search nodes spent on one component before giving it back to the scans.
 pub const BUDGET: usize = 2_000;
 
-/// A maximum independent set of the triangles of one crossing `component` (at most 64 of
-/// them), as triangle indices; `None` if the search needed more than [`BUDGET`] nodes.
+/// A maximum independent set of the triangles of one crossing `component` (at most [`SMALL`]
+/// of them), as triangle indices; `None` if the search needed more than [`BUDGET`] nodes.
 ///
 /// # Panics
-/// If the component has more than 64 triangles.
+/// If the component has more than [`SMALL`] triangles.
 pub fn maximum_independent_set(
     circle: &Circle,
     chains: &Chains,
     component: &[usize],
 ) -> Option<Vec<usize>> {
     assert!(
-        component.len() <= 64,
+        component.len() <= SMALL,
         "a small component fits a u64 bit set"
     );
     if component.is_empty() {
         return Some(Vec::new());
     }
     // The chords and their chains, read once.
-    let mut chords = [((0, 0), 0); 64];
+    let mut chords = [((0, 0), 0); SMALL];
     for (slot, &t) in chords.iter_mut().zip(component) {
         *slot = (circle.chords[t], chains.place[t].0);
     }
-    let mut dependents = [0u64; 64];
+    let mut dependents = [0u64; SMALL];
     for (i, &(chord, chain)) in chords[..component.len()].iter().enumerate() {
         for (j, &(other, other_chain)) in chords[..i].iter().enumerate() {
             if chords_cross(chord, other) && chain != other_chain {
@@ -71,7 +71,7 @@ pub fn maximum_independent_set(
         best_size: 0,
         nodes: 0,
     };
-    search.run(0, u64::MAX >> (64 - component.len()))?;
+    search.run(0, u64::MAX >> (SMALL - component.len()))?;
     let best = search.best;
     Some(
         component

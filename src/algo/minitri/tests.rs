@@ -258,10 +258,7 @@ fn maximum_independent_set_matches_enumeration_on_random_circles() {
             })
             .collect();
         let c = circle_of(chords);
-        let ch = super::chains::Chains {
-            paths: (0..k).map(|t| vec![t]).collect(),
-            place: (0..k).map(|t| (t, 0)).collect(),
-        };
+        let ch = lone_chains(k);
         let (set, searched) = maximum_independent_set_with(&c, &ch, Method::default());
         let (laddered, effort) = maximum_independent_set_with(&c, &ch, EVERY_LEVEL);
         let (plain, _) = maximum_independent_set_with(&c, &ch, PLAIN);
@@ -269,11 +266,7 @@ fn maximum_independent_set_matches_enumeration_on_random_circles() {
         searches += searched.searched;
         assert_eq!(plain.len(), laddered.len(), "{:?}", c.chords);
         for set in [&set, &laddered, &plain] {
-            for (i, &s) in set.iter().enumerate() {
-                for &t in &set[..i] {
-                    assert!(!c.cross(s, t), "{s} and {t} cross: {:?}", c.chords);
-                }
-            }
+            assert_no_crossings(&c, set);
         }
         assert_eq!(set.len(), laddered.len(), "{:?}", c.chords);
         let best = (0u32..1 << k)
@@ -713,6 +706,23 @@ fn parallel_search_gives_the_sequential_result_in_the_same_order() {
     assert_eq!(found, by_sweep);
 }
 
+/// No 3b-chains: each of `k` chords its own chain (for circles made up without a polygon).
+fn lone_chains(k: usize) -> super::chains::Chains {
+    super::chains::Chains {
+        paths: (0..k).map(|t| vec![t]).collect(),
+        place: (0..k).map(|t| (t, 0)).collect(),
+    }
+}
+
+/// No two chords of `set` cross on `c` (an independent set when there are no 3b-chains).
+fn assert_no_crossings(c: &Circle, set: &[usize]) {
+    for (i, &s) in set.iter().enumerate() {
+        for &t in &set[..i] {
+            assert!(!c.cross(s, t), "{s} and {t} cross: {:?}", c.chords);
+        }
+    }
+}
+
 /// The circle of these chords (`(left, right)` each, every position `0..2K` used once).
 fn circle_of(chords: Vec<(usize, usize)>) -> Circle {
     let mut owner = vec![0; 2 * chords.len()];
@@ -865,10 +875,7 @@ fn small_component_search_agrees_with_the_scans_on_random_circles() {
             chords.push((a, b));
         }
         let c = circle_of(chords);
-        let ch = super::chains::Chains {
-            paths: (0..k).map(|t| vec![t]).collect(),
-            place: (0..k).map(|t| (t, 0)).collect(),
-        };
+        let ch = lone_chains(k);
         for component in crossing_components(&c) {
             if component.len() > 1
                 && super::small::maximum_independent_set(&c, &ch, &component).is_none()
@@ -879,9 +886,7 @@ fn small_component_search_agrees_with_the_scans_on_random_circles() {
         let (set, effort) = maximum_independent_set_with(&c, &ch, Method::default());
         let (plain, _) = maximum_independent_set_with(&c, &ch, PLAIN);
         assert_eq!(set.len(), plain.len(), "{:?}", c.chords);
-        for (i, &s) in set.iter().enumerate() {
-            assert!(set[..i].iter().all(|&t| !c.cross(s, t)), "{:?}", c.chords);
-        }
+        assert_no_crossings(&c, &set);
         searched += effort.searched;
     }
     assert!(searched >= 2000, "only {searched} components searched");
