@@ -5,7 +5,9 @@
 #      mapbox/earcut fixtures: times, ratios, peak heap per vertex, triangle counts
 #      (benches/compare.rs says exactly what is measured; options go to it);
 #   2. the binary end to end (file in, JSON out), time and peak memory (bench/minitri.sh);
-#   3. batch throughput on 100,000 small rectilinear polygons, 1 and 2 threads (benches/batch.rs).
+#   3. batch throughput on 100,000 small rectilinear polygons, 1 and 2 threads (benches/batch.rs);
+#   4. instructions per run at n = 10^3 (bench/instructions.sh, if valgrind is installed): the
+#      small sizes' ratios without the drift of wall time on a shared host.
 # Usage, from anywhere: bench/compare.sh [OPTIONS of benches/compare.rs]
 # The report goes to standard output and to $MINITRI_COMPARE_OUT (default target/compare.md);
 # progress goes to standard error.
@@ -28,4 +30,8 @@ mkdir -p "$(dirname "$out")"
   echo "### 3. Batch throughput (cargo bench --bench batch)"
   echo
   cargo bench --quiet --bench batch
+  echo
+  echo "### 4. Instructions per run at 10^3 vertices (bench/instructions.sh)"
+  echo
+  bench/instructions.sh
 } | tee "$out"

@@ -413,7 +413,7 @@ fn the_population_has_long_3b_chains_and_large_dependency_clusters() {
     for p in population(3000) {
         let mdts = chen_chang::degenerate::minimally_degenerate(&p);
         let chains = chen_chang::mis::chains(&p, &mdts);
-        let longest = chains.paths.iter().map(Vec::len).max().unwrap_or(0);
+        let longest = chains.paths.iter().map(<[usize]>::len).max().unwrap_or(0);
         chain2 += usize::from(longest >= 2);
         chain3 += usize::from(longest >= 3);
         chain4 += usize::from(longest >= 4);

@@ -5,6 +5,7 @@
 //! (see [`super::mis`]).
 
 use super::degenerate::Degenerate;
+use super::lists::Lists;
 use crate::geom::kernel::{cross, Dir};
 use crate::geom::polygon::Polygon;
 
@@ -12,9 +13,24 @@ use crate::geom::polygon::Polygon;
 #[derive(Clone, Debug)]
 pub struct Chains {
     /// The chains, each a list of triangles in order along their line.
-    pub paths: Vec<Vec<usize>>,
+    pub paths: Lists,
     /// For each triangle: (its chain, its index in that chain).
     pub place: Vec<(usize, usize)>,
+}
+
+impl Chains {
+    /// `k` triangles, each a chain of its own (no 3b pairs).
+    pub fn lone(k: usize) -> Chains {
+        let mut paths = Lists::with_capacity(k);
+        for t in 0..k {
+            paths.push(t);
+            paths.close();
+        }
+        Chains {
+            paths,
+            place: (0..k).map(|t| (t, 0)).collect(),
+        }
+    }
 }
 
 /// Whether `s` and `t` form a 3b pair: they share a side on one line (the middle of each is an
@@ -71,21 +87,22 @@ pub fn chains(polygon: &Polygon, mdts: &[Degenerate]) -> Chains {
         }
     }
     let mut place = vec![(usize::MAX, 0); mdts.len()];
-    let mut paths = Vec::new();
+    let mut paths = Lists::with_capacity(mdts.len());
     for start in 0..mdts.len() {
         if place[start].0 != usize::MAX || !partners[start].contains(&NONE) {
             continue; // already placed, or inside a path (paths start at an end)
         }
-        let mut path = vec![start];
+        let chain = paths.len();
         let (mut prev, mut at) = (NONE, start);
-        while let Some(&next) = partners[at].iter().find(|&&p| p != prev && p != NONE) {
-            path.push(next);
-            (prev, at) = (at, next);
+        loop {
+            place[at] = (chain, paths.open_len());
+            paths.push(at);
+            match partners[at].iter().find(|&&p| p != prev && p != NONE) {
+                Some(&next) => (prev, at) = (at, next),
+                None => break,
+            }
         }
-        for (i, &t) in path.iter().enumerate() {
-            place[t] = (paths.len(), i);
-        }
-        paths.push(path);
+        paths.close();
     }
     Chains { paths, place }
 }

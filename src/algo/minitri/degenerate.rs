@@ -39,6 +39,7 @@ use crate::algo::chords::visible_from;
 use crate::geom::kernel::{cmp_angle, cross};
 use crate::geom::polygon::Polygon;
 use rayon::prelude::*;
+use std::cell::RefCell;
 use std::cmp::Ordering;
 
 /// The kind of a minimally degenerate triangle (Chen & Chang, §3).
@@ -154,7 +155,10 @@ pub fn minimally_degenerate_and_mesh(polygon: &Polygon) -> (Vec<Degenerate>, Vec
     // depend on the number of threads. A polygon of one block skips the pool altogether.
     let n = polygon.len();
     if n <= PARALLEL_BLOCK {
-        let found = search_range(polygon, &mesh, 0..n, &mut Workspace::default());
+        // One workspace per thread, kept from polygon to polygon (a batch of small ones would
+        // otherwise grow its buffers again for every polygon).
+        thread_local!(static WORK: RefCell<Workspace> = RefCell::default());
+        let found = WORK.with_borrow_mut(|work| search_range(polygon, &mesh, 0..n, work));
         return (found, mesh.into_triangles());
     }
     let blocks: Vec<Vec<Degenerate>> = (0..n.div_ceil(PARALLEL_BLOCK))
@@ -174,7 +178,7 @@ fn search_range(
     range: std::ops::Range<usize>,
     work: &mut Workspace,
 ) -> Vec<Degenerate> {
-    let mut out = Vec::new();
+    let mut out = Vec::with_capacity(range.len());
     for b in range {
         search_from(polygon, mesh, b, work, &mut out);
     }

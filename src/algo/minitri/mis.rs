@@ -88,6 +88,7 @@
 pub use super::chains::{chains, is_3b_pair, Chains};
 use super::circle::Circle;
 use super::ladder::{clamp, LadderPolicy, Ladders, Level, Reader, Slot, NEG};
+use super::lists::Lists;
 use super::staircase::Staircase;
 
 /// A maximum independent set of the triangles, as indices into the triangle list.
@@ -134,13 +135,13 @@ pub(crate) fn maximum_independent_set_with(
     let mut chosen = Vec::new();
     let mut local = vec![u32::MAX; circle.owner.len()];
     let mut chain_seen = vec![u32::MAX; chains.paths.len()];
-    for (number, component) in crossing_components(circle).into_iter().enumerate() {
+    for (number, component) in crossing_components(circle).iter().enumerate() {
         if component.len() == 1 {
             chosen.push(component[0]);
             continue;
         }
         if component.len() <= method.small {
-            if let Some(set) = super::small::maximum_independent_set(circle, chains, &component) {
+            if let Some(set) = super::small::maximum_independent_set(circle, chains, component) {
                 chosen.extend(set);
                 effort.searched += 1;
                 continue;
@@ -154,10 +155,10 @@ pub(crate) fn maximum_independent_set_with(
         for (i, &g) in positions.iter().enumerate() {
             local[g] = i as u32;
         }
-        let cut = shortest_cut(&component, |t| {
+        let cut = shortest_cut(component, |t| {
             let (l, r) = circle.chords[t];
             let (chain, i) = chains.place[t];
-            let len = chains.paths[chain].len();
+            let len = chains.paths.get(chain).len();
             let class = match () {
                 _ if len < 4 => Protect::No,
                 _ if (1..len - 1).contains(&i) => Protect::Inner,
@@ -250,7 +251,7 @@ fn shortest_cut(chords: &[usize], chord: impl Fn(usize) -> (usize, usize, Protec
 /// the stack holds open chords that opened after it, so each crosses it: they merge into its group.
 /// A group with no open chord left is popped (anything later either encloses or avoids it).
 /// O(K alpha(K)) with union-find.
-pub fn crossing_components(circle: &Circle) -> Vec<Vec<usize>> {
+pub fn crossing_components(circle: &Circle) -> Lists {
     let k = circle.chords.len();
     let mut parent: Vec<usize> = (0..k).collect();
     fn find(parent: &mut [usize], mut x: usize) -> usize {
@@ -286,12 +287,19 @@ pub fn crossing_components(circle: &Circle) -> Vec<Vec<usize>> {
         }
     }
     // Grouped by root, roots in increasing order.
-    let mut groups: Vec<Vec<usize>> = vec![Vec::new(); k];
-    for t in 0..k {
-        let r = find(&mut parent, t);
-        groups[r].push(t);
+    let root: Vec<usize> = (0..k).map(|t| find(&mut parent, t)).collect();
+    let mut order: Vec<usize> = (0..k).collect();
+    order.sort_unstable_by_key(|&t| (root[t], t));
+    let mut groups = Lists::with_capacity(k);
+    for (i, &t) in order.iter().enumerate() {
+        if i > 0 && root[t] != root[order[i - 1]] {
+            groups.close();
+        }
+        groups.push(t);
     }
-    groups.retain(|g| !g.is_empty());
+    if k > 0 {
+        groups.close();
+    }
     groups
 }
 
@@ -328,7 +336,7 @@ pub(crate) struct Effort {
 /// (whose chords cross one after the other), spanning local positions `lo..=hi`.
 /// (Indices and positions as `u32`: there are about two units per chord.)
 struct Unit {
-    /// The piece `paths[chain][first..=last]` of a 3b-chain (a lone chord is a piece of one).
+    /// The piece `paths.get(chain)[first..=last]` of a 3b-chain (a lone chord is a piece of one).
     chain: u32,
     first: u32,
     last: u32,
@@ -343,7 +351,7 @@ struct Unit {
 impl Unit {
     /// Its triangles.
     fn piece<'c>(&self, chains: &'c Chains) -> &'c [usize] {
-        &chains.paths[self.chain as usize][self.first as usize..=self.last as usize]
+        &chains.paths.get(self.chain as usize)[self.first as usize..=self.last as usize]
     }
 
     /// Its chords, less one.
@@ -588,7 +596,7 @@ impl Sub<'_> {
         table: &mut Table,
         jobs: &mut Vec<Queued>,
     ) {
-        let path = &self.chains.paths[chain];
+        let path = self.chains.paths.get(chain);
         let n = path.len();
         let first_unit = table.units.len();
         let mut push = |table: &mut Table, first: usize, last: usize, pred: u32, deltas: &[_]| {
@@ -739,7 +747,7 @@ impl Sub<'_> {
                 continue;
             }
             chain_seen[chain] = component;
-            let path = &self.chains.paths[chain];
+            let path = self.chains.paths.get(chain);
             let stair = if self.method.staircases {
                 Staircase::find(path, |t| self.chord(t))
             } else {

@@ -23,6 +23,7 @@ pub mod degenerate;
 pub mod dependency;
 pub mod expansion;
 pub mod ladder;
+pub mod lists;
 pub mod mis;
 pub mod partition;
 pub mod small;

@@ -18,6 +18,9 @@ use crate::algo::plain;
 use crate::geom::kernel::{cmp_angle, cross, WideSum};
 use crate::geom::polygon::Polygon;
 
+/// The longest face list kept for the next faces once the outer face has been walked.
+const GIVE_BACK: usize = 1 << 12;
+
 /// The triangles of all pieces, in stored vertex indices, counter-clockwise.
 pub fn triangulate_pieces(polygon: &Polygon, chosen: &[Degenerate]) -> Vec<[usize; 3]> {
     let n = polygon.len();
@@ -63,8 +66,11 @@ pub fn triangulate_pieces(polygon: &Polygon, chosen: &[Degenerate]) -> Vec<[usiz
         }
         if area.signum() <= 0 {
             // The outer face (clockwise; the area sum cannot overflow): it runs along the whole
-            // boundary, the longest list of all, so its room is given back right away.
-            face = Vec::new();
+            // boundary, the longest list of all, so on a large polygon its room is given back
+            // right away (on a small one, it is kept for the pieces).
+            if face.capacity() > GIVE_BACK {
+                face = Vec::new();
+            }
             continue;
         }
         // Drop chosen middles where they are straight (their 180-degree side).

@@ -144,7 +144,7 @@ fn relationship_iii_b_a_3b_chain_of_length_4() {
     }
     let ch = chains(&p, &mdts);
     let (chain, _) = ch.place[ids[0]];
-    assert_eq!(ch.paths[chain].len(), 4);
+    assert_eq!(ch.paths.get(chain).len(), 4);
     assert!(ids.iter().all(|&t| ch.place[t].0 == chain));
     let t = triangulate(&p).unwrap();
     let middles: Vec<usize> = t.degenerate.iter().map(|d| d[1]).collect();
@@ -222,7 +222,10 @@ fn crossing_components_match_brute_force() {
                 expected.push(group);
             }
         }
-        let mut got = crossing_components(&c);
+        let mut got: Vec<Vec<usize>> = crossing_components(&c)
+            .iter()
+            .map(<[usize]>::to_vec)
+            .collect();
         got.sort();
         expected.sort();
         assert_eq!(got, expected, "{:?}", c.chords);
@@ -258,7 +261,7 @@ fn maximum_independent_set_matches_enumeration_on_random_circles() {
             })
             .collect();
         let c = circle_of(chords);
-        let ch = lone_chains(k);
+        let ch = super::chains::Chains::lone(k);
         let (set, searched) = maximum_independent_set_with(&c, &ch, Method::default());
         let (laddered, effort) = maximum_independent_set_with(&c, &ch, EVERY_LEVEL);
         let (plain, _) = maximum_independent_set_with(&c, &ch, PLAIN);
@@ -634,7 +637,8 @@ fn snakes_keep_their_staircases() {
                 "seed {seed} start {start}: a chain of {} listed piece by piece",
                 effort.longest_listed
             );
-            longest_chain = longest_chain.max(ch.paths.iter().map(Vec::len).max().unwrap_or(0));
+            longest_chain =
+                longest_chain.max(ch.paths.iter().map(<[usize]>::len).max().unwrap_or(0));
             if start == 0 && p.len() <= 130 {
                 minimum_agrees(&p);
                 dp_checked += 1;
@@ -704,14 +708,6 @@ fn parallel_search_gives_the_sequential_result_in_the_same_order() {
     by_sweep.sort_unstable();
     found.sort_unstable();
     assert_eq!(found, by_sweep);
-}
-
-/// No 3b-chains: each of `k` chords its own chain (for circles made up without a polygon).
-fn lone_chains(k: usize) -> super::chains::Chains {
-    super::chains::Chains {
-        paths: (0..k).map(|t| vec![t]).collect(),
-        place: (0..k).map(|t| (t, 0)).collect(),
-    }
 }
 
 /// No two chords of `set` cross on `c` (an independent set when there are no 3b-chains).
@@ -875,10 +871,10 @@ fn small_component_search_agrees_with_the_scans_on_random_circles() {
             chords.push((a, b));
         }
         let c = circle_of(chords);
-        let ch = lone_chains(k);
-        for component in crossing_components(&c) {
+        let ch = super::chains::Chains::lone(k);
+        for component in crossing_components(&c).iter() {
             if component.len() > 1
-                && super::small::maximum_independent_set(&c, &ch, &component).is_none()
+                && super::small::maximum_independent_set(&c, &ch, component).is_none()
             {
                 over_budget += 1;
             }
