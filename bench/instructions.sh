@@ -4,8 +4,10 @@
 # unlike wall time on a shared host, a count does not drift between runs, so the ratios of small
 # inputs can be compared across reports. Each count is one thread's work (RAYON_NUM_THREADS=1):
 # on two cores MINITRI's step 1 runs on both, so its wall time is lower than the count suggests.
-# What is counted: the compare worker running the algorithm 1 time and 11 times on the same
-# validated polygon; the difference over 10 is one run, without input generation or validation.
+# What is counted: the compare worker running the algorithm 1 time and exactly 11 times on the
+# same validated polygon; the difference over 10 is one run, without input generation or
+# validation (an average: on the snake the first runs cost more than later ones, the allocator's
+# state differing).
 # Usage, from anywhere: bench/instructions.sh [SIZES...]   (default 1000)
 # Environment: MINITRI_BENCH_SHAPES (default "star maze bars snake"). Needs valgrind.
 set -euo pipefail
@@ -20,7 +22,8 @@ read -r -a shapes <<< "${MINITRI_BENCH_SHAPES:-star maze bars snake}"
 sizes=("$@"); [ ${#sizes[@]} -gt 0 ] || sizes=(1000)
 count() { # CASE ALGORITHM RUNS -> instructions of the whole worker process
   RAYON_NUM_THREADS=1 valgrind --tool=callgrind --callgrind-out-file=/dev/null \
-    "$worker" --worker "$1" "$2" "$3" 2>&1 >/dev/null | awk '/refs:/ { gsub(",", "", $NF); print $NF }'
+    "$worker" --worker "$1" "$2" "$3" --exact-runs 2>&1 >/dev/null \
+    | awk '/refs:/ { gsub(",", "", $NF); print $NF }'
 }
 printf '| shape | n | minitri | ear | earcut | minitri ÷ earcut | ear ÷ earcut |\n'
 printf '|---|---:|---:|---:|---:|---:|---:|\n'

@@ -179,7 +179,15 @@ fn parse_shape(name: &str) -> Result<Shape, String> {
 }
 
 /// Runs `algo` on `case` up to `runs` times and prints one `key=value` line (or `na <why>`).
-fn worker(case: &str, algo: &str, runs: usize, verify: bool) -> Result<String, String> {
+/// One algorithm on one input: up to `runs` runs, fewer once they add up to 2 s unless
+/// `exact_runs` (for counting instructions, `bench/instructions.sh`).
+fn worker(
+    case: &str,
+    algo: &str,
+    runs: usize,
+    verify: bool,
+    exact_runs: bool,
+) -> Result<String, String> {
     let input = load(case)?;
     let holes = input.hole_starts.len();
     let fp = input.fingerprint;
@@ -188,7 +196,9 @@ fn worker(case: &str, algo: &str, runs: usize, verify: bool) -> Result<String, S
     let mut peak = 0;
     let mut total = Duration::ZERO;
     let mut repeat = |f: &mut dyn FnMut() -> (Duration, usize)| {
-        while times.len() < runs.max(1) && (times.is_empty() || total < Duration::from_secs(2)) {
+        while times.len() < runs.max(1)
+            && (times.is_empty() || exact_runs || total < Duration::from_secs(2))
+        {
             let (t, p) = f();
             times.push(t);
             peak = peak.max(p);
@@ -671,11 +681,12 @@ fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     if args.first().map(String::as_str) == Some("--worker") {
         let (Some(case), Some(algo), Some(runs)) = (args.get(1), args.get(2), args.get(3)) else {
-            eprintln!("compare --worker CASE ALGORITHM RUNS [--verify]");
+            eprintln!("compare --worker CASE ALGORITHM RUNS [--verify] [--exact-runs]");
             return ExitCode::from(2);
         };
         let verify = args.iter().any(|a| a == "--verify");
-        return match worker(case, algo, runs.parse().unwrap_or(1), verify) {
+        let exact_runs = args.iter().any(|a| a == "--exact-runs");
+        return match worker(case, algo, runs.parse().unwrap_or(1), verify, exact_runs) {
             Ok(line) => {
                 println!("{line}");
                 ExitCode::SUCCESS
