@@ -178,7 +178,7 @@ fn search_range(
     range: std::ops::Range<usize>,
     work: &mut Workspace,
 ) -> Vec<Degenerate> {
-    let mut out = Vec::with_capacity(range.len());
+    let mut out = Vec::new();
     for b in range {
         search_from(polygon, mesh, b, work, &mut out);
     }
