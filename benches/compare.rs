@@ -178,9 +178,8 @@ fn parse_shape(name: &str) -> Result<Shape, String> {
     }
 }
 
-/// Runs `algo` on `case` up to `runs` times and prints one `key=value` line (or `na <why>`).
-/// One algorithm on one input: up to `runs` runs, fewer once they add up to 2 s unless
-/// `exact_runs` (for counting instructions, `bench/instructions.sh`).
+/// Runs `algo` on `case` up to `runs` times (fewer once they add up to 2 s, unless `exact_runs`:
+/// `bench/instructions.sh` counts instructions) and prints one `key=value` line (or `na <why>`).
 fn worker(
     case: &str,
     algo: &str,

@@ -155,34 +155,32 @@ pub fn minimally_degenerate_and_mesh(polygon: &Polygon) -> (Vec<Degenerate>, Vec
     // depend on the number of threads. A polygon of one block skips the pool altogether.
     let n = polygon.len();
     if n <= PARALLEL_BLOCK {
-        // One workspace per thread, kept from polygon to polygon (a batch of small ones would
-        // otherwise grow its buffers again for every polygon).
-        thread_local!(static WORK: RefCell<Workspace> = RefCell::default());
-        let found = WORK.with_borrow_mut(|work| search_range(polygon, &mesh, 0..n, work));
+        let found = search_range(polygon, &mesh, 0..n);
         return (found, mesh.into_triangles());
     }
     let blocks: Vec<Vec<Degenerate>> = (0..n.div_ceil(PARALLEL_BLOCK))
         .into_par_iter()
-        .map_init(Workspace::default, |work, block| {
+        .map(|block| {
             let range = block * PARALLEL_BLOCK..((block + 1) * PARALLEL_BLOCK).min(n);
-            search_range(polygon, &mesh, range, work)
+            search_range(polygon, &mesh, range)
         })
         .collect();
     (blocks.concat(), mesh.into_triangles())
 }
 
 /// The triangles found from the vertices of `range`, in vertex order.
-fn search_range(
-    polygon: &Polygon,
-    mesh: &Mesh,
-    range: std::ops::Range<usize>,
-    work: &mut Workspace,
-) -> Vec<Degenerate> {
-    let mut out = Vec::new();
-    for b in range {
-        search_from(polygon, mesh, b, work, &mut out);
-    }
-    out
+fn search_range(polygon: &Polygon, mesh: &Mesh, range: std::ops::Range<usize>) -> Vec<Degenerate> {
+    // One workspace per thread, kept from call to call (a batch of small polygons would
+    // otherwise grow its buffers again for every polygon). Nothing in the search calls back
+    // into the thread pool, so the borrow never nests.
+    thread_local!(static WORK: RefCell<Workspace> = RefCell::default());
+    WORK.with_borrow_mut(|work| {
+        let mut out = Vec::new();
+        for b in range {
+            search_from(polygon, mesh, b, work, &mut out);
+        }
+        out
+    })
 }
 
 /// How many vertices one parallel task searches from (small polygons stay on one thread). Small

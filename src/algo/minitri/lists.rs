@@ -2,12 +2,12 @@
 //! the crossing components, many of them of one or two triangles, without an allocation each.
 
 /// Lists of indices, list after list.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Lists {
     /// The items of all lists, list after list.
     items: Vec<usize>,
-    /// Where each list starts in `items`, and where the last one ends (one entry more than
-    /// there are lists).
+    /// Where each list starts in `items`, then where the list being filled starts (so one entry
+    /// more than there are closed lists; never empty).
     starts: Vec<usize>,
 }
 
@@ -29,7 +29,7 @@ impl Lists {
 
     /// The number of items in the list being filled.
     pub fn open_len(&self) -> usize {
-        self.items.len() - self.starts.last().copied().unwrap_or(0)
+        self.items.len() - self.starts[self.len()]
     }
 
     /// Ends the list being filled; the next item starts a new one.
@@ -39,7 +39,7 @@ impl Lists {
 
     /// The number of lists closed.
     pub fn len(&self) -> usize {
-        self.starts.len().saturating_sub(1)
+        self.starts.len() - 1
     }
 
     /// Whether no list is closed.
