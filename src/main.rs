@@ -11,7 +11,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use minitri::batch::{
     discover, plan, run_document, run_tree, AtomicFile, Observer, Settings, Tally, TreeJob,
 };
-use std::io::{self, IsTerminal};
+use std::io::{self, IsTerminal, Write};
 use std::path::Path;
 use std::process::ExitCode;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -27,27 +27,70 @@ fn main() -> ExitCode {
             {
                 return ExitCode::SUCCESS;
             }
-            eprintln!("minitri: {err:#}");
+            say(&format!("{err:#}"));
             ExitCode::from(1)
         }
+    }
+}
+
+/// The most worker threads `--jobs` starts (more only cost memory and start-up time: 10,000
+/// threads took 39 s to start on a square).
+const MAX_JOBS: usize = 256;
+
+/// A line on standard error, `minitri: ` first. A failure to write it (standard error closed,
+/// full, a broken pipe) is ignored: diagnostics never stop a run or lose its result.
+fn say(line: &str) {
+    let _ = writeln!(io::stderr().lock(), "minitri: {line}");
+}
+
+/// Is standard output an open descriptor? (Rust's standard library silently discards what is
+/// written to a closed standard output, which would lose the result with exit status 0.)
+fn stdout_is_open() -> bool {
+    #[cfg(unix)]
+    {
+        use std::os::fd::AsFd;
+        io::stdout().as_fd().try_clone_to_owned().is_ok()
+    }
+    #[cfg(not(unix))]
+    {
+        true
     }
 }
 
 fn run() -> anyhow::Result<ExitCode> {
     let started = Instant::now();
     let flags = Flags::from_env();
+    let generating = flags.completions.is_some() || flags.man;
+    if generating && !stdout_is_open() {
+        anyhow::bail!("standard output is closed: nothing can be written");
+    }
     if shell::generate(&flags, &mut io::stdout().lock())? {
         return Ok(ExitCode::SUCCESS);
     }
-    let config = flags.into_config();
-    // Ctrl-C: remove the temporary files of outputs being written and stop (exit status 130, as
-    // a shell reports a process stopped by SIGINT); outputs already written stay, complete.
-    // Without the handler a temporary file could be left beside its target.
+    let mut config = flags.into_config();
+    // SIGINT (Ctrl-C), SIGTERM, SIGHUP: remove the temporary files of outputs being written and
+    // stop, with exit status 130 for all three (the handler is not told which signal came; 130
+    // is what a shell reports for SIGINT); outputs already written stay, complete. Without the
+    // handler a temporary file could be left beside its target.
     ctrlc::set_handler(|| {
-        eprintln!("minitri: interrupted");
+        say("interrupted");
         minitri::batch::exit_removing_temporaries(130)
     })
-    .context("cannot install the Ctrl-C handler")?;
+    .context("cannot install the signal handler")?;
+    if let Some(jobs) = config.jobs.filter(|&j| j > MAX_JOBS) {
+        if !config.quiet {
+            say(&format!(
+                "--jobs {jobs}: using {MAX_JOBS} threads, the most minitri starts"
+            ));
+        }
+        config.jobs = Some(MAX_JOBS);
+    }
+    if let Some(code) = refuse_overwriting_inputs(&config.inputs, config.output.as_deref()) {
+        return Ok(code);
+    }
+    if config.output.is_none() && !stdout_is_open() {
+        anyhow::bail!("standard output is closed: the result could not be written (give -o FILE)");
+    }
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(config.jobs.unwrap_or(0))
         .build()
@@ -58,14 +101,14 @@ fn run() -> anyhow::Result<ExitCode> {
         .filter(|out| is_tree(&config.inputs, out));
     if let Some(out) = out_dir {
         if config.inputs.iter().any(|p| p == Path::new("-")) {
-            eprintln!("minitri: standard input cannot be part of a batch written to a directory ({}); give its output file with -o, alone", out.display());
+            say(&format!("standard input cannot be part of a batch written to a directory ({}); give its output file with -o, alone", out.display()));
             return Ok(ExitCode::from(2));
         }
         if out.exists() && !out.is_dir() {
-            eprintln!(
-                "minitri: {} is not a directory: with a directory input or several inputs, -o names a directory",
+            say(&format!(
+                "{} is not a directory: with a directory input or several inputs, -o names a directory",
                 out.display()
-            );
+            ));
             return Ok(ExitCode::from(2));
         }
     }
@@ -113,15 +156,15 @@ fn run() -> anyhow::Result<ExitCode> {
                 file.commit()
                     .with_context(|| format!("cannot write {}", path.display()))?;
             } else if report.tally.solved == 0 {
-                eprintln!(
-                    "minitri: nothing triangulated; {} not written",
+                say(&format!(
+                    "nothing triangulated; {} not written",
                     path.display()
-                );
+                ));
             } else if !report.complete {
-                eprintln!(
-                    "minitri: an input could not be read to its end; {} not written",
+                say(&format!(
+                    "an input could not be read to its end; {} not written",
                     path.display()
-                );
+                ));
             } else {
                 file.commit()
                     .with_context(|| format!("cannot write {}", path.display()))?;
@@ -142,9 +185,30 @@ fn run() -> anyhow::Result<ExitCode> {
     let batch =
         out_dir.is_some() || config.inputs.len() > 1 || config.inputs.iter().any(|p| p.is_dir());
     if batch && !config.quiet {
-        eprintln!("minitri: {}", tally.summary(started.elapsed()));
+        say(&tally.summary(started.elapsed()).to_string());
     }
     Ok(exit_code(&tally))
+}
+
+/// Exit status 2 (with a message) when the output would overwrite an input: `-o` naming an input
+/// file (any spelling, a link, standard input redirected from it) or an input directory.
+fn refuse_overwriting_inputs(
+    inputs: &[std::path::PathBuf],
+    out: Option<&Path>,
+) -> Option<ExitCode> {
+    let out = out?;
+    let input = minitri::batch::input_that_is(inputs, out)?;
+    let what = if out.is_dir() { "directory" } else { "file" };
+    let input = if input == Path::new("-") {
+        "standard input".to_string()
+    } else {
+        input.display().to_string()
+    };
+    say(&format!(
+        "-o {}: the output {what} is the input {input}; it would be overwritten (choose another output)",
+        out.display()
+    ));
+    Some(ExitCode::from(2))
 }
 
 /// Does `-o out` name a directory mirroring the inputs (rather than one output file)?
@@ -201,6 +265,6 @@ impl Observer for Progress {
     }
 
     fn message(&self, line: &str) {
-        self.bar.suspend(|| eprintln!("minitri: {line}"));
+        self.bar.suspend(|| say(line));
     }
 }

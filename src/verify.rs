@@ -13,7 +13,10 @@
 //! 5. `triangles.len() == n + 2w - 2 - degenerate.len()`;
 //! 6. each listed degenerate triangle `[a, b, c]` has `b` strictly between `a` and `c`, the whole
 //!    segment `a c` lies on one side of some triangle (so `b` is a T-junction), and no two listed
-//!    degenerate triangles share their middle vertex (in particular none is listed twice).
+//!    degenerate triangles share their middle vertex (in particular none is listed twice);
+//! 7. the numbers reported beside the triangles hold: the flat vertices and the bounds
+//!    recounted, `ceil((n - f)/3) <= lower_bound <= count <= n + 2w - 2`, no lower bound beside
+//!    an optimal count ([`bounds`]).
 //!
 //! Otherwise `problems` holds human sentences (at most [`MAX_PROBLEMS`], then `... and N more`)
 //! naming triangles by position in their list (from 0) and by INPUT vertex numbers, and
@@ -114,6 +117,9 @@ pub fn check(polygon: &Polygon, t: &Triangulation) -> Check {
     check_triangles(polygon, t, &mut problems);
     check_chain(polygon, t, &mut problems);
     check_degenerate(polygon, t, &mut problems);
+    for problem in bounds::problems(polygon, t) {
+        problems.add(|| problem);
+    }
     problems.finish()
 }
 
@@ -467,6 +473,7 @@ fn check_degenerate(polygon: &Polygon, t: &Triangulation, problems: &mut Problem
     }
 }
 
+pub mod bounds;
 pub mod pseudo;
 #[cfg(test)]
 mod tests;

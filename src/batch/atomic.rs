@@ -5,9 +5,12 @@
 //! output, never a truncated one, whatever happens to the process. A temporary file
 //! `.NAME.minitri-PID-K.tmp` lives beside the target while it is written; it is removed when the
 //! output is abandoned (an error, or [`AtomicFile`] dropped without [`AtomicFile::commit`]) and
-//! on an interruption ([`exit_removing_temporaries`], which the binary calls on Ctrl-C); only a
-//! process killed outright (SIGKILL, a crash) can leave one behind (a rename is atomic on POSIX
-//! file systems).
+//! on an interruption ([`exit_removing_temporaries`], which the binary calls on SIGINT, SIGTERM
+//! and SIGHUP); only a process killed outright (SIGKILL, a crash) can leave one behind (a rename
+//! is atomic on POSIX file systems), and the next write into the same directory removes it (a
+//! temporary file of this form whose process is gone, [`remove_stale`]). The name is
+//! shortened to fit 255 bytes (`NAME` cut at a character boundary). A target that exists and is
+//! read-only is not replaced (an error: renaming over it would succeed on POSIX).
 //!
 //! Two exceptions: a target that is a device or a pipe (`/dev/stdout`, a FIFO) is written
 //! directly, like standard output (there is no file to replace; renaming over it would replace
@@ -91,12 +94,19 @@ impl AtomicFile {
             .parent()
             .filter(|d| !d.as_os_str().is_empty())
             .unwrap_or(Path::new("."));
+        if std::fs::metadata(target).is_ok_and(|m| m.permissions().readonly()) {
+            return Err(io::Error::new(
+                io::ErrorKind::PermissionDenied,
+                "the file is read-only; not replaced",
+            ));
+        }
+        remove_stale(dir);
         let name = target
             .file_name()
             .map(|n| n.to_string_lossy().into_owned())
             .unwrap_or_default();
         let k = NEXT.fetch_add(1, Ordering::Relaxed);
-        let temp = dir.join(format!(".{name}.minitri-{}-{k}.tmp", std::process::id()));
+        let temp = dir.join(temporary_name(&name, std::process::id(), k));
         let file = {
             let mut live = live();
             let file = File::create(&temp)?;
@@ -131,6 +141,79 @@ impl AtomicFile {
         forget(&mut live, &self.temp);
         self.temp = PathBuf::new(); // nothing left to remove
         Ok(())
+    }
+}
+
+/// The longest file name most file systems take, in bytes.
+const NAME_MAX: usize = 255;
+
+/// `.NAME.minitri-PID-K.tmp`, `NAME` shortened (at a character boundary) to fit [`NAME_MAX`].
+fn temporary_name(name: &str, pid: u32, k: usize) -> String {
+    let tail = format!(".minitri-{pid}-{k}.tmp");
+    let room = NAME_MAX - 1 - tail.len();
+    let mut cut = name.len().min(room);
+    while !name.is_char_boundary(cut) {
+        cut -= 1;
+    }
+    format!(".{}{tail}", &name[..cut])
+}
+
+/// The process that made a temporary file of this module's form, if the name is one.
+fn temporary_owner(name: &str) -> Option<u32> {
+    let rest = name.strip_prefix('.')?.strip_suffix(".tmp")?;
+    let (_, numbers) = rest.rsplit_once(".minitri-")?;
+    let (pid, k) = numbers.split_once('-')?;
+    k.parse::<usize>().ok()?;
+    pid.parse().ok()
+}
+
+/// Is process `pid` still running? (Linux: its `/proc` entry; elsewhere assumed running unless
+/// the file is more than a day old, see [`remove_stale`].)
+fn running(pid: u32) -> Option<bool> {
+    if cfg!(target_os = "linux") {
+        Some(Path::new("/proc").join(pid.to_string()).exists())
+    } else {
+        None
+    }
+}
+
+/// Directories already cleaned by this process.
+static CLEANED: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+/// Removes, once per directory and process, the temporary files left in `dir` by a process
+/// killed outright: names of the form `.NAME.minitri-PID-K.tmp` whose process is gone (on
+/// Linux; elsewhere, those more than a day old). Errors are ignored: cleaning is a courtesy.
+pub fn remove_stale(dir: &Path) {
+    let key = std::path::absolute(dir).unwrap_or_else(|_| dir.to_path_buf());
+    {
+        let mut cleaned = CLEANED
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
+        if cleaned.contains(&key) {
+            return;
+        }
+        cleaned.push(key);
+    }
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return;
+    };
+    let me = std::process::id();
+    for entry in entries.flatten() {
+        let name = entry.file_name();
+        let Some(pid) = name.to_str().and_then(temporary_owner) else {
+            continue;
+        };
+        let stale = pid != me
+            && match running(pid) {
+                Some(alive) => !alive,
+                None => entry
+                    .metadata()
+                    .and_then(|m| m.modified())
+                    .is_ok_and(|t| t.elapsed().is_ok_and(|a| a.as_secs() > 86_400)),
+            };
+        if stale && entry.file_type().is_ok_and(|t| t.is_file()) {
+            let _ = std::fs::remove_file(entry.path());
+        }
     }
 }
 
@@ -215,6 +298,30 @@ mod tests {
             4,
             "no temporary file"
         );
+    }
+
+    #[test]
+    fn temporary_names_fit_255_bytes_and_are_recognised() {
+        let long = "é".repeat(126) + ".json"; // 257 bytes
+        let name = temporary_name(&long, 4_000_000, 12);
+        assert!(name.len() <= 255, "{}", name.len());
+        assert_eq!(temporary_owner(&name), Some(4_000_000));
+        assert_eq!(temporary_owner(".a.json.minitri-12-3.tmp"), Some(12));
+        assert_eq!(temporary_owner("a.json"), None);
+        assert_eq!(temporary_owner(".a.minitri-x-3.tmp"), None);
+    }
+
+    #[test]
+    fn a_read_only_target_is_not_replaced() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("ro.json");
+        std::fs::write(&path, "old").unwrap();
+        let mut perms = std::fs::metadata(&path).unwrap().permissions();
+        perms.set_readonly(true);
+        std::fs::set_permissions(&path, perms).unwrap();
+        let e = write_atomically(&path, |out| out.write_all(b"new")).unwrap_err();
+        assert_eq!(e.kind(), io::ErrorKind::PermissionDenied);
+        assert_eq!(std::fs::read_to_string(&path).unwrap(), "old");
     }
 
     #[test]

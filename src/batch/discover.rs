@@ -8,7 +8,6 @@
 //! Complexity: linear in the number of directory entries, plus the sort.
 
 use std::fs;
-use std::io;
 use std::path::{Path, PathBuf};
 
 /// File extensions read from a directory (lowercase): every input format's.
@@ -50,6 +49,11 @@ pub struct Unreadable {
 /// Expands `paths` into input files (see the module docs). Directories equal to `skip` (the
 /// output directory, so that a second run does not read the first run's outputs) are not entered.
 ///
+/// Directories are walked with `walkdir`, following links to directories but never around a
+/// loop (a link to a directory above it is reported, not followed again). Only regular files
+/// are read from a walk: a FIFO (which would block the run), a socket or a device found there
+/// is skipped and reported as an [`Unreadable`] entry; a FIFO named on the command line is read.
+///
 /// # Examples
 /// ```
 /// use minitri::batch::discover;
@@ -64,19 +68,15 @@ pub fn discover(paths: &[PathBuf], skip: Option<&Path>) -> Vec<Result<Input, Unr
     let mut out = Vec::new();
     for path in paths {
         if path.is_dir() {
-            let mut files = Vec::new();
-            if let Err(e) = walk(path, skip.as_deref(), &mut files) {
-                out.push(Err(Unreadable {
-                    name: path.display().to_string(),
-                    message: format!("cannot read: {e}"),
-                }));
-            }
-            files.sort();
-            out.extend(files.into_iter().map(|file| {
-                let relative = file.strip_prefix(path).unwrap_or(&file).to_path_buf();
-                Ok(Input {
-                    path: file,
-                    relative,
+            let mut found = walk(path, skip.as_deref());
+            found.sort_by(|a, b| a.0.cmp(&b.0));
+            out.extend(found.into_iter().map(|(file, entry)| {
+                entry.map(|()| {
+                    let relative = file.strip_prefix(path).unwrap_or(&file).to_path_buf();
+                    Input {
+                        path: file,
+                        relative,
+                    }
                 })
             }));
         } else {
@@ -90,22 +90,71 @@ pub fn discover(paths: &[PathBuf], skip: Option<&Path>) -> Vec<Result<Input, Unr
     out
 }
 
-/// Every file below `dir` with a known extension, not entering `skip`.
-fn walk(dir: &Path, skip: Option<&Path>, files: &mut Vec<PathBuf>) -> io::Result<()> {
-    if skip.is_some_and(|s| fs::canonicalize(dir).is_ok_and(|d| d == s)) {
-        return Ok(());
-    }
-    for entry in fs::read_dir(dir)? {
-        let path = entry?.path();
-        if path.is_dir() {
-            walk(&path, skip, files)?;
-        } else if path
+/// Every file below `dir` with a known extension, not entering `skip`; with the entries that
+/// cannot be read or are skipped (special files, link loops), each with its reason.
+fn walk(dir: &Path, skip: Option<&Path>) -> Vec<(PathBuf, Result<(), Unreadable>)> {
+    let mut found = Vec::new();
+    let unreadable = |path: &Path, message: String| {
+        let name = path.display().to_string();
+        (path.to_path_buf(), Err(Unreadable { name, message }))
+    };
+    let mut entries = walkdir::WalkDir::new(dir).follow_links(true).into_iter();
+    while let Some(entry) = entries.next() {
+        let entry = match entry {
+            Ok(entry) => entry,
+            Err(e) => {
+                let path = e.path().unwrap_or(dir).to_path_buf();
+                let message = match (e.loop_ancestor(), e.io_error()) {
+                    (Some(ancestor), _) => format!(
+                        "skipped: a link back to {} (a directory loop)",
+                        ancestor.display()
+                    ),
+                    (None, Some(io)) => format!("cannot read: {io}"),
+                    (None, None) => format!("cannot read: {e}"),
+                };
+                found.push(unreadable(&path, message));
+                continue;
+            }
+        };
+        let kind = entry.file_type();
+        if kind.is_dir() {
+            if skip.is_some_and(|s| fs::canonicalize(entry.path()).is_ok_and(|d| d == s)) {
+                entries.skip_current_dir();
+            }
+            continue;
+        }
+        let known = entry
+            .path()
             .extension()
             .and_then(|e| e.to_str())
-            .is_some_and(|e| EXTENSIONS.contains(&e.to_ascii_lowercase().as_str()))
-        {
-            files.push(path);
+            .is_some_and(|e| EXTENSIONS.contains(&e.to_ascii_lowercase().as_str()));
+        if !known {
+            continue;
+        }
+        if kind.is_file() {
+            found.push((entry.path().to_path_buf(), Ok(())));
+        } else {
+            let what = special_kind(&kind);
+            let message = format!("skipped: {what}, not a regular file (name it to read it)");
+            found.push(unreadable(entry.path(), message));
         }
     }
-    Ok(())
+    found
+}
+
+/// What a file that is neither a regular file nor a directory is, in words.
+fn special_kind(kind: &fs::FileType) -> &'static str {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt;
+        if kind.is_fifo() {
+            return "a FIFO";
+        } else if kind.is_socket() {
+            return "a socket";
+        } else if kind.is_block_device() || kind.is_char_device() {
+            return "a device";
+        }
+    }
+    let _ = kind;
+    "a special file"
 }

@@ -14,12 +14,14 @@
 
 mod atomic;
 mod discover;
+mod guard;
 mod plan;
 pub mod run;
 mod tally;
 
 pub use atomic::{exit_removing_temporaries, write_atomically, AtomicFile};
 pub use discover::{discover, Input, Unreadable, EXTENSIONS};
+pub use guard::{input_that_is, same_file};
 pub use plan::plan;
 pub use run::{run_document, run_tree, DocumentReport, Observer, Settings, Silent, TreeJob};
 pub use tally::{Summary, Tally};

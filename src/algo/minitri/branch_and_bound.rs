@@ -39,6 +39,20 @@ pub struct Found {
 /// A maximum independent set of the graph given by its adjacency lists (symmetric, no loops),
 /// searched until `deadline` (none: until done).
 pub fn maximum_independent_set(adjacent: &[Vec<usize>], deadline: Option<Instant>) -> Found {
+    let labels: Vec<usize> = (0..adjacent.len()).collect();
+    maximum_independent_set_labelled(adjacent, &labels, deadline)
+}
+
+/// [`maximum_independent_set`] with a known clique cover: vertices with the same `labels[v]`
+/// are pairwise adjacent (for minimally degenerate triangles, those sharing their middle
+/// vertex), so a component holding `m` distinct labels has no independent set above `m`. The
+/// upper bound of a component not solved exactly is capped by it (it was not, and a search cut
+/// short on a large component could report more than the component's number of middles).
+pub fn maximum_independent_set_labelled(
+    adjacent: &[Vec<usize>],
+    labels: &[usize],
+    deadline: Option<Instant>,
+) -> Found {
     let mut components = components(adjacent);
     components.sort_by_key(Vec::len);
     let mut found = Found {
@@ -53,8 +67,11 @@ pub fn maximum_independent_set(adjacent: &[Vec<usize>], deadline: Option<Instant
             continue;
         }
         let (set, bound, optimal) = solve_component(adjacent, &component, deadline);
+        let mut distinct: Vec<usize> = component.iter().map(|&v| labels[v]).collect();
+        distinct.sort_unstable();
+        distinct.dedup();
+        found.upper_bound += bound.min(distinct.len()).max(set.len());
         found.set.extend(set);
-        found.upper_bound += bound;
         found.optimal &= optimal;
     }
     found.set.sort_unstable();

@@ -102,17 +102,30 @@ pub fn triangulate_general(
 ) -> Result<Triangulation, TriangulateError> {
     let (mdts, base) = degenerate::minimally_degenerate_and_mesh(polygon);
     let graph = dependency::graph(polygon, &mdts);
-    let found = branch_and_bound::maximum_independent_set(&graph, deadline);
+    let middles: Vec<usize> = mdts.iter().map(|m| m.b).collect();
+    let found = branch_and_bound::maximum_independent_set_labelled(&graph, &middles, deadline);
     let chosen: Vec<degenerate::Degenerate> = found.set.iter().map(|&t| mdts[t]).collect();
-    let plain_count = base.len();
     let triangles = cut::triangulate_with_cuts(polygon, base, &chosen)?;
+    let lower = lower_bound(polygon, found.upper_bound);
+    // A search cut short whose bound meets its count has found the minimum all the same.
+    let optimal = found.optimal || lower >= triangles.len();
     Ok(Triangulation {
         algorithm: Algorithm::Minitri,
         triangles,
         degenerate: chosen.iter().map(|m| [m.a, m.b, m.c]).collect(),
-        optimal: found.optimal,
-        lower_bound: (!found.optimal).then(|| plain_count - found.upper_bound),
+        optimal,
+        lower_bound: (!optimal).then_some(lower),
     })
+}
+
+/// The proved lower bound on the minimum from an upper bound `d_upper` on the number of
+/// mutually independent minimally degenerate triangles: `n + 2w - 2 - d_upper`, never below
+/// `ceil((n - f) / 3)` (every vertex but a flat one is a corner of a triangle). No subtraction
+/// can wrap: `d_upper` is at most the number of distinct middle vertices (each component's bound
+/// is capped by its middles), which is below `n`, and the subtraction saturates all the same.
+fn lower_bound(polygon: &Polygon, d_upper: usize) -> usize {
+    let (corners, plain) = polygon.minimum_bounds();
+    plain.saturating_sub(d_upper).max(corners)
 }
 
 #[cfg(test)]

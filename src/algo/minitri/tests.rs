@@ -891,3 +891,54 @@ fn small_component_search_agrees_with_the_scans_on_random_circles() {
         "only {over_budget} components over the budget"
     );
 }
+
+/// A square with a `k` x `m` grid of tiny triangular holes (issue 24): thousands of minimally
+/// degenerate triangles between aligned hole vertices, one large dependency component.
+pub(crate) fn hole_grid(k: i64, m: i64) -> Polygon {
+    let (w, h) = (10 * k + 10, 10 * m + 10);
+    let mut rings: Vec<Vec<(i64, i64)>> = vec![vec![(0, 0), (w, 0), (w, h), (0, h)]];
+    for i in 0..k {
+        for j in 0..m {
+            let (x, y) = (10 + 10 * i, 10 + 10 * j);
+            rings.push(vec![(x, y), (x, y + 1), (x + 1, y)]);
+        }
+    }
+    let refs: Vec<&[(i64, i64)]> = rings.iter().map(Vec::as_slice).collect();
+    polygon(&refs)
+}
+
+/// Issue 24, item 1: a 15 x 15 grid of holes reported `lower_bound` 18446744073709550335 (the
+/// upper bound on the independent set above n + 2w - 2, subtracted without a check; a debug
+/// build panicked). The bound is now capped by the middles and checked by the verifier.
+#[test]
+fn a_search_cut_short_on_a_grid_of_holes_reports_a_true_lower_bound() {
+    let p = hole_grid(15, 15);
+    let (corners, plain) = p.minimum_bounds();
+    let t = super::triangulate_general(&p, Some(std::time::Instant::now())).unwrap();
+    let check = crate::verify::check(&p, &t);
+    assert!(check.valid, "{:?}", check.problems);
+    assert!(!t.optimal);
+    let lower = t.lower_bound.expect("a search cut short has a lower bound");
+    assert!(corners <= lower && lower <= t.triangles.len() && t.triangles.len() <= plain);
+    // Each of the 675 hole vertices is reflex, the 4 corners convex: at most 675 middles.
+    assert!(lower >= plain - 675, "{lower}");
+}
+
+/// The verifier rejects an impossible lower bound (the number of issue 24) and one beside an
+/// optimal count.
+#[test]
+fn the_verifier_checks_the_lower_bound() {
+    let p = hole_grid(2, 2);
+    let mut t = super::triangulate_general(&p, None).unwrap();
+    assert!(t.optimal && t.lower_bound.is_none());
+    assert!(crate::verify::check(&p, &t).valid);
+    t.lower_bound = Some(t.triangles.len());
+    let problems = crate::verify::check(&p, &t).problems;
+    assert!(problems[0].contains("claimed optimal"), "{problems:?}");
+    t.optimal = false;
+    t.lower_bound = Some(18_446_744_073_709_550_335);
+    let problems = crate::verify::check(&p, &t).problems;
+    assert!(problems[0].starts_with("the lower bound 18446744073709550335 is outside"));
+    t.lower_bound = Some(t.triangles.len());
+    assert!(crate::verify::check(&p, &t).valid);
+}

@@ -1,0 +1,61 @@
+//! Guards against writing over what a run reads: an output that is an input (any spelling, a
+//! link, standard input redirected from it), an output directory that is an input directory.
+//!
+//! Files are compared by device and inode number from their metadata (`stat`, which follows
+//! links and never opens the file, so a FIFO is not blocked on); where the platform has no
+//! inode numbers, by their canonical paths. Complexity: one `stat` per input.
+
+use std::path::{Path, PathBuf};
+
+/// Do `a` and `b` name the same existing file or directory?
+pub fn same_file(a: &Path, b: &Path) -> bool {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        match (std::fs::metadata(a), std::fs::metadata(b)) {
+            (Ok(a), Ok(b)) => a.dev() == b.dev() && a.ino() == b.ino(),
+            _ => false,
+        }
+    }
+    #[cfg(not(unix))]
+    {
+        match (std::fs::canonicalize(a), std::fs::canonicalize(b)) {
+            (Ok(a), Ok(b)) => a == b,
+            _ => false,
+        }
+    }
+}
+
+/// The first input that is `output` itself (`-` standing for standard input, when it is
+/// redirected from a file: `/dev/stdin` is compared).
+pub fn input_that_is<'a>(inputs: &'a [PathBuf], output: &Path) -> Option<&'a Path> {
+    inputs.iter().map(PathBuf::as_path).find(|input| {
+        if *input == Path::new("-") {
+            cfg!(unix) && same_file(Path::new("/dev/stdin"), output)
+        } else {
+            same_file(input, output)
+        }
+    })
+}
+
+#[cfg(all(test, unix))]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn spellings_and_links_of_one_file_are_the_same() {
+        let dir = tempfile::tempdir().unwrap();
+        let a = dir.path().join("a.wkt");
+        std::fs::write(&a, "x").unwrap();
+        std::fs::create_dir(dir.path().join("d")).unwrap();
+        let spelled = dir.path().join("d/../a.wkt");
+        let link = dir.path().join("l.wkt");
+        std::os::unix::fs::symlink(&a, &link).unwrap();
+        assert!(same_file(&a, &spelled) && same_file(&a, &link));
+        assert!(!same_file(&a, &dir.path().join("missing.wkt")));
+        assert!(!same_file(&a, &dir.path().join("d")));
+        let inputs = vec![PathBuf::from("-"), a.clone()];
+        assert_eq!(input_that_is(&inputs, &link), Some(a.as_path()));
+        assert_eq!(input_that_is(&inputs, &dir.path().join("b.json")), None);
+    }
+}
