@@ -43,18 +43,33 @@ fn say(line: &str) {
     let _ = writeln!(io::stderr().lock(), "minitri: {line}");
 }
 
-/// Is standard output an open descriptor? (Rust's standard library silently discards what is
-/// written to a closed standard output, which would lose the result with exit status 0.)
+/// Is standard output an open descriptor? A program started with it closed (`>&-`) finds it
+/// reopened on `/dev/null` by Rust's start-up code, read-write, which would lose the result with
+/// exit status 0; a shell's `> /dev/null` opens it write-only. So on Linux, descriptor 1 open
+/// read-write on `/dev/null` counts as closed (as does a descriptor that cannot be duplicated).
 fn stdout_is_open() -> bool {
     #[cfg(unix)]
     {
         use std::os::fd::AsFd;
-        io::stdout().as_fd().try_clone_to_owned().is_ok()
+        if io::stdout().as_fd().try_clone_to_owned().is_err() {
+            return false;
+        }
     }
-    #[cfg(not(unix))]
+    #[cfg(target_os = "linux")]
     {
-        true
+        let on_null =
+            std::fs::read_link("/proc/self/fd/1").is_ok_and(|t| t == Path::new("/dev/null"));
+        let read_write = std::fs::read_to_string("/proc/self/fdinfo/1").is_ok_and(|info| {
+            info.lines()
+                .find_map(|l| l.strip_prefix("flags:"))
+                .and_then(|f| u32::from_str_radix(f.trim(), 8).ok())
+                .is_some_and(|flags| flags & 3 == 2) // O_ACCMODE, O_RDWR
+        });
+        if on_null && read_write {
+            return false;
+        }
     }
+    true
 }
 
 fn run() -> anyhow::Result<ExitCode> {

@@ -465,23 +465,14 @@ fn read_input(input: &Input, from: Option<Format>, chunker: &mut Chunker) -> io:
         }
         return stream_geojson(&source, reader, chunker);
     }
-    // Room for the whole file at once: growing by doubling would hold two copies at a time.
-    // (A size the allocator refuses is not reserved: reading then fails or succeeds on its own.)
-    let mut bytes = Vec::new();
-    if !input.is_stdin() {
-        if let Ok(metadata) = std::fs::metadata(&input.path) {
-            let _ = bytes.try_reserve_exact(usize::try_from(metadata.len()).unwrap_or(0) + 1);
-        }
-    }
-    if let Err(e) = reader.read_to_end(&mut bytes) {
-        return failed(chunker, Error::Read(e.to_string()));
-    }
-    if let Some(error) = read::not_text(&bytes, true) {
-        return failed(chunker, Error::Parse(error));
-    }
-    let text = match String::from_utf8(bytes) {
+    // Read chunk by chunk, stopping at the first byte that cannot be text (io/read/limits.rs).
+    let size = (!input.is_stdin())
+        .then(|| std::fs::metadata(&input.path).map(|m| m.len()).ok())
+        .flatten();
+    let text = match read::limits::read_text(reader, read::limits::MAX_TEXT, size.unwrap_or(0)) {
         Ok(text) => text,
-        Err(e) => return failed(chunker, Error::Read(e.to_string())), // ruled out just above
+        Err(read::limits::NotRead::Io(e)) => return failed(chunker, Error::Read(e.to_string())),
+        Err(read::limits::NotRead::Parse(e)) => return failed(chunker, Error::Parse(e)),
     };
     let format = format.unwrap_or_else(|| read::detect(extension, &text));
     if format == Format::GeoJson {

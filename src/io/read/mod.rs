@@ -20,6 +20,7 @@ use std::fmt;
 pub mod geojson;
 mod geojson_seed;
 pub mod geojson_stream;
+pub mod limits;
 pub mod vertices;
 pub mod wkt;
 
@@ -148,7 +149,7 @@ pub fn detect_start(extension: Option<&str>, start: &str) -> Option<Format> {
     let meaningful = || {
         start
             .lines()
-            .map(str::trim_start)
+            .map(trim_start)
             .any(|l| !l.is_empty() && !l.starts_with('#'))
     };
     by_extension(extension).or_else(|| meaningful().then(|| detect_content(start)))
@@ -164,12 +165,18 @@ fn by_extension(extension: Option<&str>) -> Option<Format> {
     }
 }
 
+/// A line without its leading blanks and byte-order marks (a file may start with one, and the
+/// format is then decided by what follows it).
+fn trim_start(line: &str) -> &str {
+    line.trim_start_matches(|c: char| c.is_whitespace() || c == '\u{feff}')
+}
+
 /// Decides the format from the first meaningful character: `{`/`[` is GeoJSON, a letter is WKT,
 /// anything else (digits, signs, `#` comments) is a vertex list.
 fn detect_content(text: &str) -> Format {
     let first = text
         .lines()
-        .map(str::trim_start)
+        .map(trim_start)
         .find(|l| !l.is_empty() && !l.starts_with('#'))
         .and_then(|l| l.chars().next());
     match first {
