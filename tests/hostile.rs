@@ -1,0 +1,455 @@
+//! Hostile environments (issue 24), through the binary: outputs naming inputs, unwritable
+//! standard streams, FIFOs, link loops, long names, read-only outputs, stale temporaries,
+//! signals, endless inputs; and the fault injection of the batch writer (kills at random
+//! points). Unix only (FIFOs, signals, `/dev/full`).
+#![cfg(unix)]
+
+use std::fs;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
+
+const U_SHAPE: &str = "POLYGON ((3 2, 4 2, 5 2, 6 2, 6 3, 6 4, 5 4, 5 3, 4 3, 4 4, 3 4, 3 3, 3 2))";
+
+fn bin() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_minitri"))
+}
+
+/// Runs to the end in `dir`: (code or 128 + signal, stdout, stderr).
+fn run_in(dir: &Path, args: &[&str]) -> (i32, String, String) {
+    let out = bin().current_dir(dir).args(args).output().unwrap();
+    (code(out.status), text(&out.stdout), text(&out.stderr))
+}
+
+fn code(status: std::process::ExitStatus) -> i32 {
+    use std::os::unix::process::ExitStatusExt;
+    status
+        .code()
+        .unwrap_or_else(|| 128 + status.signal().unwrap_or(0))
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+/// Waits for `child` at most `limit`; kills it and fails the test past that (a hang).
+fn wait_at_most(mut child: Child, limit: Duration) -> i32 {
+    let start = Instant::now();
+    loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            return code(status);
+        }
+        if start.elapsed() > limit {
+            let _ = child.kill();
+            panic!("still running after {limit:?}: a hang");
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    }
+}
+
+fn signal(child: &Child, name: &str) {
+    let pid = child.id().to_string();
+    assert!(Command::new("kill")
+        .args([&format!("-{name}"), &pid])
+        .status()
+        .unwrap()
+        .success());
+}
+
+fn mkfifo(path: &Path) {
+    assert!(Command::new("mkfifo").arg(path).status().unwrap().success());
+}
+
+/// Temporary files (`.NAME.minitri-PID-K.tmp`) below `dir`.
+fn temporaries(dir: &Path) -> Vec<PathBuf> {
+    let mut out = Vec::new();
+    if let Ok(entries) = fs::read_dir(dir) {
+        for entry in entries.flatten() {
+            let path = entry.path();
+            if path.is_dir() {
+                out.extend(temporaries(&path));
+            } else if path.to_string_lossy().ends_with(".tmp") {
+                out.push(path);
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn an_output_naming_an_input_is_refused_in_any_spelling() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    fs::write(dir.join("a.wkt"), U_SHAPE).unwrap();
+    fs::create_dir(dir.join("d")).unwrap();
+    std::os::unix::fs::symlink("a.wkt", dir.join("l.wkt")).unwrap();
+    for out in ["a.wkt", "./a.wkt", "d/../a.wkt", "l.wkt"] {
+        let (code, _, err) = run_in(dir, &["a.wkt", "-o", out]);
+        assert_eq!(code, 2, "-o {out}: {err}");
+        assert!(err.contains("is the input a.wkt"), "{err}");
+    }
+    // Standard input redirected from the file named by -o.
+    let out = bin()
+        .current_dir(dir)
+        .args(["-o", "a.wkt"])
+        .stdin(fs::File::open(dir.join("a.wkt")).unwrap())
+        .output()
+        .unwrap();
+    assert_eq!(code(out.status), 2, "{}", text(&out.stderr));
+    assert_eq!(fs::read_to_string(dir.join("a.wkt")).unwrap(), U_SHAPE);
+    // An output directory that is the input directory, through another spelling or a link.
+    fs::write(dir.join("d/b.wkt"), U_SHAPE).unwrap();
+    std::os::unix::fs::symlink("d", dir.join("e")).unwrap();
+    for out in ["./d/", "e"] {
+        let (code, _, err) = run_in(dir, &["d", "-o", out]);
+        assert_eq!(code, 2, "-o {out}: {err}");
+        assert!(err.contains("the output directory is the input d"), "{err}");
+    }
+}
+
+#[test]
+fn diagnostics_that_cannot_be_written_lose_nothing() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    // A dropped duplicate vertex: a warning on standard error.
+    fs::write(dir.join("a.wkt"), "POLYGON ((0 0, 4 0, 4 0, 0 4))").unwrap();
+    let full = fs::OpenOptions::new()
+        .write(true)
+        .open("/dev/full")
+        .unwrap();
+    let out = bin()
+        .current_dir(dir)
+        .args(["a.wkt", "-o", "x.json"])
+        .stderr(full)
+        .output()
+        .unwrap();
+    assert_eq!(code(out.status), 0);
+    assert!(fs::read_to_string(dir.join("x.json"))
+        .unwrap()
+        .contains("\"triangle_count\": 1"));
+    // Standard error a pipe closed before anything is written.
+    let mut child = bin()
+        .current_dir(dir)
+        .args(["a.wkt", "-o", "y.json"])
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stderr.take());
+    assert_eq!(wait_at_most(child, Duration::from_secs(30)), 0);
+    assert!(dir.join("y.json").is_file());
+}
+
+#[test]
+fn a_result_that_cannot_be_written_is_exit_1() {
+    let tmp = tempfile::tempdir().unwrap();
+    fs::write(tmp.path().join("a.wkt"), U_SHAPE).unwrap();
+    let closed = Command::new("sh")
+        .current_dir(tmp.path())
+        .args(["-c", "\"$0\" a.wkt >&-", env!("CARGO_BIN_EXE_minitri")])
+        .output()
+        .unwrap();
+    assert_eq!(code(closed.status), 1);
+    assert!(text(&closed.stderr).contains("standard output is closed"));
+    let full = fs::OpenOptions::new()
+        .write(true)
+        .open("/dev/full")
+        .unwrap();
+    let out = bin()
+        .current_dir(tmp.path())
+        .arg("a.wkt")
+        .stdout(full)
+        .output()
+        .unwrap();
+    assert_eq!(code(out.status), 1);
+    assert!(text(&out.stderr).contains("cannot write to standard output"));
+    // `> /dev/null` is a choice, not a closed descriptor.
+    let null = fs::OpenOptions::new()
+        .write(true)
+        .open("/dev/null")
+        .unwrap();
+    let out = bin()
+        .current_dir(tmp.path())
+        .arg("a.wkt")
+        .stdout(null)
+        .output()
+        .unwrap();
+    assert_eq!(code(out.status), 0);
+}
+
+#[test]
+fn a_fifo_in_a_directory_is_skipped_and_one_named_is_read() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    fs::create_dir(dir.join("in")).unwrap();
+    fs::write(dir.join("in/a.wkt"), U_SHAPE).unwrap();
+    mkfifo(&dir.join("in/p.wkt"));
+    let child = bin()
+        .current_dir(dir)
+        .args(["in", "-o", "out"])
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let output = child.wait_with_output().unwrap(); // a hang would stop the test here
+    let err = text(&output.stderr);
+    assert_eq!(code(output.status), 1, "{err}");
+    assert!(
+        err.contains("in/p.wkt: skipped: a FIFO, not a regular file"),
+        "{err}"
+    );
+    assert!(dir.join("out/a.json").is_file());
+    // Named on the command line, a FIFO is read.
+    let fifo = dir.join("in/p.wkt");
+    let writer = std::thread::spawn(move || {
+        let mut f = fs::OpenOptions::new().write(true).open(fifo).unwrap();
+        f.write_all(U_SHAPE.as_bytes()).unwrap();
+    });
+    let (code, out, err) = run_in(dir, &["in/p.wkt"]);
+    writer.join().unwrap();
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("\"triangle_count\": 5"));
+}
+
+#[test]
+fn a_directory_loop_is_walked_once() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    fs::create_dir_all(dir.join("root/d")).unwrap();
+    fs::write(dir.join("root/d/a.wkt"), U_SHAPE).unwrap();
+    std::os::unix::fs::symlink("..", dir.join("root/d/up")).unwrap();
+    let (code, _, err) = run_in(dir, &["root", "-o", "out"]);
+    assert!(err.contains("(a directory loop)"), "{err}");
+    assert_eq!(code, 1, "the loop is reported as a skipped entry: {err}");
+    // d/a.wkt only: d/up leads back to root, an ancestor, and is not followed (not 40 levels).
+    let mut count = 0;
+    let mut stack = vec![dir.join("out")];
+    while let Some(d) = stack.pop() {
+        for e in fs::read_dir(d).unwrap().flatten() {
+            if e.path().is_dir() {
+                stack.push(e.path());
+            } else {
+                count += 1;
+            }
+        }
+    }
+    assert_eq!(count, 1);
+}
+
+#[test]
+fn too_many_jobs_are_capped_with_a_message() {
+    let tmp = tempfile::tempdir().unwrap();
+    fs::write(tmp.path().join("a.wkt"), U_SHAPE).unwrap();
+    let child = bin()
+        .current_dir(tmp.path())
+        .args(["a.wkt", "--jobs", "100000"])
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(code(out.status), 0);
+    assert!(text(&out.stderr).contains("--jobs 100000: using 256 threads"));
+}
+
+#[test]
+fn long_names_read_only_outputs_and_stale_temporaries() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    let long = format!("{}.wkt", "a".repeat(250)); // its output: 251 bytes, its temporary more
+    fs::create_dir(dir.join("in")).unwrap();
+    fs::write(dir.join("in").join(&long), U_SHAPE).unwrap();
+    fs::create_dir(dir.join("out")).unwrap();
+    // Left by a run killed outright (no such process: pid_max is at most 2^22).
+    let stale = dir.join("out/.x.json.minitri-99999999-0.tmp");
+    fs::write(&stale, "partial").unwrap();
+    let (code, _, err) = run_in(dir, &["in", "-o", "out"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(dir
+        .join("out")
+        .join(format!("{}.json", "a".repeat(250)))
+        .is_file());
+    assert!(!stale.exists(), "the stale temporary is removed");
+    // A read-only output file is not replaced.
+    let ro = dir.join("ro.json");
+    fs::write(&ro, "kept").unwrap();
+    let mut perms = fs::metadata(&ro).unwrap().permissions();
+    perms.set_readonly(true);
+    fs::set_permissions(&ro, perms).unwrap();
+    fs::write(dir.join("a.wkt"), U_SHAPE).unwrap();
+    let (code, _, err) = run_in(dir, &["a.wkt", "-o", "ro.json"]);
+    assert_eq!(code, 1, "{err}");
+    assert!(err.contains("read-only"), "{err}");
+    assert_eq!(fs::read_to_string(&ro).unwrap(), "kept");
+}
+
+/// A square with a `k` x `k` grid of tiny triangular holes, as WKT (slow to search).
+fn hole_grid(k: i64) -> String {
+    let w = 10 * k + 10;
+    let mut rings = vec![format!("(0 0, {w} 0, {w} {w}, 0 {w}, 0 0)")];
+    for i in 0..k {
+        for j in 0..k {
+            let (x, y) = (10 + 10 * i, 10 + 10 * j);
+            rings.push(format!("({x} {y}, {x} {}, {} {y}, {x} {y})", y + 1, x + 1));
+        }
+    }
+    format!("POLYGON ({})", rings.join(", "))
+}
+
+#[test]
+fn sigterm_and_sighup_remove_the_temporary_files() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    fs::write(dir.join("h.wkt"), hole_grid(15)).unwrap();
+    for name in ["TERM", "HUP", "INT"] {
+        let child = bin()
+            .current_dir(dir)
+            .args(["h.wkt", "--time-limit", "30", "-o", "x.json"])
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap();
+        // The temporary file exists from the start (it is created before reading).
+        let start = Instant::now();
+        while temporaries(dir).is_empty() && start.elapsed() < Duration::from_secs(20) {
+            std::thread::sleep(Duration::from_millis(10));
+        }
+        assert!(!temporaries(dir).is_empty());
+        signal(&child, name);
+        assert_eq!(
+            wait_at_most(child, Duration::from_secs(30)),
+            130,
+            "SIG{name}"
+        );
+        assert!(
+            temporaries(dir).is_empty(),
+            "SIG{name}: {:?}",
+            temporaries(dir)
+        );
+        assert!(!dir.join("x.json").exists());
+    }
+}
+
+#[test]
+fn endless_and_binary_inputs_fail_at_once() {
+    let started = Instant::now();
+    let (code, _, err) = run_in(Path::new("/"), &["/dev/zero"]);
+    assert_eq!(code, 1);
+    assert!(err.contains("/dev/zero: line 1, column 1: binary data, not text (a NUL byte)"));
+    let urandom = fs::File::open("/dev/urandom").unwrap();
+    let out = bin().stdin(urandom).output().unwrap();
+    assert_eq!(code_of(&out), 1);
+    assert!(
+        started.elapsed() < Duration::from_secs(60),
+        "no endless read"
+    );
+    // A byte-order mark before a sniffed format (standard input, no extension).
+    let mut child = bin()
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut stdin = child.stdin.take().unwrap();
+    stdin
+        .write_all(b"\xef\xbb\xbfPOLYGON ((0 0, 1 0, 0 1))")
+        .unwrap();
+    drop(stdin);
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(code_of(&out), 0);
+    assert!(text(&out.stdout).contains("\"triangle_count\": 1"));
+}
+
+fn code_of(out: &std::process::Output) -> i32 {
+    code(out.status)
+}
+
+#[test]
+fn a_search_cut_short_reports_a_verified_lower_bound() {
+    let tmp = tempfile::tempdir().unwrap();
+    fs::write(tmp.path().join("h.wkt"), hole_grid(15)).unwrap();
+    let (code, out, err) = run_in(tmp.path(), &["h.wkt", "--time-limit", "0.01", "--verify"]);
+    assert_eq!(code, 0, "{err}");
+    let v = crate::util::json(&out);
+    let p = &v["polygons"][0];
+    let (count, lower) = (&p["triangle_count"], &p["lower_bound"]);
+    assert_eq!(p["optimal"], false);
+    let (count, lower) = (count.as_u64().unwrap(), lower.as_u64().unwrap());
+    assert!(lower <= count && lower >= 1127 - 675, "{lower} {count}");
+    assert_eq!(p["verification"]["ok"], true);
+}
+
+/// The fault injection of the batch writer: `files` inputs written into an output directory,
+/// the run killed `kills` times at pseudo-random points (SIGKILL, SIGTERM, SIGINT in turn);
+/// after each kill every output is absent or complete and parseable, and after SIGTERM and
+/// SIGINT no temporary file is left; a final run completes the batch without leftovers.
+fn kill_batches(files: usize, kills: usize, seed: u64) {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    for k in 0..files {
+        let sub = dir.join(format!("in/{}", k % 7));
+        fs::create_dir_all(&sub).unwrap();
+        // Grids of 2 x 2 to 4 x 4 holes: each file takes milliseconds (5 x 5 reaches the
+        // search's time limit).
+        fs::write(sub.join(format!("f{k}.wkt")), hole_grid(2 + (k % 3) as i64)).unwrap();
+    }
+    let mut next = crate::util::xorshift(seed);
+    let check_outputs = |after: &str| {
+        let mut stack = vec![dir.join("out")];
+        while let Some(d) = stack.pop() {
+            let Ok(entries) = fs::read_dir(&d) else {
+                continue;
+            };
+            for e in entries.flatten() {
+                let path = e.path();
+                if path.is_dir() {
+                    stack.push(path);
+                } else if !path.to_string_lossy().ends_with(".tmp") {
+                    let text = fs::read_to_string(&path).unwrap();
+                    let v: serde_json::Value = serde_json::from_str(&text).unwrap_or_else(|e| {
+                        panic!("{after}: {} not complete: {e}", path.display())
+                    });
+                    assert_eq!(v["polygons"].as_array().map(Vec::len), Some(1), "{after}");
+                }
+            }
+        }
+    };
+    for kill in 0..kills {
+        let name = ["KILL", "TERM", "INT"][kill % 3];
+        let child = bin()
+            .current_dir(dir)
+            .args(["in", "-o", "out", "--jobs", "2", "-q"])
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap();
+        std::thread::sleep(Duration::from_millis(next(400) as u64));
+        signal(&child, name);
+        let code = wait_at_most(child, Duration::from_secs(60));
+        let after = format!("kill {kill} (SIG{name}, exit {code})");
+        check_outputs(&after);
+        if name != "KILL" && code == 130 {
+            assert!(
+                temporaries(dir).is_empty(),
+                "{after}: {:?}",
+                temporaries(dir)
+            );
+        }
+    }
+    let (code, _, err) = run_in(dir, &["in", "-o", "out", "-q"]);
+    assert_eq!(code, 0, "{err}");
+    check_outputs("the final run");
+    assert!(temporaries(dir).is_empty(), "{:?}", temporaries(dir));
+    let outputs: usize = (0..7)
+        .map(|d| fs::read_dir(dir.join(format!("out/{d}"))).map_or(0, Iterator::count))
+        .sum();
+    assert_eq!(outputs, files);
+}
+
+#[test]
+fn fault_injection_short() {
+    kill_batches(100, 6, 24);
+}
+
+/// The full campaign of issue 24: 1,000 files, 50 kills (`.ci/run` runs it in release mode).
+#[test]
+#[ignore = "about a minute in release mode; run by .ci/run"]
+fn fault_injection_full() {
+    kill_batches(1000, 50, 2024);
+}
