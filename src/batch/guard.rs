@@ -27,8 +27,12 @@ pub fn same_file(a: &Path, b: &Path) -> bool {
 }
 
 /// The first input that is `output` itself (`-` standing for standard input, when it is
-/// redirected from a file: `/dev/stdin` is compared).
+/// redirected from a file: `/dev/stdin` is compared). Only an output that is a regular file or
+/// a directory can be overwritten; a device or a FIFO is written into, never replaced.
 pub fn input_that_is<'a>(inputs: &'a [PathBuf], output: &Path) -> Option<&'a Path> {
+    if !std::fs::metadata(output).is_ok_and(|m| m.is_file() || m.is_dir()) {
+        return None;
+    }
     inputs.iter().map(PathBuf::as_path).find(|input| {
         if *input == Path::new("-") {
             cfg!(unix) && same_file(Path::new("/dev/stdin"), output)
