@@ -141,7 +141,7 @@ pub enum FromFlag {
 /// `--to`.
 #[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
 pub enum ToFlag {
-    /// The JSON document of the spec
+    /// The JSON document: every polygon with its triangles, counts, bounds and warnings
     Json,
     /// A GeoJSON FeatureCollection, one Feature per triangle
     Geojson,

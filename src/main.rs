@@ -152,7 +152,7 @@ fn is_tree(inputs: &[std::path::PathBuf], out: &Path) -> bool {
     inputs.len() > 1 || inputs.iter().any(|p| p.is_dir()) || out.is_dir()
 }
 
-/// The exit status of the spec: 3 a `--verify` problem, 1 a failure, 0 all processed.
+/// The exit status (docs/cli.md): 3 a `--verify` problem, 1 a failure, 0 all processed.
 fn exit_code(tally: &Tally) -> ExitCode {
     if tally.verify_failures > 0 {
         ExitCode::from(3)

@@ -575,3 +575,127 @@ fn the_readme_example_is_what_the_binary_prints() {
     assert_eq!(code, 0, "{err}");
     assert_eq!(out, readme[start..end], "README example out of date");
 }
+
+/// The user-facing documents: README.md, ARCHITECTURE.md and every `docs/*.md`, with their text.
+fn documents() -> Vec<(std::path::PathBuf, String)> {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut paths = vec![root.join("README.md"), root.join("ARCHITECTURE.md")];
+    let mut docs: Vec<_> = std::fs::read_dir(root.join("docs"))
+        .expect("docs/")
+        .map(|entry| entry.expect("docs/ entry").path())
+        .filter(|p| p.extension().is_some_and(|e| e == "md"))
+        .collect();
+    docs.sort();
+    paths.extend(docs);
+    paths
+        .into_iter()
+        .map(|p| {
+            let text = std::fs::read_to_string(&p).unwrap_or_else(|e| panic!("{p:?}: {e}"));
+            (p, text)
+        })
+        .collect()
+}
+
+/// Names of material that lives outside the repository (the project's development notes), which
+/// no user-facing text may point to.
+const OUTSIDE: [&str; 7] = [
+    "../",
+    "shared/",
+    "DESIGN.md",
+    "spec/CLI.md",
+    "papers in",
+    "papers/",
+    "the spec",
+];
+
+/// The anchor GitHub gives a Markdown heading: lower case, punctuation dropped, spaces as `-`.
+fn anchor(heading: &str) -> String {
+    heading
+        .trim()
+        .to_lowercase()
+        .chars()
+        .filter(|c| c.is_alphanumeric() || *c == ' ' || *c == '-' || *c == '_')
+        .map(|c| if c == ' ' { '-' } else { c })
+        .collect()
+}
+
+/// The anchors of a Markdown text's headings.
+fn anchors(text: &str) -> Vec<String> {
+    text.lines()
+        .filter(|l| l.starts_with('#'))
+        .map(|l| anchor(l.trim_start_matches('#')))
+        .collect()
+}
+
+/// Every relative link of README.md, ARCHITECTURE.md and docs/*.md names a file of the
+/// repository (and a heading of it, after `#`), and no text names anything outside the
+/// repository; a link may climb out of `docs/` (`../ARCHITECTURE.md`), never out of the root.
+#[test]
+fn the_documents_link_only_to_files_of_the_repository() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .canonicalize()
+        .expect("root");
+    for (path, text) in documents() {
+        let dir = path.parent().expect("a directory");
+        let mut rest = text.clone();
+        for target in markdown_links(&text) {
+            rest = rest.replace(&format!("]({target})"), "]()");
+            if target.contains("://") || target.starts_with("mailto:") {
+                continue;
+            }
+            let (file, fragment) = match target.split_once('#') {
+                Some((file, fragment)) => (file, Some(fragment)),
+                None => (target.as_str(), None),
+            };
+            let linked = if file.is_empty() {
+                path.clone()
+            } else {
+                dir.join(file)
+            };
+            let resolved = linked
+                .canonicalize()
+                .unwrap_or_else(|_| panic!("{path:?}: link to a missing file: {target}"));
+            assert!(
+                resolved.starts_with(&root),
+                "{path:?}: link outside the repository: {target}"
+            );
+            if let Some(fragment) = fragment {
+                let linked_text = std::fs::read_to_string(&resolved).expect("linked file");
+                assert!(
+                    anchors(&linked_text).iter().any(|a| a == fragment),
+                    "{path:?}: link to a missing heading: {target}"
+                );
+            }
+        }
+        for name in OUTSIDE {
+            assert!(
+                !rest.contains(name),
+                "{path:?} refers outside the repository: {name:?}"
+            );
+        }
+    }
+}
+
+/// The targets of the Markdown links `[text](target)` of a text.
+fn markdown_links(text: &str) -> Vec<String> {
+    text.match_indices("](")
+        .filter_map(|(i, _)| {
+            let target = &text[i + 2..];
+            target.find(')').map(|end| target[..end].to_string())
+        })
+        .filter(|t| !t.contains(char::is_whitespace))
+        .collect()
+}
+
+/// `--help` and `--man` name nothing outside the repository either.
+#[test]
+fn help_and_man_page_refer_to_nothing_outside_the_repository() {
+    for flag in ["--help", "--man"] {
+        let (code, out, err) = run(&[flag], None);
+        assert_eq!(code, 0, "{err}");
+        assert!(out.len() > 1000, "{flag}: {out}");
+        for name in OUTSIDE {
+            assert!(!out.contains(name), "{flag} refers to {name:?}");
+        }
+    }
+}

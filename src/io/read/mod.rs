@@ -37,7 +37,7 @@ pub enum Format {
     Wkt,
     /// GeoJSON geometry, Feature, FeatureCollection, or newline-delimited GeoJSON.
     GeoJson,
-    /// One `x y` or `x,y` vertex per line (see the README).
+    /// One `x y` or `x,y` vertex per line (see `docs/cli.md`).
     Vertices,
 }
 
