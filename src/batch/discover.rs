@@ -64,11 +64,35 @@ pub struct Unreadable {
 /// # Ok::<(), String>(())
 /// ```
 pub fn discover(paths: &[PathBuf], skip: Option<&Path>) -> Vec<Result<Input, Unreadable>> {
+    discover_counting(paths, skip).0
+}
+
+/// [`discover`], and how many files below the directories were skipped, their names ending in
+/// no input format's extension ([`EXTENSIONS`]). A directory holding no input file at all is an
+/// [`Unreadable`] entry saying so (the run then exits with status 1, naming it).
+pub fn discover_counting(
+    paths: &[PathBuf],
+    skip: Option<&Path>,
+) -> (Vec<Result<Input, Unreadable>>, usize) {
     let skip = skip.and_then(|s| fs::canonicalize(s).ok());
     let mut out = Vec::new();
+    let mut skipped = 0;
     for path in paths {
         if path.is_dir() {
-            let mut found = walk(path, skip.as_deref());
+            let mut unknown = 0;
+            let mut found = walk(path, skip.as_deref(), &mut unknown);
+            skipped += unknown;
+            if found.is_empty() {
+                out.push(Err(Unreadable {
+                    name: path.display().to_string(),
+                    message: format!(
+                        "no input file found in this directory ({unknown} other file{}; inputs end in .{})",
+                        if unknown == 1 { "" } else { "s" },
+                        EXTENSIONS.join(", .")
+                    ),
+                }));
+                continue;
+            }
             found.sort_by(|a, b| a.0.cmp(&b.0));
             out.extend(found.into_iter().map(|(file, entry)| {
                 entry.map(|()| {
@@ -87,12 +111,17 @@ pub fn discover(paths: &[PathBuf], skip: Option<&Path>) -> Vec<Result<Input, Unr
             }));
         }
     }
-    out
+    (out, skipped)
 }
 
 /// Every file below `dir` with a known extension, not entering `skip`; with the entries that
-/// cannot be read or are skipped (special files, link loops), each with its reason.
-fn walk(dir: &Path, skip: Option<&Path>) -> Vec<(PathBuf, Result<(), Unreadable>)> {
+/// cannot be read or are skipped (special files, link loops), each with its reason; `unknown`
+/// counts the other files.
+fn walk(
+    dir: &Path,
+    skip: Option<&Path>,
+    unknown: &mut usize,
+) -> Vec<(PathBuf, Result<(), Unreadable>)> {
     let mut found = Vec::new();
     let unreadable = |path: &Path, message: String| {
         let name = path.display().to_string();
@@ -129,6 +158,7 @@ fn walk(dir: &Path, skip: Option<&Path>) -> Vec<(PathBuf, Result<(), Unreadable>
             .and_then(|e| e.to_str())
             .is_some_and(|e| EXTENSIONS.contains(&e.to_ascii_lowercase().as_str()));
         if !known {
+            *unknown += 1;
             continue;
         }
         if kind.is_file() {
