@@ -10,4 +10,5 @@ mod holes_dp;
 mod property;
 mod pseudo;
 mod svg;
+mod touching;
 mod util;

@@ -207,10 +207,15 @@ fn forest(p: &Polygon, groups: &[Vec<usize>]) -> Result<Vec<usize>, InvalidPolyg
             let r = p.ring_index(v);
             let (a, b) = (find(&mut root, first), find(&mut root, r));
             if a == b {
-                let mut path = cycle(&adjacent, first, r);
-                path.push((r, v));
-                let rings: Vec<String> = path.iter().map(|&(r, _)| Ring::from_index(r).to_string()).collect();
-                let mut points: Vec<String> = path.iter().skip(1).map(|&(_, v)| p.format_vertex(v)).collect();
+                let path = cycle(&adjacent, first, r);
+                let rings: Vec<String> =
+                    path.iter().map(|&(r, _)| Ring::from_index(r).to_string()).collect();
+                let mut points: Vec<String> = path
+                    .iter()
+                    .skip(1)
+                    .map(|&(_, v)| p.format_vertex(v))
+                    .chain(std::iter::once(p.format_vertex(v)))
+                    .collect();
                 points.dedup();
                 return Err(InvalidPolygon::CutInterior {
                     rings: rings.join(", "),
