@@ -44,7 +44,10 @@ fn edges(ring: &[(i64, i64)]) -> impl Iterator<Item = (Point, Point)> + '_ {
 fn inside(ring: &[(i64, i64)], q: Point, scale: i64) -> Option<bool> {
     let mut odd = false;
     for (a, b) in edges(ring) {
-        let (a, b) = (Point::new(a.x * scale, a.y * scale), Point::new(b.x * scale, b.y * scale));
+        let (a, b) = (
+            Point::new(a.x * scale, a.y * scale),
+            Point::new(b.x * scale, b.y * scale),
+        );
         if cross(a, b, q) == 0 && dot(q, a, b) <= 0 {
             return None;
         }
@@ -69,7 +72,10 @@ fn pieces(rings: &Rings) -> Vec<Vec<(Point, Point)>> {
                     .filter(|&q| q != a && q != b && cross(a, b, q) == 0 && dot(q, a, b) < 0)
                     .collect();
                 on.sort_by_key(|&q| dot(a, q, q));
-                let chain: Vec<Point> = std::iter::once(a).chain(on).chain(std::iter::once(b)).collect();
+                let chain: Vec<Point> = std::iter::once(a)
+                    .chain(on)
+                    .chain(std::iter::once(b))
+                    .collect();
                 out.extend(chain.windows(2).map(|w| (w[0], w[1])));
             }
             out
@@ -203,8 +209,9 @@ fn exhaustive_minimum(rings: &Rings) -> usize {
                 }
                 // No edge meets the open triangle: a separating line (a side's, or the edge's).
                 let clear = all_edges.iter().all(|&(u, w)| {
-                    (0..3).any(|k| cross(t[k], t[(k + 1) % 3], u) <= 0 && cross(t[k], t[(k + 1) % 3], w) <= 0)
-                        || t.iter().all(|&q| cross(u, w, q) >= 0)
+                    (0..3).any(|k| {
+                        cross(t[k], t[(k + 1) % 3], u) <= 0 && cross(t[k], t[(k + 1) % 3], w) <= 0
+                    }) || t.iter().all(|&q| cross(u, w, q) >= 0)
                         || t.iter().all(|&q| cross(u, w, q) <= 0)
                 });
                 let centroid = Point::new(t[0].x + t[1].x + t[2].x, t[0].y + t[1].y + t[2].y);
@@ -225,7 +232,10 @@ fn exhaustive_minimum(rings: &Rings) -> usize {
     let on_side = |e: (Point, Point), t: &[Point; 3]| {
         (0..3).any(|k| {
             let (s, u) = (t[k], t[(k + 1) % 3]);
-            cross(s, u, e.0) == 0 && cross(s, u, e.1) == 0 && dot(e.0, s, u) <= 0 && dot(e.1, s, u) <= 0
+            cross(s, u, e.0) == 0
+                && cross(s, u, e.1) == 0
+                && dot(e.0, s, u) <= 0
+                && dot(e.1, s, u) <= 0
         })
     };
     fn search(
@@ -253,7 +263,9 @@ fn exhaustive_minimum(rings: &Rings) -> usize {
             .iter()
             .find(|&&e| !chosen.iter().any(|&c| on_side(e, &cands[c].0)));
         let options: Vec<usize> = match open {
-            Some(&e) => (0..cands.len()).filter(|&c| on_side(e, &cands[c].0) && fits(c)).collect(),
+            Some(&e) => (0..cands.len())
+                .filter(|&c| on_side(e, &cands[c].0) && fits(c))
+                .collect(),
             // Every stretch covered but area left: interior triangles (none needed so far in
             // tiny cases, but tried in increasing order).
             None => (interior_from..cands.len())
@@ -289,7 +301,9 @@ fn exhaustive_minimum(rings: &Rings) -> usize {
 fn random_rings(rnd: &mut impl FnMut(i64) -> i64) -> Option<Rings> {
     let g = |rnd: &mut dyn FnMut(i64) -> i64| (rnd(7), rnd(7));
     let base = [g(rnd), g(rnd), g(rnd)];
-    let ops: Vec<(usize, i64, i64)> = (0..rnd(4)).map(|_| (rnd(8) as usize, rnd(7), rnd(7))).collect();
+    let ops: Vec<(usize, i64, i64)> = (0..rnd(4))
+        .map(|_| (rnd(8) as usize, rnd(7), rnd(7)))
+        .collect();
     let mut outer = if rnd(3) == 0 {
         general(base, &ops)?
     } else {
@@ -326,7 +340,10 @@ fn random_rings(rnd: &mut impl FnMut(i64) -> i64) -> Option<Rings> {
             let p = if rnd(6) == 0 {
                 existing[rnd(existing.len() as i64) as usize]
             } else {
-                ((anchor.0 + rnd(5) - 2).clamp(0, 6), (anchor.1 + rnd(5) - 2).clamp(0, 6))
+                (
+                    (anchor.0 + rnd(5) - 2).clamp(0, 6),
+                    (anchor.1 + rnd(5) - 2).clamp(0, 6),
+                )
             };
             if !hole.contains(&p) {
                 hole.push(p);
@@ -354,7 +371,9 @@ fn acceptance_matches_the_ogc_rules_on_random_polygons() {
     let mut rnd = xorshift(0x7001_c4e5);
     let (mut valid, mut touching, mut agree) = (0, 0, 0);
     for _ in 0..20_000 {
-        let Some(rings) = random_rings(&mut rnd) else { continue };
+        let Some(rings) = random_rings(&mut rnd) else {
+            continue;
+        };
         let ours = Polygon::from_raw(&raw(&rings));
         let theirs = ogc_valid(&rings);
         assert_eq!(
@@ -369,7 +388,10 @@ fn acceptance_matches_the_ogc_rules_on_random_polygons() {
             touching += usize::from(p.touches() > 0);
         }
     }
-    assert!(agree > 13_000 && valid > 500 && touching > 400, "{agree} {valid} {touching}");
+    assert!(
+        agree > 13_000 && valid > 500 && touching > 400,
+        "{agree} {valid} {touching}"
+    );
 }
 
 #[test]
@@ -379,8 +401,12 @@ fn every_algorithm_triangulates_touching_rings_and_the_minimum_is_exact() {
     let mut tries = 0;
     while checked < 1500 && tries < 300_000 {
         tries += 1;
-        let Some(rings) = random_rings(&mut rnd) else { continue };
-        let Ok((p, _)) = Polygon::from_raw(&raw(&rings)) else { continue };
+        let Some(rings) = random_rings(&mut rnd) else {
+            continue;
+        };
+        let Ok((p, _)) = Polygon::from_raw(&raw(&rings)) else {
+            continue;
+        };
         if p.touches() == 0 || p.len() > 12 {
             continue;
         }
@@ -393,10 +419,15 @@ fn every_algorithm_triangulates_touching_rings_and_the_minimum_is_exact() {
         let minimum = exhaustive_minimum(&rings);
         let plain = p.len() + 2 * p.holes() - 2;
         for algorithm in [Algorithm::Minitri, Algorithm::Asano, Algorithm::Ear] {
-            let t = minitri::triangulate(&p, algorithm).unwrap_or_else(|e| panic!("{rings:?} {algorithm}: {e}"));
+            let t = minitri::triangulate(&p, algorithm)
+                .unwrap_or_else(|e| panic!("{rings:?} {algorithm}: {e}"));
             let check = verify::check(&p, &t);
             assert!(check.valid, "{rings:?} {algorithm}: {:?}", check.problems);
-            assert_eq!(t.triangles.len() + t.degenerate.len(), plain, "{rings:?} {algorithm}");
+            assert_eq!(
+                t.triangles.len() + t.degenerate.len(),
+                plain,
+                "{rings:?} {algorithm}"
+            );
             if algorithm == Algorithm::Ear {
                 assert_eq!(t.triangles.len(), plain);
             } else if p.holes() == 0 {
@@ -413,15 +444,23 @@ fn every_algorithm_triangulates_touching_rings_and_the_minimum_is_exact() {
             with_hole_walks += 1;
         }
     }
-    assert!(checked == 1500 && one_walk > 1000 && with_hole_walks > 10 && three_at_a_point >= 5,
-        "{checked} {one_walk} {with_hole_walks} {three_at_a_point}");
+    assert!(
+        checked == 1500 && one_walk > 1000 && with_hole_walks > 10 && three_at_a_point >= 5,
+        "{checked} {one_walk} {with_hole_walks} {three_at_a_point}"
+    );
 }
 
 #[test]
 fn the_issue_example_hole_touching_an_outer_edge() {
-    let rings: Rings = vec![vec![(0, 0), (10, 0), (10, 10), (0, 10)], vec![(0, 5), (3, 3), (3, 7)]];
+    let rings: Rings = vec![
+        vec![(0, 0), (10, 0), (10, 10), (0, 10)],
+        vec![(0, 5), (3, 3), (3, 7)],
+    ];
     let (p, _) = Polygon::from_raw(&raw(&rings)).unwrap();
-    assert_eq!((p.len(), p.holes(), p.touches(), p.input_holes()), (8, 0, 1, 1));
+    assert_eq!(
+        (p.len(), p.holes(), p.touches(), p.input_holes()),
+        (8, 0, 1, 1)
+    );
     let t = minitri::triangulate(&p, Algorithm::Minitri).unwrap();
     assert!(t.optimal && verify::check(&p, &t).valid);
     assert_eq!((t.triangles.len(), t.degenerate.len()), (5, 1));
@@ -429,7 +468,10 @@ fn the_issue_example_hole_touching_an_outer_edge() {
 }
 
 fn message(rings: &Rings) -> String {
-    Polygon::from_raw(&raw(rings)).err().map(|e| e.to_string()).unwrap_or_default()
+    Polygon::from_raw(&raw(rings))
+        .err()
+        .map(|e| e.to_string())
+        .unwrap_or_default()
 }
 
 #[test]
@@ -449,21 +491,45 @@ fn rejections_name_rings_and_points() {
         vec![(3, 4), (7, 4), (5, 7)],
     ];
     let m = message(&cycle);
-    assert!(m.starts_with("touching rings cut the interior in two: hole"), "{m}");
-    assert!(m.contains("(5, 2)") && m.contains("(3, 4)") && m.contains("(7, 4)"), "{m}");
+    assert!(
+        m.starts_with("touching rings cut the interior in two: hole"),
+        "{m}"
+    );
+    assert!(
+        m.contains("(5, 2)") && m.contains("(3, 4)") && m.contains("(7, 4)"),
+        "{m}"
+    );
     // Holes sharing a stretch of edge.
-    let shared = vec![square.clone(), vec![(2, 2), (5, 2), (5, 5)], vec![(5, 2), (8, 2), (5, 5)]];
-    assert!(message(&shared).starts_with("rings overlap"), "{}", message(&shared));
+    let shared = vec![
+        square.clone(),
+        vec![(2, 2), (5, 2), (5, 5)],
+        vec![(5, 2), (8, 2), (5, 5)],
+    ];
+    assert!(
+        message(&shared).starts_with("rings overlap"),
+        "{}",
+        message(&shared)
+    );
     // A hole poking through the outer ring at a vertex it shares with it (crossing there).
     let crossing = vec![square.clone(), vec![(0, 0), (3, 3), (-1, 3)]];
     let m = message(&crossing);
     assert!(!m.is_empty(), "accepted a crossing at a touch point");
     // A hole inside another, touching it.
-    let nested = vec![square.clone(), vec![(1, 1), (9, 1), (9, 9), (1, 9)], vec![(1, 1), (4, 2), (2, 4)]];
+    let nested = vec![
+        square.clone(),
+        vec![(1, 1), (9, 1), (9, 9), (1, 9)],
+        vec![(1, 1), (4, 2), (2, 4)],
+    ];
     let m = message(&nested);
-    assert!(m.contains("rings cross at a touch point") || m.contains("inside hole"), "{m}");
+    assert!(
+        m.contains("rings cross at a touch point") || m.contains("inside hole"),
+        "{m}"
+    );
     // A hole outside the outer ring, touching it at a vertex.
     let outside = vec![square, vec![(10, 10), (12, 10), (12, 12)]];
     let m = message(&outside);
-    assert!(m.contains("rings cross at a touch point") || m.contains("outside"), "{m}");
+    assert!(
+        m.contains("rings cross at a touch point") || m.contains("outside"),
+        "{m}"
+    );
 }

@@ -294,9 +294,7 @@ pub(crate) fn touching(
         triangles,
         degenerate: Vec::new(),
         optimal: false,
-        lower_bound: algorithm
-            .is_minimum()
-            .then(|| polygon.minimum_bounds().0),
+        lower_bound: algorithm.is_minimum().then(|| polygon.minimum_bounds().0),
     })
 }
 
@@ -334,7 +332,9 @@ pub enum TriangulateError {
     },
     /// An algorithm that cannot (yet) run on rings that touch, or a self-check of the walks'
     /// triangulation that failed (see `algo::walks`; not seen in the tests).
-    #[error("the {algorithm} algorithm cannot triangulate this polygon with touching rings: {detail}")]
+    #[error(
+        "the {algorithm} algorithm cannot triangulate this polygon with touching rings: {detail}"
+    )]
     Touching {
         /// The algorithm.
         algorithm: Algorithm,

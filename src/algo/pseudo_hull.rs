@@ -115,7 +115,8 @@ pub fn pseudotriangulate(polygon: &Polygon) -> Result<Pseudotriangulation, Trian
     if polygon.touches() > 0 {
         return Err(TriangulateError::Touching {
             algorithm: super::Algorithm::PseudoHull,
-            detail: "its hull triangulation takes each point once, and touching rings share points".to_string(),
+            detail: "its hull triangulation takes each point once, and touching rings share points"
+                .to_string(),
         });
     }
     let n = polygon.len();

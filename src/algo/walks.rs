@@ -79,13 +79,24 @@ pub fn plain(polygon: &Polygon) -> Result<Vec<[usize; 3]>, String> {
         'search: for &o in &candidates {
             let v = outer[o];
             for h in (0..m).filter(|&h| pt(hole[h]) == top) {
-                let hv = (pt(hole[(h + m - 1) % m]), pt(hole[h]), pt(hole[(h + 1) % m]));
+                let hv = (
+                    pt(hole[(h + m - 1) % m]),
+                    pt(hole[h]),
+                    pt(hole[(h + 1) % m]),
+                );
                 let n = outer.len();
                 let ov = (pt(outer[(o + n - 1) % n]), pt(v), pt(outer[(o + 1) % n]));
                 if pt(v) != top
                     && strictly_inside(hv.0, hv.1, hv.2, pt(v))
                     && strictly_inside(ov.0, ov.1, ov.2, top)
-                    && clear(polygon, top, pt(v), std::iter::once(&outer).chain(std::iter::once(hole)).chain(rest.iter().copied()))
+                    && clear(
+                        polygon,
+                        top,
+                        pt(v),
+                        std::iter::once(&outer)
+                            .chain(std::iter::once(hole))
+                            .chain(rest.iter().copied()),
+                    )
                 {
                     bridge = Some((o, h));
                     break 'search;
@@ -138,17 +149,13 @@ fn clip(polygon: &Polygon, cycle: &[usize]) -> Result<Vec<[usize; 3]>, String> {
             && strictly_inside(pt(prev[p]), a, b, c)
             && strictly_inside(b, c, pt(next[q]), a)
             && (0..n).all(|r| {
-                !alive[r]
-                    || r == p
-                    || r == v
-                    || r == q
-                    || {
-                        let s = pt(r);
-                        s == a
-                            || s == b
-                            || s == c
-                            || !(cross(a, b, s) >= 0 && cross(b, c, s) >= 0 && cross(c, a, s) >= 0)
-                    }
+                !alive[r] || r == p || r == v || r == q || {
+                    let s = pt(r);
+                    s == a
+                        || s == b
+                        || s == c
+                        || !(cross(a, b, s) >= 0 && cross(b, c, s) >= 0 && cross(c, a, s) >= 0)
+                }
             });
         if ear {
             triangles.push([cycle[p], cycle[v], cycle[q]]);

@@ -149,7 +149,12 @@ fn around(
     // (direction's far point, vertex, is it the outgoing edge)
     let mut dirs: Vec<(Point, usize, bool)> = group
         .iter()
-        .flat_map(|&v| [(p.point(p.prev(v)), v, false), (p.point(p.next(v)), v, true)])
+        .flat_map(|&v| {
+            [
+                (p.point(p.prev(v)), v, false),
+                (p.point(p.next(v)), v, true),
+            ]
+        })
         .collect();
     dirs.sort_by(|x, y| cmp_angle(at, x.0, y.0).then(x.2.cmp(&y.2)));
     let k = dirs.len();
@@ -208,8 +213,10 @@ fn forest(p: &Polygon, groups: &[Vec<usize>]) -> Result<Vec<usize>, InvalidPolyg
             let (a, b) = (find(&mut root, first), find(&mut root, r));
             if a == b {
                 let path = cycle(&adjacent, first, r);
-                let rings: Vec<String> =
-                    path.iter().map(|&(r, _)| Ring::from_index(r).to_string()).collect();
+                let rings: Vec<String> = path
+                    .iter()
+                    .map(|&(r, _)| Ring::from_index(r).to_string())
+                    .collect();
                 let mut points: Vec<String> = path
                     .iter()
                     .skip(1)
@@ -280,10 +287,11 @@ fn placement(
     let parents = validate::parents(below, &touching);
     let boxes: Vec<[i64; 4]> = (0..rings)
         .map(|r| {
-            p.ring_range(r).fold([i64::MAX, i64::MIN, i64::MAX, i64::MIN], |b, i| {
-                let q = p.point(i);
-                [b[0].min(q.x), b[1].max(q.x), b[2].min(q.y), b[3].max(q.y)]
-            })
+            p.ring_range(r)
+                .fold([i64::MAX, i64::MIN, i64::MAX, i64::MIN], |b, i| {
+                    let q = p.point(i);
+                    [b[0].min(q.x), b[1].max(q.x), b[2].min(q.y), b[3].max(q.y)]
+                })
         })
         .collect();
     let mut done = vec![false; rings];
@@ -299,11 +307,15 @@ fn placement(
         let q = p.point(v);
         for s in (0..rings).filter(|&s| joined[s] != group) {
             let b = boxes[s];
-            let inside = b[0] <= q.x && q.x <= b[1] && b[2] <= q.y && q.y <= b[3] && inside_ring(p, s, q);
+            let inside =
+                b[0] <= q.x && q.x <= b[1] && b[2] <= q.y && q.y <= b[3] && inside_ring(p, s, q);
             match (s == 0, inside, r == 0) {
                 (true, false, _) => errors.push(InvalidPolygon::HoleOutside { hole: r }),
                 (false, true, true) => errors.push(InvalidPolygon::OuterInsideHole { hole: s }),
-                (false, true, false) => errors.push(InvalidPolygon::HoleInsideHole { hole: r, container: s }),
+                (false, true, false) => errors.push(InvalidPolygon::HoleInsideHole {
+                    hole: r,
+                    container: s,
+                }),
                 _ => {}
             }
         }
@@ -315,7 +327,9 @@ fn placement(
         match (r, parent) {
             (0, None) | (1.., Some(0)) => {}
             (0, Some(hole)) => errors.push(InvalidPolygon::OuterInsideHole { hole }),
-            (_, Some(container)) => errors.push(InvalidPolygon::HoleInsideHole { hole: r, container }),
+            (_, Some(container)) => {
+                errors.push(InvalidPolygon::HoleInsideHole { hole: r, container })
+            }
             (_, None) => errors.push(InvalidPolygon::HoleOutside { hole: r }),
         }
     }

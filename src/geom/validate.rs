@@ -518,8 +518,12 @@ fn test(
     if let Some(found) = touches.as_mut() {
         if contact == SegmentContact::Touch && polygon.ring_index(e) != polygon.ring_index(f) {
             use super::kernel::strictly_between;
-            for (edge, (s, t), v) in [(e, (a, b), f), (e, (a, b), f1), (f, (c, d), e), (f, (c, d), e1)]
-            {
+            for (edge, (s, t), v) in [
+                (e, (a, b), f),
+                (e, (a, b), f1),
+                (f, (c, d), e),
+                (f, (c, d), e1),
+            ] {
                 if strictly_between(s, polygon.point(v), t) {
                     found.push((edge, v));
                 }

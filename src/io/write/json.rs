@@ -171,7 +171,10 @@ fn triangle_fields(
 /// polygon whose rings touch (absent otherwise, so outputs without touches are unchanged).
 fn touches_field(fields: &mut Vec<(&'static str, String)>, polygon: &Polygon) {
     if polygon.touches() > 0 {
-        let at = fields.iter().position(|(name, _)| *name == "holes").map_or(fields.len(), |i| i + 1);
+        let at = fields
+            .iter()
+            .position(|(name, _)| *name == "holes")
+            .map_or(fields.len(), |i| i + 1);
         fields.insert(at, ("touches", json(&polygon.touches())));
     }
 }
