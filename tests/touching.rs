@@ -167,6 +167,17 @@ fn ogc_valid(rings: &Rings) -> bool {
     true
 }
 
+/// The search's fixed data: candidates with their doubled areas, the region's doubled area, the
+/// boundary stretches, whether a stretch lies in a triangle side, whether two triangles are
+/// interior-disjoint.
+type Context<'a> = (
+    &'a [([Point; 3], i128)],
+    i128,
+    &'a [(Point, Point)],
+    &'a dyn Fn((Point, Point), &[Point; 3]) -> bool,
+    &'a dyn Fn(&[Point; 3], &[Point; 3]) -> bool,
+);
+
 /// The fewest triangles tiling the region, by exhaustive search (see the module documentation).
 fn exhaustive_minimum(rings: &Rings) -> usize {
     let pts: Vec<Point> = rings
@@ -243,13 +254,7 @@ fn exhaustive_minimum(rings: &Rings) -> usize {
         interior_from: usize,
         sum: i128,
         limit: usize,
-        ctx: &(
-            &[([Point; 3], i128)],
-            i128,
-            &[(Point, Point)],
-            &dyn Fn((Point, Point), &[Point; 3]) -> bool,
-            &dyn Fn(&[Point; 3], &[Point; 3]) -> bool,
-        ),
+        ctx: &Context,
     ) -> bool {
         let (cands, area, stretches, on_side, disjoint) = ctx;
         if sum == *area {
@@ -283,13 +288,7 @@ fn exhaustive_minimum(rings: &Rings) -> usize {
         }
         false
     }
-    let ctx: (
-        &[([Point; 3], i128)],
-        i128,
-        &[(Point, Point)],
-        &dyn Fn((Point, Point), &[Point; 3]) -> bool,
-        &dyn Fn(&[Point; 3], &[Point; 3]) -> bool,
-    ) = (&cands, region_area, &stretches, &on_side, &disjoint);
+    let ctx: Context = (&cands, region_area, &stretches, &on_side, &disjoint);
     (1..=3 * n)
         .find(|&limit| search(&mut Vec::new(), 0, 0, limit, &ctx))
         .unwrap_or_else(|| panic!("no tiling found for {rings:?}"))

@@ -34,6 +34,9 @@ use crate::geom::kernel::{cross, dot, in_closed_wedge, properly_cross, strictly_
 use crate::geom::polygon::Polygon;
 use std::collections::HashMap;
 
+/// Triangles as stored vertex indices.
+pub type Triangles = Vec<[usize; 3]>;
+
 /// The largest walk (stored vertices, copies counted) [`minimum`] takes: its chord table costs
 /// O(n^3) direct tests.
 pub const WALK_DP_LIMIT: usize = 300;
@@ -219,7 +222,7 @@ pub(crate) fn is_chord(polygon: &Polygon, i: usize, j: usize) -> bool {
 /// The exact minimum triangulation of a polygon whose rings all join the outer ring (one walk,
 /// at most [`WALK_DP_LIMIT`] stored vertices): the nondegenerate triangles and the degenerate
 /// ones (as [`super::Triangulation`] has them), or `None` beyond the limit or with hole walks.
-pub fn minimum(polygon: &Polygon) -> Option<(Vec<[usize; 3]>, Vec<[usize; 3]>)> {
+pub fn minimum(polygon: &Polygon) -> Option<(Triangles, Triangles)> {
     let n = polygon.len();
     if polygon.holes() > 0 || n > WALK_DP_LIMIT {
         return None;

@@ -92,12 +92,12 @@ pub(crate) fn walks(rings: Polygon, contacts: &Contacts) -> Result<Polygon, Vec<
     Ok(p.relinked(&order, &starts, touches))
 }
 
+/// A stored vertex inserted into an edge, with the input numbers of the edge's ends.
+type Inserted = (usize, (usize, usize));
+
 /// Step 1: `polygon` with each `(edge, vertex)` of `on_edge` inserted, and the inserted stored
 /// vertices with the input numbers of the edge they split.
-fn insert_on_edges(
-    polygon: &Polygon,
-    on_edge: &[(usize, usize)],
-) -> (Polygon, Vec<(usize, (usize, usize))>) {
+fn insert_on_edges(polygon: &Polygon, on_edge: &[(usize, usize)]) -> (Polygon, Vec<Inserted>) {
     let mut at_edge: Vec<Vec<usize>> = vec![Vec::new(); polygon.len()];
     for &(e, v) in on_edge {
         at_edge[e].push(v);
