@@ -466,7 +466,9 @@ fn run(holes: usize, cases: u32, seed: u64, max_n: usize, exhaustive_up_to: usiz
     let stats = RefCell::new(Stats::default());
     runner(cases, seed)
         .run(&recipe(holes), |r| match build(&r) {
-            Some(poly) if poly.len() <= max_n => {
+            // Touching rings (accepted since OGC touches are) are `tests/touching.rs`'s: this DP
+            // cuts disjoint holes open.
+            Some(poly) if poly.len() <= max_n && poly.touches() == 0 => {
                 check(&poly, exhaustive_up_to, &mut stats.borrow_mut())
             }
             _ => Ok(()),
@@ -485,7 +487,7 @@ fn one_hole_dp_is_minimum_and_valid() {
 
 #[test]
 fn two_holes_dp_is_minimum_and_valid() {
-    let s = run(2, 3500, 0x401e_0002, 18, 11);
+    let s = run(2, 5600, 0x401e_0002, 18, 11);
     eprintln!("two holes: {s:?}");
     assert!(s.cases >= 600 && s.exhaustive >= 200, "{s:?}");
     s.assert_varied();

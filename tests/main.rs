@@ -11,4 +11,5 @@ mod hostile;
 mod property;
 mod pseudo;
 mod svg;
+mod touching;
 mod util;

@@ -71,6 +71,9 @@ pub fn estimate(n: usize) -> (String, String) {
 /// above its size limits).
 pub fn triangulate(polygon: &Polygon, limit: usize) -> Result<Triangulation, TriangulateError> {
     let n = polygon.len();
+    if polygon.touches() > 0 {
+        return super::touching(polygon, Algorithm::Asano);
+    }
     if polygon.holes() > 0 {
         return super::asano_holes::triangulate(polygon, limit);
     }

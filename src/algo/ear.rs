@@ -54,6 +54,9 @@ use crate::geom::polygon::Polygon;
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn triangulate(polygon: &Polygon) -> Result<Triangulation, TriangulateError> {
+    if polygon.touches() > 0 {
+        return super::touching(polygon, Algorithm::Ear);
+    }
     Ok(Triangulation {
         algorithm: Algorithm::Ear,
         triangles: super::plain_polygon(polygon),

@@ -21,6 +21,7 @@ pub mod monotone;
 pub(crate) mod number_hash;
 pub mod pseudo;
 pub mod pseudo_hull;
+pub mod walks;
 
 use std::fmt;
 
@@ -317,6 +318,36 @@ pub(crate) fn plain_polygon_for_walking(polygon: &crate::Polygon) -> Vec<[usize;
     plain_rings(&turned, polygon.ring_starts())
 }
 
+/// A triangulation of a polygon with touching rings ([`walks`]): for `minitri` and `asano` the
+/// exact minimum when every ring joins the outer ring and the walk is small enough for the DP
+/// ([`walks::minimum`]), else (and for `ear`) the plain triangulation, with `optimal: false` and
+/// the lower bound `ceil((n - f)/3)` for the minimum algorithms.
+pub(crate) fn touching(
+    polygon: &crate::Polygon,
+    algorithm: Algorithm,
+) -> Result<Triangulation, TriangulateError> {
+    if algorithm.is_minimum() {
+        if let Some((triangles, degenerate)) = walks::minimum(polygon) {
+            return Ok(Triangulation {
+                algorithm,
+                triangles,
+                degenerate,
+                optimal: true,
+                lower_bound: None,
+            });
+        }
+    }
+    let triangles =
+        walks::plain(polygon).map_err(|detail| TriangulateError::Touching { algorithm, detail })?;
+    Ok(Triangulation {
+        algorithm,
+        triangles,
+        degenerate: Vec::new(),
+        optimal: false,
+        lower_bound: algorithm.is_minimum().then(|| polygon.minimum_bounds().0),
+    })
+}
+
 /// Why an algorithm could not triangulate a (valid) polygon.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 #[non_exhaustive]
@@ -348,6 +379,17 @@ pub enum TriangulateError {
         limit: usize,
         /// Estimated time, in words.
         time: String,
+    },
+    /// An algorithm that cannot (yet) run on rings that touch, or a self-check of the walks'
+    /// triangulation that failed (see `algo::walks`; not seen in the tests).
+    #[error(
+        "the {algorithm} algorithm cannot triangulate this polygon with touching rings: {detail}"
+    )]
+    Touching {
+        /// The algorithm.
+        algorithm: Algorithm,
+        /// Why.
+        detail: String,
     },
     /// A self-check of the `pseudo-hull` construction failed (see `algo::pseudo_hull`; not
     /// seen in the tests).

@@ -112,6 +112,13 @@ use std::collections::HashSet;
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn pseudotriangulate(polygon: &Polygon) -> Result<Pseudotriangulation, TriangulateError> {
+    if polygon.touches() > 0 {
+        return Err(TriangulateError::Touching {
+            algorithm: super::Algorithm::PseudoHull,
+            detail: "its hull triangulation takes each point once, and touching rings share points"
+                .to_string(),
+        });
+    }
     let n = polygon.len();
     let points = polygon.points();
     let hull = hull_cycle(points);

@@ -3,4 +3,5 @@ pub mod decimal;
 pub mod kernel;
 pub mod polygon;
 pub mod status;
+pub(crate) mod touch;
 pub mod validate;

@@ -118,6 +118,11 @@ pub struct Polygon {
     ring_of: Vec<u32>,
     input_vertices: usize,
     grid: Grid,
+    /// With touching rings: the input ring of each stored vertex (`ring_of` then numbers the
+    /// boundary walks); empty otherwise.
+    source_ring: Vec<u32>,
+    /// The number of touches joining rings into walks (input rings minus walks).
+    touches: usize,
 }
 
 impl Polygon {
@@ -137,12 +142,70 @@ impl Polygon {
         raw: &RawPolygon,
     ) -> Result<(Polygon, Vec<Warning>), Vec<InvalidPolygon>> {
         let (polygon, warnings) = Polygon::build(raw).map_err(|e| vec![e])?;
-        let errors = validate::errors(&polygon);
-        if errors.is_empty() {
-            Ok((polygon, warnings))
-        } else {
-            Err(errors)
+        let contacts = validate::touching(&polygon)?;
+        if !contacts.any() {
+            return Ok((polygon, warnings));
         }
+        Ok((super::touch::walks(polygon, &contacts)?, warnings))
+    }
+
+    /// The same polygon with other rings (points and input numbers, outer ring first); the
+    /// rings' winding is kept as given.
+    pub(super) fn with_rings(&self, rings: &[Vec<(Point, usize)>]) -> Polygon {
+        let total = rings.iter().map(Vec::len).sum();
+        let mut p = Polygon {
+            points: Vec::with_capacity(total),
+            ids: Vec::with_capacity(total),
+            ring_starts: Vec::with_capacity(rings.len() + 1),
+            ring_of: Vec::with_capacity(total),
+            input_vertices: self.input_vertices,
+            grid: self.grid,
+            source_ring: Vec::new(),
+            touches: 0,
+        };
+        for (r, ring) in rings.iter().enumerate() {
+            p.ring_starts.push(p.points.len());
+            for &(q, id) in ring {
+                p.points.push(q);
+                p.ids.push(id);
+                p.ring_of.push(r as u32);
+            }
+        }
+        p.ring_starts.push(p.points.len());
+        p
+    }
+
+    /// The boundary walks of touching rings: stored vertices `order` (walk after walk, each
+    /// starting at `starts[w]`), each keeping its point, input number and input ring.
+    pub(super) fn relinked(&self, order: &[usize], starts: &[usize], touches: usize) -> Polygon {
+        let mut ring_of = vec![0u32; order.len()];
+        for (w, &start) in starts.iter().enumerate() {
+            let end = starts.get(w + 1).copied().unwrap_or(order.len());
+            ring_of[start..end].fill(w as u32);
+        }
+        let mut ring_starts = starts.to_vec();
+        ring_starts.push(order.len());
+        Polygon {
+            points: order.iter().map(|&i| self.points[i]).collect(),
+            ids: order.iter().map(|&i| self.ids[i]).collect(),
+            ring_starts,
+            ring_of,
+            input_vertices: self.input_vertices,
+            grid: self.grid,
+            source_ring: order.iter().map(|&i| self.ring_of[i]).collect(),
+            touches,
+        }
+    }
+
+    /// The number of holes of the input (hole walks plus touches).
+    pub fn input_holes(&self) -> usize {
+        self.holes() + self.touches
+    }
+
+    /// The number of touches: how many fewer boundary walks than input rings (0 without
+    /// touching rings). Each joins two boundary components and lowers the plain count by 2.
+    pub fn touches(&self) -> usize {
+        self.touches
     }
 
     /// One ring of grid points as they are (no validation, no winding change; ids 0, 1, ..), for
@@ -156,6 +219,8 @@ impl Polygon {
             ring_of: vec![0; k],
             input_vertices: k,
             grid,
+            source_ring: Vec::new(),
+            touches: 0,
         }
     }
 
@@ -179,6 +244,8 @@ impl Polygon {
             ring_of: Vec::with_capacity(total),
             input_vertices: 0,
             grid,
+            source_ring: Vec::new(),
+            touches: 0,
         };
         let mut warnings = Vec::new();
         let mut values = grid_values.0.into_iter();
@@ -246,7 +313,8 @@ impl Polygon {
         self.points.is_empty()
     }
 
-    /// Number of holes (w).
+    /// Number of holes (w); with touching rings, of hole walks (boundary components but the
+    /// outer one).
     pub fn holes(&self) -> usize {
         self.ring_starts.len() - 2
     }
@@ -273,15 +341,19 @@ impl Polygon {
         self.ids[i]
     }
 
-    /// The index of the ring holding vertex `i` (0 = outer).
+    /// The index of the ring (with touching rings: the boundary walk) holding vertex `i` (0 =
+    /// outer).
     #[inline]
     pub fn ring_index(&self, i: usize) -> usize {
         self.ring_of[i] as usize
     }
 
-    /// The ring holding vertex `i`.
+    /// The input ring holding vertex `i` (for messages; with touching rings not the walk).
     pub fn ring(&self, i: usize) -> Ring {
-        Ring::from_index(self.ring_index(i))
+        match self.source_ring.get(i) {
+            Some(&r) => Ring::from_index(r as usize),
+            None => Ring::from_index(self.ring_index(i)),
+        }
     }
 
     /// The stored index of the first vertex of each ring, outer ring first (so the first is 0);
@@ -369,7 +441,9 @@ impl Polygon {
     /// Checks the documented invariants (tests only).
     #[cfg(test)]
     pub(crate) fn check_invariants(&self) {
-        assert!(validate::errors(self).is_empty());
+        if self.touches == 0 {
+            assert!(validate::errors(self).is_empty());
+        }
         for r in 0..self.ring_starts.len() - 1 {
             let range = self.ring_range(r);
             assert!(range.len() >= 3);

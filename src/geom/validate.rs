@@ -95,6 +95,36 @@ pub enum InvalidPolygon {
         /// The hole around it.
         container: usize,
     },
+    /// Two rings leave a common point along the same direction (they share a stretch of edge).
+    #[error("rings overlap: {a} and {b} at {at} both run towards {towards} (rings may touch at single points only)")]
+    SharedStretch {
+        /// The first ring's vertex (or edge) at the point.
+        a: String,
+        /// The second one.
+        b: String,
+        /// The common point.
+        at: String,
+        /// Where both run from there.
+        towards: String,
+    },
+    /// Two rings meet at a point where they cross, or where one enters the other.
+    #[error("rings cross at a touch point: {a} and {b} meet at {at}, and one passes into the other there")]
+    TouchCrossing {
+        /// The first ring's vertex (or edge) at the point.
+        a: String,
+        /// The second one.
+        b: String,
+        /// The common point.
+        at: String,
+    },
+    /// Touches close a cycle of rings, which encloses a piece of the interior.
+    #[error("touching rings cut the interior in two: {rings} touch in a cycle at {points}, enclosing a piece of the interior")]
+    CutInterior {
+        /// The rings of the cycle.
+        rings: String,
+        /// Its touch points.
+        points: String,
+    },
     /// The outer ring inside one of the holes.
     #[error(
         "the outer ring lies inside hole {hole} (is the first ring really the outer boundary?)"
@@ -172,12 +202,56 @@ const SMALL_RING: usize = 32;
 
 /// [`errors`], with the pair-by-pair check of small rings on or off (the tests compare both).
 pub(crate) fn errors_with(polygon: &Polygon, small_rings_by_pairs: bool) -> Vec<InvalidPolygon> {
+    match scan(polygon, small_rings_by_pairs, false) {
+        Ok(_) => Vec::new(),
+        Err(errors) => errors,
+    }
+}
+
+/// The contacts between rings that OGC allows, found by [`touching`]: each to be checked at its
+/// point by [`crate::geom::touch`].
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Contacts {
+    /// `(edge, vertex)`: `vertex` (of another ring) lies strictly inside `edge` (`edge ->
+    /// next(edge)`).
+    pub on_edge: Vec<(usize, usize)>,
+    /// Whether two vertices of different rings share a point.
+    pub shared_vertices: bool,
+    /// For each ring, what the sweep saw just below its lowest-leftmost vertex (see `sweep`).
+    pub below: Vec<Option<(usize, bool)>>,
+}
+
+impl Contacts {
+    /// Whether the rings touch at all.
+    pub fn any(&self) -> bool {
+        self.shared_vertices || !self.on_edge.is_empty()
+    }
+}
+
+/// Like [`errors`], but rings may touch each other at single points: a vertex of both, or a
+/// vertex of one strictly inside an edge of the other. Those contacts are returned (not judged:
+/// [`crate::geom::touch`] checks them at their points and as a whole); every other problem is an
+/// error as in [`errors`]. Misplaced rings are judged here only when nothing touches.
+pub(crate) fn touching(polygon: &Polygon) -> Result<Contacts, Vec<InvalidPolygon>> {
+    scan(polygon, true, true)
+}
+
+fn scan(
+    polygon: &Polygon,
+    small_rings_by_pairs: bool,
+    allow_touches: bool,
+) -> Result<Contacts, Vec<InvalidPolygon>> {
     let mut errors = spikes(polygon);
+    let mut contacts = Contacts::default();
     let mut order: Vec<usize> = (0..polygon.len()).collect();
     order.sort_unstable_by_key(|&i| (polygon.point(i), i));
     for pair in order.windows(2) {
         let (i, j) = (pair[0], pair[1]);
         if polygon.point(i) == polygon.point(j) {
+            if allow_touches && polygon.ring_index(i) != polygon.ring_index(j) {
+                contacts.shared_vertices = true;
+                continue;
+            }
             errors.push(InvalidPolygon::RepeatedVertex {
                 ring_a: polygon.ring(i),
                 vertex_a: polygon.id(i),
@@ -188,7 +262,7 @@ pub(crate) fn errors_with(polygon: &Polygon, small_rings_by_pairs: bool) -> Vec<
         }
     }
     if !errors.is_empty() {
-        return errors;
+        return Err(errors);
     }
     // One ring: valid exactly when no two non-adjacent edges meet (nothing can be misplaced).
     // If some do, the sweep below finds and reports the leftmost contact, as for any polygon.
@@ -197,12 +271,61 @@ pub(crate) fn errors_with(polygon: &Polygon, small_rings_by_pairs: bool) -> Vec<
         && polygon.len() <= SMALL_RING
         && no_two_edges_meet(polygon)
     {
-        return errors;
+        return Ok(contacts);
     }
-    match sweep(polygon, &order) {
-        Err(e) => vec![e],
-        Ok(parents) => nesting_errors(&parents),
+    let mut found = allow_touches.then(Vec::new);
+    let below = sweep(polygon, &order, &mut found).map_err(|e| vec![e])?;
+    contacts.on_edge = found.unwrap_or_default();
+    contacts.on_edge.sort_unstable();
+    contacts.on_edge.dedup();
+    if contacts.any() {
+        contacts.below = below;
+        return Ok(contacts);
     }
+    let errors = nesting_errors(&parents(&below, &[]));
+    if errors.is_empty() {
+        Ok(contacts)
+    } else {
+        Err(errors)
+    }
+}
+
+/// Each ring's enclosing ring (`None`: none) from what the sweep saw below each ring's first
+/// vertex (`below[r]`: the ring of the edge below and whether that ring encloses the region above
+/// the edge). Rings in `fixed` (touching others, their place judged elsewhere) are taken to be
+/// where they belong: the outer ring in nothing, a hole in the outer ring.
+pub(crate) fn parents(below: &[Option<(usize, bool)>], fixed: &[bool]) -> Vec<Option<usize>> {
+    let mut parent: Vec<Option<usize>> = vec![None; below.len()];
+    // A ring's `below` names a ring whose first vertex the sweep met earlier: resolve in that
+    // order (the order of first vertices).
+    let mut order: Vec<usize> = (0..below.len()).collect();
+    let mut depth = vec![usize::MAX; below.len()];
+    fn resolve(r: usize, below: &[Option<(usize, bool)>], depth: &mut [usize]) -> usize {
+        if depth[r] == usize::MAX {
+            depth[r] = 0; // guards against a cycle, which the sweep cannot make
+            depth[r] = match below[r] {
+                Some((owner, _)) if owner != r => resolve(owner, below, depth) + 1,
+                _ => 0,
+            };
+        }
+        depth[r]
+    }
+    for r in 0..below.len() {
+        resolve(r, below, &mut depth);
+    }
+    order.sort_by_key(|&r| depth[r]);
+    for r in order {
+        parent[r] = if fixed.get(r).copied().unwrap_or(false) {
+            (r != 0).then_some(0)
+        } else {
+            match below[r] {
+                None => None,
+                Some((owner, true)) => Some(owner),
+                Some((owner, false)) => parent[owner],
+            }
+        };
+    }
+    parent
 }
 
 /// Whether no two non-adjacent edges of `polygon` share a point, testing every pair: O(n^2).
@@ -307,10 +430,17 @@ impl Ord for Cut {
     }
 }
 
-/// The sweep: the leftmost forbidden contact, or the ring enclosing each ring (`None`: none).
-fn sweep(polygon: &Polygon, order: &[usize]) -> Result<Vec<Option<usize>>, InvalidPolygon> {
+/// The sweep: the leftmost forbidden contact, or for each ring what lies just below its first
+/// vertex (`None`: nothing; else the ring of the edge below and whether that ring encloses the
+/// region above the edge). With `touches`, contacts OGC allows between rings are collected there
+/// instead of being errors.
+fn sweep(
+    polygon: &Polygon,
+    order: &[usize],
+    touches: &mut Option<Vec<(usize, usize)>>,
+) -> Result<Vec<Option<(usize, bool)>>, InvalidPolygon> {
     let rings = polygon.holes() + 1;
-    let mut parent: Vec<Option<usize>> = vec![None; rings];
+    let mut below_of: Vec<Option<(usize, bool)>> = vec![None; rings];
     let mut seen = vec![false; rings];
     let mut status: Status<Cut> = Status::new();
     // The status handle of each edge present (edges are numbered by their first vertex).
@@ -332,11 +462,7 @@ fn sweep(polygon: &Polygon, order: &[usize]) -> Result<Vec<Option<usize>>, Inval
                 // A ring encloses the region on the left of its edges if it is the outer ring
                 // (counter-clockwise), on the right if it is a hole (clockwise).
                 let enclosed_above = forward == (owner == 0);
-                parent[r] = if enclosed_above {
-                    Some(owner)
-                } else {
-                    parent[owner]
-                };
+                below_of[r] = Some((owner, enclosed_above));
             }
         }
         let edges = [polygon.prev(i), i];
@@ -349,7 +475,7 @@ fn sweep(polygon: &Polygon, order: &[usize]) -> Result<Vec<Option<usize>>, Inval
                 let below = status.prev(h).map(|b| status.key(b).edge);
                 status.remove(h);
                 if let (Some(a), Some(b)) = (above, below) {
-                    test(polygon, a, b)?;
+                    test(polygon, a, b, touches)?;
                 }
             }
         }
@@ -359,19 +485,26 @@ fn sweep(polygon: &Polygon, order: &[usize]) -> Result<Vec<Option<usize>>, Inval
                 let h = status.insert(cut);
                 handle[e] = Some(h);
                 if let Some(above) = status.next(h) {
-                    test(polygon, e, status.key(above).edge)?;
+                    test(polygon, e, status.key(above).edge, touches)?;
                 }
                 if let Some(below) = status.prev(h) {
-                    test(polygon, e, status.key(below).edge)?;
+                    test(polygon, e, status.key(below).edge, touches)?;
                 }
             }
         }
     }
-    Ok(parent)
+    Ok(below_of)
 }
 
-/// Whether edges `e` and `f` meet where they must not.
-fn test(polygon: &Polygon, e: usize, f: usize) -> Result<(), InvalidPolygon> {
+/// Whether edges `e` and `f` meet where they must not. With `touches`, a single common point of
+/// edges of different rings that is a vertex of one of them is allowed: recorded there when it
+/// lies strictly inside the other edge (a shared vertex is found by sorting).
+fn test(
+    polygon: &Polygon,
+    e: usize,
+    f: usize,
+    touches: &mut Option<Vec<(usize, usize)>>,
+) -> Result<(), InvalidPolygon> {
     if polygon.next(e) == f || polygon.next(f) == e {
         return Ok(()); // neighbours share their common vertex; spikes are reported separately
     }
@@ -382,6 +515,22 @@ fn test(polygon: &Polygon, e: usize, f: usize) -> Result<(), InvalidPolygon> {
         return Ok(());
     }
     let (e1, f1) = (polygon.next(e), polygon.next(f));
+    if let Some(found) = touches.as_mut() {
+        if contact == SegmentContact::Touch && polygon.ring_index(e) != polygon.ring_index(f) {
+            use super::kernel::strictly_between;
+            for (edge, (s, t), v) in [
+                (e, (a, b), f),
+                (e, (a, b), f1),
+                (f, (c, d), e),
+                (f, (c, d), e1),
+            ] {
+                if strictly_between(s, polygon.point(v), t) {
+                    found.push((edge, v));
+                }
+            }
+            return Ok(());
+        }
+    }
     let at = match contact {
         SegmentContact::Cross => {
             // A constructed point, for the message only; no decision depends on it.

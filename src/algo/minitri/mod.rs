@@ -55,6 +55,9 @@ pub fn triangulate_within(
     polygon: &Polygon,
     deadline: Option<Instant>,
 ) -> Result<Triangulation, TriangulateError> {
+    if polygon.touches() > 0 {
+        return super::touching(polygon, Algorithm::Minitri);
+    }
     if polygon.holes() > 0 {
         return triangulate_general(polygon, deadline);
     }

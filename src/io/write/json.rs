@@ -144,7 +144,7 @@ fn triangle_fields(
         ("index", json(&index)),
         ("algorithm", json(t.algorithm.name())),
         ("vertices", json(&polygon.len())),
-        ("holes", json(&polygon.holes())),
+        ("holes", json(&polygon.input_holes())),
         ("triangle_count", json(&t.triangles.len())),
         ("degenerate_count", json(&t.degenerate.len())),
         ("triangles", json(&ids(polygon, &t.triangles))),
@@ -157,6 +157,7 @@ fn triangle_fields(
             format!("{{\"lower\": {lower}, \"upper\": {upper}}}")
         }),
     ];
+    touches_field(&mut fields, polygon);
     if let Some(lower) = t.lower_bound {
         // A search cut short: what is proved about the minimum, right after `optimal`.
         let after = fields.iter().position(|(name, _)| *name == "optimal");
@@ -164,6 +165,18 @@ fn triangle_fields(
         fields.insert(at, ("lower_bound", json(&lower)));
     }
     fields
+}
+
+/// `touches` (how many touches join rings into boundary walks), right after `holes`, for a
+/// polygon whose rings touch (absent otherwise, so outputs without touches are unchanged).
+fn touches_field(fields: &mut Vec<(&'static str, String)>, polygon: &Polygon) {
+    if polygon.touches() > 0 {
+        let at = fields
+            .iter()
+            .position(|(name, _)| *name == "holes")
+            .map_or(fields.len(), |i| i + 1);
+        fields.insert(at, ("touches", json(&polygon.touches())));
+    }
 }
 
 /// The fields of a pseudotriangulated polygon (`pseudo`, `pseudo-hull`), in order: no triangle
@@ -198,10 +211,11 @@ fn pseudo_fields(
         ("index", json(&index)),
         ("algorithm", json(algorithm.name())),
         ("vertices", json(&n)),
-        ("holes", json(&polygon.holes())),
+        ("holes", json(&polygon.input_holes())),
         ("pseudotriangle_count", json(&p.faces.len())),
         ("edge_count", json(&p.edge_count)),
     ];
+    touches_field(&mut fields, polygon);
     if let Some(h) = &p.hull {
         fields.push(("reflex_vertices", json(&h.reflex_vertices)));
         fields.push(("big_angles", json(&h.big_angles)));

@@ -1,0 +1,321 @@
+//! Triangulations of polygons whose rings touch: boundary walks that visit a point once per
+//! interior sector around it (see [`crate::geom::touch`] and `docs/touching.md`).
+//!
+//! Input contract: a valid [`Polygon`] with `touches() > 0`: walks, outer one counter-clockwise,
+//! hole walks clockwise, interior on the left of every edge; stored vertices at one point
+//! ("copies") have pairwise interior-disjoint angles (sectors) separated by wedges of positive
+//! angle outside the region; no two consecutive stored vertices share a point.
+//! Output guarantee: [`plain`] gives `n + 2w - 2` nondegenerate counter-clockwise triangles (n
+//! stored vertices, copies counted, w hole walks) covering the region, as stored indices, each
+//! corner the copy whose sector holds the triangle there; [`minimum`] the exact minimum of a
+//! polygon whose rings all join the outer ring (one walk), by the DP of [`super::asano`] over the
+//! walk. Every decision is an exact orientation test.
+//!
+//! Method. A segment between two stored vertices is a *chord* of the walk when it leaves each end
+//! inside that copy's closed angle, crosses no edge properly, and passes each point it contains
+//! inside the closed angle of one copy there (so it stays in the closed region: away from
+//! vertices nothing but a proper crossing can take it out, at a vertex it stays in that copy's
+//! sector). [`plain`] first joins each hole walk to the outer walk by a bridge (a chord from the
+//! hole's highest point, as earcut does; the walk then passes both ends twice), then clips ears:
+//! an ear `p v q` is a strict left turn at `v` whose closed triangle holds no other vertex except
+//! copies of its corners, leaving `p` and `q` strictly inside their angles (a copy of a corner
+//! has its own sector, disjoint from the triangle's). Both theorems behind it (a bridge exists
+//! from a hole's highest point, a weakly simple polygon of more than 3 vertices has an ear) are
+//! those of simple polygons applied to the polygon with each copy moved an infinitesimal step
+//! into its sector, which is simple and has the same triangulations.
+//!
+//! Complexity: O(n^2) for [`plain`] in practice (each ear test scans the remaining vertices),
+//! O(n^3) worst case; O(n^3) time and O(n^2) memory for [`minimum`] (chord table by direct
+//! tests), hence its limit [`WALK_DP_LIMIT`]. Chen & Chang's steps and the O(n log n) monotone
+//! sweep do not yet run on walks.
+
+use super::asano::solve_walk;
+use crate::geom::kernel::{cross, dot, in_closed_wedge, properly_cross, strictly_between, Point};
+use crate::geom::polygon::Polygon;
+use std::collections::HashMap;
+
+/// Triangles as stored vertex indices.
+pub type Triangles = Vec<[usize; 3]>;
+
+/// The largest walk (stored vertices, copies counted) [`minimum`] takes: its chord table costs
+/// O(n^3) direct tests.
+pub const WALK_DP_LIMIT: usize = 300;
+
+/// Whether `t` lies strictly inside the angle at `w` from `next` counter-clockwise to `prev`
+/// (closed angle minus the direction of `prev`: the ear's side `p q` may not run back along the
+/// edge into `p`).
+fn strictly_inside(prev: Point, w: Point, next: Point, t: Point) -> bool {
+    in_closed_wedge(prev, w, next, t)
+        && !(cross(w, prev, t) == 0 && dot(w, prev, t) > 0)
+        && !(cross(w, next, t) == 0 && dot(w, next, t) > 0)
+}
+
+/// A plain triangulation of a polygon with touching rings (see the module documentation).
+///
+/// # Errors
+/// `Err(what)` if no ear or bridge is found, which the theory excludes (a broken invariant,
+/// reported rather than a wrong answer).
+pub fn plain(polygon: &Polygon) -> Result<Vec<[usize; 3]>, String> {
+    let pt = |i: usize| polygon.point(i);
+    let walks: Vec<Vec<usize>> = (0..=polygon.holes())
+        .map(|w| polygon.ring_range(w).collect())
+        .collect();
+    let mut outer = walks[0].clone();
+    let mut holes: Vec<Vec<usize>> = walks[1..].to_vec();
+    // Highest (lexicographically greatest (x, y)) point first, as earcut joins holes.
+    holes.sort_by_key(|h| std::cmp::Reverse(h.iter().map(|&i| pt(i)).max()));
+    for k in 0..holes.len() {
+        let hole = &holes[k];
+        let top = hole.iter().map(|&i| pt(i)).max().unwrap_or_default();
+        let mut candidates: Vec<usize> = (0..outer.len()).collect();
+        let dist = |i: usize| {
+            let (dx, dy) = (
+                i128::from(pt(i).x) - i128::from(top.x),
+                i128::from(pt(i).y) - i128::from(top.y),
+            );
+            dx * dx + dy * dy
+        };
+        candidates.sort_by_key(|&o| dist(outer[o]));
+        let m = hole.len();
+        let rest: Vec<&Vec<usize>> = holes[k + 1..].iter().collect();
+        let mut bridge = None;
+        'search: for &o in &candidates {
+            let v = outer[o];
+            for h in (0..m).filter(|&h| pt(hole[h]) == top) {
+                let hv = (
+                    pt(hole[(h + m - 1) % m]),
+                    pt(hole[h]),
+                    pt(hole[(h + 1) % m]),
+                );
+                let n = outer.len();
+                let ov = (pt(outer[(o + n - 1) % n]), pt(v), pt(outer[(o + 1) % n]));
+                if pt(v) != top
+                    && strictly_inside(hv.0, hv.1, hv.2, pt(v))
+                    && strictly_inside(ov.0, ov.1, ov.2, top)
+                    && clear(
+                        polygon,
+                        top,
+                        pt(v),
+                        std::iter::once(&outer)
+                            .chain(std::iter::once(hole))
+                            .chain(rest.iter().copied()),
+                    )
+                {
+                    bridge = Some((o, h));
+                    break 'search;
+                }
+            }
+        }
+        let Some((o, h)) = bridge else {
+            return Err(format!("no bridge from hole walk {} found", k + 1));
+        };
+        let mut joined = Vec::with_capacity(outer.len() + m + 2);
+        joined.extend_from_slice(&outer[..=o]);
+        joined.extend((0..=m).map(|s| hole[(h + s) % m]));
+        joined.extend_from_slice(&outer[o..]);
+        outer = joined;
+    }
+    clip(polygon, &outer)
+}
+
+/// Whether the open segment `a b` contains no vertex of `cycles` and crosses none of their
+/// edges properly.
+fn clear<'a>(
+    polygon: &Polygon,
+    a: Point,
+    b: Point,
+    cycles: impl Iterator<Item = &'a Vec<usize>>,
+) -> bool {
+    cycles.into_iter().all(|c| {
+        (0..c.len()).all(|s| {
+            let (u, w) = (polygon.point(c[s]), polygon.point(c[(s + 1) % c.len()]));
+            !strictly_between(a, u, b) && !properly_cross(a, b, u, w)
+        })
+    })
+}
+
+/// Ear clipping of one weakly simple cycle of stored vertices (see the module documentation).
+fn clip(polygon: &Polygon, cycle: &[usize]) -> Result<Vec<[usize; 3]>, String> {
+    let n = cycle.len();
+    let pt = |k: usize| polygon.point(cycle[k]);
+    let mut next: Vec<usize> = (0..n).map(|k| (k + 1) % n).collect();
+    let mut prev: Vec<usize> = (0..n).map(|k| (k + n - 1) % n).collect();
+    let mut alive = vec![true; n];
+    let mut triangles = Vec::with_capacity(n.saturating_sub(2));
+    let mut remaining = n;
+    let mut v = 0;
+    let mut misses = 0;
+    while remaining > 3 {
+        let (p, q) = (prev[v], next[v]);
+        let (a, b, c) = (pt(p), pt(v), pt(q));
+        let ear = cross(a, b, c) > 0
+            && strictly_inside(pt(prev[p]), a, b, c)
+            && strictly_inside(b, c, pt(next[q]), a)
+            && (0..n).all(|r| {
+                !alive[r] || r == p || r == v || r == q || {
+                    let s = pt(r);
+                    s == a
+                        || s == b
+                        || s == c
+                        || !(cross(a, b, s) >= 0 && cross(b, c, s) >= 0 && cross(c, a, s) >= 0)
+                }
+            });
+        if ear {
+            triangles.push([cycle[p], cycle[v], cycle[q]]);
+            next[p] = q;
+            prev[q] = p;
+            alive[v] = false;
+            remaining -= 1;
+            misses = 0;
+            v = p;
+        } else {
+            misses += 1;
+            if misses > remaining {
+                return Err(format!("no ear among {remaining} vertices"));
+            }
+            v = q;
+        }
+    }
+    if remaining == 3 {
+        let (p, q) = (prev[v], next[v]);
+        if cross(pt(p), pt(v), pt(q)) > 0 {
+            triangles.push([cycle[p], cycle[v], cycle[q]]);
+        } else {
+            return Err("the last three vertices do not make a triangle".to_string());
+        }
+    }
+    Ok(triangles)
+}
+
+/// Whether the segment between stored vertices `i` and `j` is a chord of the walks (see the
+/// module documentation; it may run along edges and pass vertices).
+pub(crate) fn is_chord(polygon: &Polygon, i: usize, j: usize) -> bool {
+    let (a, b) = (polygon.point(i), polygon.point(j));
+    if a == b {
+        return false;
+    }
+    let wedge = |v: usize, t: Point| {
+        in_closed_wedge(
+            polygon.point(polygon.prev(v)),
+            polygon.point(v),
+            polygon.point(polygon.next(v)),
+            t,
+        )
+    };
+    if !wedge(i, b) || !wedge(j, a) {
+        return false;
+    }
+    let mut passed: HashMap<Point, bool> = HashMap::new();
+    for v in 0..polygon.len() {
+        let (u, w) = (polygon.point(v), polygon.point(polygon.next(v)));
+        if properly_cross(a, b, u, w) {
+            return false;
+        }
+        if strictly_between(a, u, b) {
+            let ok = wedge(v, a) && wedge(v, b);
+            *passed.entry(u).or_insert(false) |= ok;
+        }
+    }
+    passed.values().all(|&ok| ok)
+}
+
+/// The exact minimum triangulation of a polygon whose rings all join the outer ring (one walk,
+/// at most [`WALK_DP_LIMIT`] stored vertices): the nondegenerate triangles and the degenerate
+/// ones (as [`super::Triangulation`] has them), or `None` beyond the limit or with hole walks.
+pub fn minimum(polygon: &Polygon) -> Option<(Triangles, Triangles)> {
+    let n = polygon.len();
+    if polygon.holes() > 0 || n > WALK_DP_LIMIT {
+        return None;
+    }
+    let mut chord = vec![false; n * n];
+    for i in 0..n {
+        for j in i + 2..n {
+            let c = is_chord(polygon, i, j);
+            chord[i * n + j] = c;
+            chord[j * n + i] = c;
+        }
+    }
+    let lines: Vec<Vec<u16>> = (0..n).map(|i| lines_through(polygon, i)).collect();
+    let walk = solve_walk(
+        n,
+        |i| polygon.point(i),
+        |i, j| chord[i * n + j],
+        |i| &lines[i],
+    )?;
+    let degenerate = t_junctions(polygon, &walk.triangles);
+    if degenerate.len() != walk.dummies {
+        return None; // not seen; the caller falls back to the plain triangulation
+    }
+    Some((walk.triangles, degenerate))
+}
+
+/// Line numbers through stored vertex `i` (as `solve_walk` wants them: equal for `q` and `r`
+/// exactly when `i`, `q`, `r` are collinear; vertices at `i`'s own point get numbers of their
+/// own).
+fn lines_through(polygon: &Polygon, i: usize) -> Vec<u16> {
+    let n = polygon.len();
+    let c = polygon.point(i);
+    // Each direction turned into the upper half-plane, so opposite directions are one line.
+    let key = |q: usize| {
+        let p = polygon.point(q);
+        let (dx, dy) = (p.x - c.x, p.y - c.y);
+        if dy < 0 || (dy == 0 && dx < 0) {
+            Point::new(c.x - dx, c.y - dy)
+        } else {
+            p
+        }
+    };
+    let mut others: Vec<usize> = (0..n).filter(|&q| polygon.point(q) != c).collect();
+    others.sort_by(|&q, &r| 0.cmp(&cross(c, key(q), key(r))));
+    let mut out = vec![0u16; n];
+    let mut line = 0u16;
+    for (k, &q) in others.iter().enumerate() {
+        if k > 0 && cross(c, key(others[k - 1]), key(q)) != 0 {
+            line += 1;
+        }
+        out[q] = line;
+    }
+    for q in (0..n).filter(|&q| polygon.point(q) == c) {
+        line += 1;
+        out[q] = line;
+    }
+    out
+}
+
+/// The degenerate triangles a set of triangles of the walks uses: for each triangle side and
+/// each point strictly inside it, the copy there whose closed angle holds the triangle, with its
+/// neighbours along the side (as [`super::t_junctions`], one copy per point).
+pub(crate) fn t_junctions(polygon: &Polygon, triangles: &[[usize; 3]]) -> Vec<[usize; 3]> {
+    let wedge = |v: usize, t: Point| {
+        in_closed_wedge(
+            polygon.point(polygon.prev(v)),
+            polygon.point(v),
+            polygon.point(polygon.next(v)),
+            t,
+        )
+    };
+    let mut out = Vec::new();
+    for t in triangles {
+        for k in 0..3 {
+            let (s, e, apex) = (t[k], t[(k + 1) % 3], t[(k + 2) % 3]);
+            let (ps, pe, pa) = (polygon.point(s), polygon.point(e), polygon.point(apex));
+            let mut inside: Vec<usize> = (0..polygon.len())
+                .filter(|&v| {
+                    let q = polygon.point(v);
+                    strictly_between(ps, q, pe) && wedge(v, ps) && wedge(v, pe) && wedge(v, pa)
+                })
+                .collect();
+            if inside.is_empty() {
+                continue;
+            }
+            inside.sort_by_key(|&v| dot(ps, polygon.point(v), polygon.point(v)));
+            inside.dedup_by_key(|v| polygon.point(*v));
+            let chain: Vec<usize> = std::iter::once(s)
+                .chain(inside)
+                .chain(std::iter::once(e))
+                .collect();
+            out.extend(chain.windows(3).map(|w| [w[0], w[1], w[2]]));
+        }
+    }
+    out
+}

@@ -1,0 +1,534 @@
+//! Rings that touch (OGC-valid polygons whose holes touch the outer ring or each other at single
+//! points), against oracles written here from scratch that share no code with the crate:
+//!
+//! - acceptance: an O(n^2) check of the OGC rules on the input rings (no crossing or overlap
+//!   between edges of different rings, no ring touching itself, every stretch of a hole between
+//!   vertices strictly inside the outer ring and outside the other holes, every stretch of the
+//!   outer ring outside the holes, the graph of rings and touch points a forest), compared with
+//!   `Polygon::from_raw` on thousands of random polygons on a 7 x 7 grid;
+//! - the minimum: an exhaustive search over sets of triangles on the polygon's distinct points
+//!   whose open interiors meet no edge and lie in the region (one interior point tested), with
+//!   disjoint interiors and total area the region's; every algorithm's output passes the checker
+//!   of `verify.rs`, the exact ones match the search when every ring joins the outer ring, and
+//!   otherwise the reported lower bound is at most the minimum.
+
+use crate::property::general;
+use crate::util::xorshift;
+use minitri::algo::Algorithm;
+use minitri::geom::kernel::{cross, dot, segment_contact, Point, SegmentContact};
+use minitri::{verify, Decimal, Polygon, RawPolygon};
+use std::collections::{BTreeMap, BTreeSet};
+
+type Rings = Vec<Vec<(i64, i64)>>;
+
+fn raw(rings: &Rings) -> RawPolygon {
+    let d = |v: i64| Decimal::parse(&v.to_string()).unwrap();
+    RawPolygon {
+        rings: rings
+            .iter()
+            .map(|r| r.iter().map(|&(x, y)| [d(x), d(y)]).collect())
+            .collect(),
+    }
+}
+
+fn pt(p: (i64, i64)) -> Point {
+    Point::new(p.0, p.1)
+}
+
+fn edges(ring: &[(i64, i64)]) -> impl Iterator<Item = (Point, Point)> + '_ {
+    (0..ring.len()).map(move |i| (pt(ring[i]), pt(ring[(i + 1) % ring.len()])))
+}
+
+/// Whether `q` is strictly inside ring `ring` (`None`: on its boundary). Coordinates doubled by
+/// the caller when `q` is a midpoint.
+fn inside(ring: &[(i64, i64)], q: Point, scale: i64) -> Option<bool> {
+    let mut odd = false;
+    for (a, b) in edges(ring) {
+        let (a, b) = (
+            Point::new(a.x * scale, a.y * scale),
+            Point::new(b.x * scale, b.y * scale),
+        );
+        if cross(a, b, q) == 0 && dot(q, a, b) <= 0 {
+            return None;
+        }
+        if (a.y > q.y) != (b.y > q.y) && (cross(a, b, q) > 0) == (b.y > a.y) {
+            odd = !odd;
+        }
+    }
+    Some(odd)
+}
+
+/// The stretches of each ring's edges between the vertices (of any ring) lying on them.
+fn pieces(rings: &Rings) -> Vec<Vec<(Point, Point)>> {
+    let all: BTreeSet<(i64, i64)> = rings.iter().flatten().copied().collect();
+    rings
+        .iter()
+        .map(|ring| {
+            let mut out = Vec::new();
+            for (a, b) in edges(ring) {
+                let mut on: Vec<Point> = all
+                    .iter()
+                    .map(|&q| pt(q))
+                    .filter(|&q| q != a && q != b && cross(a, b, q) == 0 && dot(q, a, b) < 0)
+                    .collect();
+                on.sort_by_key(|&q| dot(a, q, q));
+                let chain: Vec<Point> = std::iter::once(a)
+                    .chain(on)
+                    .chain(std::iter::once(b))
+                    .collect();
+                out.extend(chain.windows(2).map(|w| (w[0], w[1])));
+            }
+            out
+        })
+        .collect()
+}
+
+/// The OGC rules, directly (see the module documentation). Rings must be of distinct points,
+/// at least 3, non-collinear (the generator makes them so).
+fn ogc_valid(rings: &Rings) -> bool {
+    // Rings simple: non-adjacent edges of one ring disjoint, adjacent ones meeting only at
+    // their common vertex.
+    for ring in rings {
+        let e: Vec<(Point, Point)> = edges(ring).collect();
+        let n = e.len();
+        for i in 0..n {
+            for j in i + 1..n {
+                let adjacent = j == i + 1 || (i == 0 && j == n - 1);
+                let c = segment_contact(e[i].0, e[i].1, e[j].0, e[j].1);
+                if (!adjacent && c != SegmentContact::Disjoint)
+                    || (adjacent && c != SegmentContact::Touch)
+                {
+                    return false;
+                }
+            }
+        }
+    }
+    // Different rings meet at single points only; collect the points.
+    let mut touch: BTreeMap<(i64, i64), BTreeSet<usize>> = BTreeMap::new();
+    for r in 0..rings.len() {
+        for s in r + 1..rings.len() {
+            for (a, b) in edges(&rings[r]) {
+                for (c, d) in edges(&rings[s]) {
+                    match segment_contact(a, b, c, d) {
+                        SegmentContact::Disjoint => {}
+                        SegmentContact::Touch => {
+                            let p = [a, b, c, d]
+                                .into_iter()
+                                .find(|&q| {
+                                    cross(a, b, q) == 0
+                                        && dot(q, a, b) <= 0
+                                        && cross(c, d, q) == 0
+                                        && dot(q, c, d) <= 0
+                                })
+                                .unwrap();
+                            let set = touch.entry((p.x, p.y)).or_default();
+                            set.insert(r);
+                            set.insert(s);
+                        }
+                        _ => return false,
+                    }
+                }
+            }
+        }
+    }
+    // Stretches where they belong.
+    let pieces = pieces(rings);
+    for (r, ps) in pieces.iter().enumerate() {
+        for &(a, b) in ps {
+            let m = Point::new(a.x + b.x, a.y + b.y);
+            for (s, ring) in rings.iter().enumerate() {
+                if s == r {
+                    continue;
+                }
+                let want = r != 0 && s == 0; // a hole's stretch inside the outer ring
+                if inside(ring, m, 2) != Some(want) {
+                    return false;
+                }
+            }
+        }
+    }
+    // The graph of rings and touch points: a forest (edges = nodes - components).
+    let mut root: Vec<usize> = (0..rings.len() + touch.len()).collect();
+    fn find(root: &mut [usize], mut x: usize) -> usize {
+        while root[x] != x {
+            x = root[x];
+        }
+        x
+    }
+    for (k, rs) in touch.values().enumerate() {
+        for &r in rs {
+            let (a, b) = (find(&mut root, rings.len() + k), find(&mut root, r));
+            if a == b {
+                return false;
+            }
+            root[a] = b;
+        }
+    }
+    true
+}
+
+/// The search's fixed data: candidates with their doubled areas, the region's doubled area, the
+/// boundary stretches, whether a stretch lies in a triangle side, whether two triangles are
+/// interior-disjoint.
+type Context<'a> = (
+    &'a [([Point; 3], i128)],
+    i128,
+    &'a [(Point, Point)],
+    &'a dyn Fn((Point, Point), &[Point; 3]) -> bool,
+    &'a dyn Fn(&[Point; 3], &[Point; 3]) -> bool,
+);
+
+/// The fewest triangles tiling the region, by exhaustive search (see the module documentation).
+fn exhaustive_minimum(rings: &Rings) -> usize {
+    let pts: Vec<Point> = rings
+        .iter()
+        .flatten()
+        .copied()
+        .collect::<BTreeSet<_>>()
+        .into_iter()
+        .map(pt)
+        .collect();
+    let all_edges: Vec<(Point, Point)> = rings.iter().flat_map(|r| edges(r)).collect();
+    let in_region = |q: Point| {
+        rings
+            .iter()
+            .enumerate()
+            .all(|(r, ring)| inside(ring, q, 3) == Some(r == 0))
+    };
+    let region_area: i128 = rings
+        .iter()
+        .map(|r| {
+            let s: i128 = edges(r).map(|(a, b)| cross(Point::new(0, 0), a, b)).sum();
+            s.abs()
+        })
+        .enumerate()
+        .map(|(r, s)| if r == 0 { s } else { -s })
+        .sum();
+    let n = pts.len();
+    let mut cands: Vec<([Point; 3], i128)> = Vec::new();
+    for a in 0..n {
+        for b in a + 1..n {
+            for c in b + 1..n {
+                let mut t = [pts[a], pts[b], pts[c]];
+                let mut s = cross(t[0], t[1], t[2]);
+                if s == 0 {
+                    continue;
+                }
+                if s < 0 {
+                    t.swap(1, 2);
+                    s = -s;
+                }
+                // No edge meets the open triangle: a separating line (a side's, or the edge's).
+                let clear = all_edges.iter().all(|&(u, w)| {
+                    (0..3).any(|k| {
+                        cross(t[k], t[(k + 1) % 3], u) <= 0 && cross(t[k], t[(k + 1) % 3], w) <= 0
+                    }) || t.iter().all(|&q| cross(u, w, q) >= 0)
+                        || t.iter().all(|&q| cross(u, w, q) <= 0)
+                });
+                let centroid = Point::new(t[0].x + t[1].x + t[2].x, t[0].y + t[1].y + t[2].y);
+                if clear && in_region(centroid) {
+                    cands.push((t, s));
+                }
+            }
+        }
+    }
+    let disjoint = |t: &[Point; 3], u: &[Point; 3]| {
+        let sep = |s: &[Point; 3], o: &[Point; 3]| {
+            (0..3).any(|k| o.iter().all(|&q| cross(s[k], s[(k + 1) % 3], q) <= 0))
+        };
+        sep(t, u) || sep(u, t)
+    };
+    // Every stretch of boundary lies in a side of exactly one triangle: the search's guide.
+    let stretches: Vec<(Point, Point)> = pieces(rings).into_iter().flatten().collect();
+    let on_side = |e: (Point, Point), t: &[Point; 3]| {
+        (0..3).any(|k| {
+            let (s, u) = (t[k], t[(k + 1) % 3]);
+            cross(s, u, e.0) == 0
+                && cross(s, u, e.1) == 0
+                && dot(e.0, s, u) <= 0
+                && dot(e.1, s, u) <= 0
+        })
+    };
+    fn search(
+        chosen: &mut Vec<usize>,
+        interior_from: usize,
+        sum: i128,
+        limit: usize,
+        ctx: &Context,
+    ) -> bool {
+        let (cands, area, stretches, on_side, disjoint) = ctx;
+        if sum == *area {
+            return true;
+        }
+        if sum > *area || chosen.len() == limit {
+            return false;
+        }
+        let fits = |c: usize| chosen.iter().all(|&o| disjoint(&cands[c].0, &cands[o].0));
+        let open = stretches
+            .iter()
+            .find(|&&e| !chosen.iter().any(|&c| on_side(e, &cands[c].0)));
+        let options: Vec<usize> = match open {
+            Some(&e) => (0..cands.len())
+                .filter(|&c| on_side(e, &cands[c].0) && fits(c))
+                .collect(),
+            // Every stretch covered but area left: interior triangles (none needed so far in
+            // tiny cases, but tried in increasing order).
+            None => (interior_from..cands.len())
+                .filter(|&c| !chosen.contains(&c) && fits(c))
+                .collect(),
+        };
+        for c in options {
+            chosen.push(c);
+            let next_from = if open.is_none() { c + 1 } else { interior_from };
+            let found = search(chosen, next_from, sum + cands[c].1, limit, ctx);
+            chosen.pop();
+            if found {
+                return true;
+            }
+        }
+        false
+    }
+    let ctx: Context = (&cands, region_area, &stretches, &on_side, &disjoint);
+    (1..=3 * n)
+        .find(|&limit| search(&mut Vec::new(), 0, 0, limit, &ctx))
+        .unwrap_or_else(|| panic!("no tiling found for {rings:?}"))
+}
+
+/// A random polygon on the grid 0..=6: a grown outer ring and 1 to 3 random triangles or
+/// quadrilaterals as holes, their corners often taken from the other rings' vertices or the grid
+/// points on their edges, so that touches are common. Not necessarily valid.
+fn random_rings(rnd: &mut impl FnMut(i64) -> i64) -> Option<Rings> {
+    let g = |rnd: &mut dyn FnMut(i64) -> i64| (rnd(7), rnd(7));
+    let base = [g(rnd), g(rnd), g(rnd)];
+    let ops: Vec<(usize, i64, i64)> = (0..rnd(4))
+        .map(|_| (rnd(8) as usize, rnd(7), rnd(7)))
+        .collect();
+    let mut outer = if rnd(3) == 0 {
+        general(base, &ops)?
+    } else {
+        // A square with a few vertices moved in or added: room for holes.
+        let mut sq = vec![(0, 0), (6, 0), (6, 6), (0, 6)];
+        for &(at, x, y) in &ops {
+            let mut next = sq.clone();
+            next.insert(at % sq.len() + 1, (x, y));
+            if Polygon::from_raw(&raw(&vec![next.clone()])).is_ok() {
+                sq = next;
+            }
+        }
+        sq
+    };
+    outer.dedup();
+    while outer.len() > 1 && outer.first() == outer.last() {
+        outer.pop();
+    }
+    if outer.len() < 3 || outer.iter().collect::<BTreeSet<_>>().len() != outer.len() {
+        return None;
+    }
+    let mut rings = vec![outer];
+    for _ in 0..1 + rnd(3) {
+        let k = 3 + rnd(2) as usize;
+        let existing: Vec<(i64, i64)> = rings.iter().flatten().copied().collect();
+        // Small holes near an anchor: a vertex of a ring so far (a touch, often) or a grid point.
+        let anchor = if rnd(3) > 0 {
+            existing[rnd(existing.len() as i64) as usize]
+        } else {
+            g(rnd)
+        };
+        let mut hole: Vec<(i64, i64)> = vec![anchor];
+        for _ in 1..k {
+            let p = if rnd(6) == 0 {
+                existing[rnd(existing.len() as i64) as usize]
+            } else {
+                (
+                    (anchor.0 + rnd(5) - 2).clamp(0, 6),
+                    (anchor.1 + rnd(5) - 2).clamp(0, 6),
+                )
+            };
+            if !hole.contains(&p) {
+                hole.push(p);
+            }
+        }
+        if hole.len() >= 3 {
+            rings.push(hole);
+        }
+    }
+    // Rings of the generator: distinct points, not collinear (else skipped).
+    if rings.len() < 2 {
+        return None;
+    }
+    for r in &rings {
+        let collinear = r.iter().all(|&q| cross(pt(r[0]), pt(r[1]), pt(q)) == 0);
+        if collinear {
+            return None;
+        }
+    }
+    Some(rings)
+}
+
+#[test]
+fn acceptance_matches_the_ogc_rules_on_random_polygons() {
+    let mut rnd = xorshift(0x7001_c4e5);
+    let (mut valid, mut touching, mut agree) = (0, 0, 0);
+    for _ in 0..20_000 {
+        let Some(rings) = random_rings(&mut rnd) else {
+            continue;
+        };
+        let ours = Polygon::from_raw(&raw(&rings));
+        let theirs = ogc_valid(&rings);
+        assert_eq!(
+            ours.is_ok(),
+            theirs,
+            "{rings:?}: minitri says {:?}",
+            ours.as_ref().err().map(ToString::to_string)
+        );
+        agree += 1;
+        if let Ok((p, _)) = ours {
+            valid += 1;
+            touching += usize::from(p.touches() > 0);
+        }
+    }
+    assert!(
+        agree > 13_000 && valid > 500 && touching > 400,
+        "{agree} {valid} {touching}"
+    );
+}
+
+#[test]
+fn every_algorithm_triangulates_touching_rings_and_the_minimum_is_exact() {
+    let mut rnd = xorshift(0x0ace_70c4);
+    let (mut checked, mut one_walk, mut with_hole_walks, mut three_at_a_point) = (0, 0, 0, 0);
+    let mut tries = 0;
+    while checked < 1500 && tries < 300_000 {
+        tries += 1;
+        let Some(rings) = random_rings(&mut rnd) else {
+            continue;
+        };
+        let Ok((p, _)) = Polygon::from_raw(&raw(&rings)) else {
+            continue;
+        };
+        if p.touches() == 0 || p.len() > 12 {
+            continue;
+        }
+        checked += 1;
+        let mut at: BTreeMap<Point, usize> = BTreeMap::new();
+        for i in 0..p.len() {
+            *at.entry(p.point(i)).or_default() += 1;
+        }
+        three_at_a_point += usize::from(at.values().any(|&k| k >= 3));
+        let minimum = exhaustive_minimum(&rings);
+        let plain = p.len() + 2 * p.holes() - 2;
+        for algorithm in [Algorithm::Minitri, Algorithm::Asano, Algorithm::Ear] {
+            let t = minitri::triangulate(&p, algorithm)
+                .unwrap_or_else(|e| panic!("{rings:?} {algorithm}: {e}"));
+            let check = verify::check(&p, &t);
+            assert!(check.valid, "{rings:?} {algorithm}: {:?}", check.problems);
+            assert_eq!(
+                t.triangles.len() + t.degenerate.len(),
+                plain,
+                "{rings:?} {algorithm}"
+            );
+            if algorithm == Algorithm::Ear {
+                assert_eq!(t.triangles.len(), plain);
+            } else if p.holes() == 0 {
+                assert!(t.optimal);
+                assert_eq!(t.triangles.len(), minimum, "{rings:?} {algorithm}");
+            } else {
+                assert!(t.triangles.len() >= minimum);
+                assert!(t.lower_bound.is_some_and(|l| l <= minimum), "{rings:?}");
+            }
+        }
+        if p.holes() == 0 {
+            one_walk += 1;
+        } else {
+            with_hole_walks += 1;
+        }
+    }
+    assert!(
+        checked == 1500 && one_walk > 1000 && with_hole_walks > 10 && three_at_a_point >= 5,
+        "{checked} {one_walk} {with_hole_walks} {three_at_a_point}"
+    );
+}
+
+#[test]
+fn the_issue_example_hole_touching_an_outer_edge() {
+    let rings: Rings = vec![
+        vec![(0, 0), (10, 0), (10, 10), (0, 10)],
+        vec![(0, 5), (3, 3), (3, 7)],
+    ];
+    let (p, _) = Polygon::from_raw(&raw(&rings)).unwrap();
+    assert_eq!(
+        (p.len(), p.holes(), p.touches(), p.input_holes()),
+        (8, 0, 1, 1)
+    );
+    let t = minitri::triangulate(&p, Algorithm::Minitri).unwrap();
+    assert!(t.optimal && verify::check(&p, &t).valid);
+    assert_eq!((t.triangles.len(), t.degenerate.len()), (5, 1));
+    assert_eq!(exhaustive_minimum(&rings), 5);
+}
+
+fn message(rings: &Rings) -> String {
+    Polygon::from_raw(&raw(rings))
+        .err()
+        .map(|e| e.to_string())
+        .unwrap_or_default()
+}
+
+#[test]
+fn rejections_name_rings_and_points() {
+    let square = vec![(0, 0), (10, 0), (10, 10), (0, 10)];
+    // A hole touching the outer ring at two points cuts the interior in two.
+    let two_touches = vec![square.clone(), vec![(0, 5), (5, 0), (5, 5)]];
+    assert_eq!(
+        message(&two_touches),
+        "touching rings cut the interior in two: outer ring, hole 1 touch in a cycle at (0, 5), (5, 0), enclosing a piece of the interior"
+    );
+    // Three holes in a cycle of touches.
+    let cycle = vec![
+        square.clone(),
+        vec![(2, 2), (5, 2), (3, 4)],
+        vec![(5, 2), (8, 2), (7, 4)],
+        vec![(3, 4), (7, 4), (5, 7)],
+    ];
+    let m = message(&cycle);
+    assert!(
+        m.starts_with("touching rings cut the interior in two: hole"),
+        "{m}"
+    );
+    assert!(
+        m.contains("(5, 2)") && m.contains("(3, 4)") && m.contains("(7, 4)"),
+        "{m}"
+    );
+    // Holes sharing a stretch of edge.
+    let shared = vec![
+        square.clone(),
+        vec![(2, 2), (5, 2), (5, 5)],
+        vec![(5, 2), (8, 2), (5, 5)],
+    ];
+    assert!(
+        message(&shared).starts_with("rings overlap"),
+        "{}",
+        message(&shared)
+    );
+    // A hole poking through the outer ring at a vertex it shares with it (crossing there).
+    let crossing = vec![square.clone(), vec![(0, 0), (3, 3), (-1, 3)]];
+    let m = message(&crossing);
+    assert!(!m.is_empty(), "accepted a crossing at a touch point");
+    // A hole inside another, touching it.
+    let nested = vec![
+        square.clone(),
+        vec![(1, 1), (9, 1), (9, 9), (1, 9)],
+        vec![(1, 1), (4, 2), (2, 4)],
+    ];
+    let m = message(&nested);
+    assert!(
+        m.contains("rings cross at a touch point") || m.contains("inside hole"),
+        "{m}"
+    );
+    // A hole outside the outer ring, touching it at a vertex.
+    let outside = vec![square, vec![(10, 10), (12, 10), (12, 12)]];
+    let m = message(&outside);
+    assert!(
+        m.contains("rings cross at a touch point") || m.contains("outside"),
+        "{m}"
+    );
+}
