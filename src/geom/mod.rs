@@ -2,5 +2,6 @@
 pub mod decimal;
 pub mod kernel;
 pub mod polygon;
+pub mod repair;
 pub mod status;
 pub mod validate;
