@@ -79,13 +79,17 @@ pub(crate) struct Repaired {
     pub warnings: Vec<Warning>,
 }
 
+/// A piece of a repaired polygon: valid (with the warnings of building it), or every problem
+/// validation found.
+pub type Piece = Result<(Polygon, Vec<Warning>), Vec<InvalidPolygon>>;
+
 /// One input polygon after `--repair`: each piece, valid or with its problems; what was
 /// repaired; the repeated points dropped.
 #[derive(Clone, Debug)]
 pub struct Pieces {
     /// Each piece (in order: by the smallest input vertex number of its outer ring), as a valid
     /// polygon or with every problem validation found.
-    pub pieces: Vec<Result<(Polygon, Vec<Warning>), Vec<InvalidPolygon>>>,
+    pub pieces: Vec<Piece>,
     /// What was repaired (empty when the input needed nothing).
     pub repairs: Vec<Repair>,
     /// The repeated points dropped (as without `--repair`).
@@ -340,7 +344,7 @@ fn split(r: usize, outer: bool, ring: Vec<Vertex>, grid: &Grid, out: &mut Repair
     let mut result = Vec::with_capacity(count);
     for (i, mut vertices) in loops.into_iter().enumerate() {
         // The outer ring's loops: outer boundaries at even depth; a hole's: holes at even depth.
-        let shell = (depths[i] % 2 == 0) == outer;
+        let shell = depths[i].is_multiple_of(2) == outer;
         if i > 0 {
             let what = match (outer, shell) {
                 (true, true) => "a separate polygon",
@@ -426,6 +430,10 @@ fn innermost(shells: &[Loop], hole: &[Vertex]) -> Option<usize> {
     })
 }
 
+/// Two loops sharing edges: the pair (smaller first), how many edges, and the first one (its
+/// loop and the position of its start).
+type Shared = ((usize, usize), usize, (usize, usize));
+
 /// Step 4: edges shared in opposite directions removed and the loops concerned traced again;
 /// the outer boundaries and the holes.
 fn merge(loops: Vec<Loop>, grid: &Grid, out: &mut Repaired) -> (Vec<Loop>, Vec<Loop>) {
@@ -440,7 +448,7 @@ fn merge(loops: Vec<Loop>, grid: &Grid, out: &mut Repaired) -> (Vec<Loop>, Vec<L
     }
     let mut cancelled: Vec<Vec<bool>> = cut.iter().map(|l| vec![false; l.vertices.len()]).collect();
     // For each pair of loops, how many edges they share and the first one.
-    let mut shared: Vec<((usize, usize), usize, (usize, usize))> = Vec::new();
+    let mut shared: Vec<Shared> = Vec::new();
     for (l, lp) in cut.iter().enumerate() {
         for i in 0..lp.vertices.len() {
             let (a, b) = (lp.vertices[i].0, lp.vertices[(i + 1) % lp.vertices.len()].0);
@@ -566,7 +574,7 @@ fn cut_overlaps(loops: &[Loop]) -> Vec<Loop> {
             by_line.push((line_through(a, b).0, l, i));
         }
     }
-    by_line.sort_unstable_by(|x, y| x.0.cmp(&y.0));
+    by_line.sort_unstable_by_key(|x| x.0);
     // Cuts of each edge: (loop, position) -> vertices to insert.
     let mut cuts: HashMap<(usize, usize), Vec<Vertex>> = HashMap::new();
     for group in by_line.chunk_by(|x, y| x.0 == y.0).filter(|g| g.len() > 1) {
