@@ -134,10 +134,11 @@ fn main() -> Result<(), String> {
     let start = Instant::now();
     let mut triangles = 0;
     for (k, raw) in raws.into_iter().enumerate() {
-        let outcome = process_raw("bench", k, raw, &options);
-        match outcome.result {
-            Ok(solved) => triangles += solved.triangulation.triangles.len(),
-            Err(e) => return Err(format!("polygon {k}: {e}")),
+        for outcome in process_raw("bench", k, raw, &options) {
+            match outcome.result {
+                Ok(solved) => triangles += solved.triangulation.triangles.len(),
+                Err(e) => return Err(format!("polygon {k}: {e}")),
+            }
         }
     }
     row(

@@ -71,6 +71,11 @@ pub struct Flags {
     /// exit status 3 if anything disagrees or is invalid (with --to svg: drawn in red)
     #[arg(long)]
     pub verify: bool,
+    /// Repair spikes, rings of fewer than 3 points or zero area, rings touching themselves at a
+    /// vertex (split into polygons or holes) and rings sharing edges (merged), using no new
+    /// points; each repair is a warning and listed under "repaired" in the JSON
+    #[arg(long)]
+    pub repair: bool,
     /// With --to svg: write the vertex numbers whatever the polygon's size (by default only up
     /// to 60 vertices); their font shrinks where vertices are dense
     #[arg(long)]
@@ -249,6 +254,7 @@ impl Flags {
                 time_limit: (self.time_limit > 0.0)
                     .then(|| std::time::Duration::from_secs_f64(self.time_limit)),
                 verify: self.verify,
+                repair: self.repair,
             },
             jobs: self.jobs.map(|n| n as usize),
             quiet: self.quiet,

@@ -10,6 +10,7 @@ use crate::algo::{
     Triangulation,
 };
 use crate::geom::polygon::{Polygon, Warning};
+use crate::geom::repair::{self, Repair};
 use crate::geom::validate::InvalidPolygon;
 use crate::io::read::{self, Format, ParseError, RawPolygon};
 use crate::verify::{self, Check};
@@ -27,6 +28,9 @@ pub struct Options {
     pub verify: bool,
     /// How long the exact search for a polygon with holes may run (`None`: no limit).
     pub time_limit: Option<std::time::Duration>,
+    /// Repair spikes, degenerate rings, self-touching rings and rings sharing edges before
+    /// validating ([`crate::geom::repair`]); a polygon may then give several pieces.
+    pub repair: bool,
 }
 
 impl Default for Options {
@@ -36,6 +40,7 @@ impl Default for Options {
             dp_limit: asano::DEFAULT_LIMIT,
             verify: false,
             time_limit: Some(minitri::DEFAULT_TIME_LIMIT),
+            repair: false,
         }
     }
 }
@@ -124,12 +129,18 @@ pub struct Outcome {
     pub source: String,
     /// The polygon's position in its source; `None` when the source could not be read.
     pub index: Option<usize>,
+    /// With `--repair`, when the polygon was split into several: this piece's position among
+    /// them (from 0).
+    pub piece: Option<usize>,
     /// The validated polygon, when it is valid.
     pub polygon: Option<Polygon>,
     /// The triangulation, or what went wrong.
     pub result: Result<Solved, Error>,
     /// What the tool changed in the input (dropped duplicate vertices).
     pub warnings: Vec<Warning>,
+    /// With `--repair`: what was repaired in the input polygon (the same list for each of its
+    /// pieces); `None` without `--repair`.
+    pub repaired: Option<Vec<Repair>>,
 }
 
 impl Outcome {
@@ -140,6 +151,16 @@ impl Outcome {
         if !quiet {
             for warning in &self.warnings {
                 lines.push(format!("warning: {self}: {warning}"));
+            }
+            // Once for a polygon split into pieces, before its first piece's other messages.
+            if self.piece.unwrap_or(0) == 0 {
+                let polygon = match self.index {
+                    Some(i) => format!("{}: polygon {i}", self.source),
+                    None => self.source.clone(),
+                };
+                for repair in self.repaired.iter().flatten() {
+                    lines.push(format!("warning: {polygon}: repaired: {repair}"));
+                }
             }
         }
         if let Err(e) = &self.result {
@@ -154,9 +175,10 @@ impl Outcome {
 impl fmt::Display for Outcome {
     /// `source: polygon 2: ` as a prefix for messages about this outcome.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self.index {
-            Some(i) => write!(f, "{}: polygon {i}", self.source),
-            None => write!(f, "{}", self.source),
+        match (self.index, self.piece) {
+            (Some(i), Some(k)) => write!(f, "{}: polygon {i} piece {k}", self.source),
+            (Some(i), None) => write!(f, "{}: polygon {i}", self.source),
+            (None, _) => write!(f, "{}", self.source),
         }
     }
 }
@@ -407,9 +429,11 @@ pub fn unreadable(source: &str, error: Error) -> Outcome {
     Outcome {
         source: source.to_string(),
         index: None,
+        piece: None,
         polygon: None,
         result: Err(error),
         warnings: Vec::new(),
+        repaired: None,
     }
 }
 
@@ -421,24 +445,66 @@ pub fn process(source: &str, text: &str, format: Format, options: &Options) -> V
     };
     raws.into_iter()
         .enumerate()
-        .map(|(index, raw)| process_raw(source, index, raw, options))
+        .flat_map(|(index, raw)| process_raw(source, index, raw, options))
         .collect()
 }
 
-/// Validates and triangulates polygon `index` of `source`, as read.
+/// Validates and triangulates polygon `index` of `source`, as read: one outcome, or with
+/// `--repair` one for each piece the repaired polygon falls into.
 ///
 /// Takes the polygon as read by value and frees it once validated: the decimals as read take
 /// 64 bytes a vertex (more with the reader's spare capacity), the validated [`Polygon`] holds
 /// the same coordinates on its integer grid, and a huge polygon should not carry both through
 /// the triangulation.
-pub fn process_raw(source: &str, index: usize, raw: RawPolygon, options: &Options) -> Outcome {
-    let mut outcome = Outcome {
+pub fn process_raw(source: &str, index: usize, raw: RawPolygon, options: &Options) -> Vec<Outcome> {
+    let outcome = Outcome {
         source: source.to_string(),
         index: Some(index),
+        piece: None,
         polygon: None,
         result: Err(Error::Invalid(Vec::new())),
         warnings: Vec::new(),
+        repaired: None,
     };
+    if options.repair {
+        let repaired = repair::repair_raw(&raw);
+        drop(raw);
+        let pieces = match repaired {
+            Err(e) => {
+                return vec![Outcome {
+                    result: Err(Error::Invalid(vec![e])),
+                    repaired: Some(Vec::new()),
+                    ..outcome
+                }]
+            }
+            Ok(pieces) => pieces,
+        };
+        let several = pieces.pieces.len() > 1;
+        return pieces
+            .pieces
+            .into_iter()
+            .enumerate()
+            .map(|(k, piece)| {
+                let mut warnings = pieces.warnings.clone();
+                let mut one = Outcome {
+                    piece: several.then_some(k),
+                    repaired: Some(pieces.repairs.clone()),
+                    ..outcome.clone()
+                };
+                match piece {
+                    Err(errors) => one.result = Err(Error::Invalid(errors)),
+                    Ok((polygon, more)) => {
+                        warnings.extend(more);
+                        one.result = solve(&polygon, options);
+                        one.polygon = Some(polygon);
+                    }
+                }
+                one.warnings = warnings;
+                one
+            })
+            .collect();
+    }
+    let mut outcome = outcome;
     let validated = Polygon::from_raw_all_errors(&raw);
     drop(raw);
     match validated {
@@ -449,5 +515,5 @@ pub fn process_raw(source: &str, index: usize, raw: RawPolygon, options: &Option
             outcome.polygon = Some(polygon);
         }
     }
-    outcome
+    vec![outcome]
 }

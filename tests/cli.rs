@@ -830,3 +830,83 @@ fn piped_csv_with_a_header_is_a_vertex_list() {
         "{err}"
     );
 }
+
+#[test]
+fn repair_splits_a_figure_eight_into_two_pieces_and_says_so() {
+    let eight = "POLYGON ((0 0, 2 0, 2 2, 4 2, 4 4, 2 4, 2 2, 0 2, 0 0))";
+    // Without --repair: rejected, and the message says what --repair would do.
+    let (code, _, err) = run(&["--from", "wkt"], Some(eight));
+    assert_eq!(code, 1);
+    assert!(
+        err.contains("the ring touches itself; --repair splits it there"),
+        "{err}"
+    );
+    let (code, out, err) = run(&["--from", "wkt", "--repair", "--verify"], Some(eight));
+    assert_eq!(code, 0, "{err}");
+    let sentence = "outer ring touches itself at vertex 2 (2, 2): its loop of 4 vertices from there became a separate polygon";
+    // Once for the polygon, not once per piece.
+    assert_eq!(
+        err.matches(&format!("warning: -: polygon 0: repaired: {sentence}"))
+            .count(),
+        1,
+        "{err}"
+    );
+    let doc = json(&out);
+    let pieces = doc["polygons"].as_array().expect("polygons");
+    assert_eq!(pieces.len(), 2);
+    for (k, p) in pieces.iter().enumerate() {
+        assert_eq!(p["index"], 0);
+        assert_eq!(p["piece"], k);
+        assert_eq!(p["triangle_count"], 2);
+        assert_eq!(p["verification"]["ok"], true);
+        assert_eq!(
+            p["repaired"],
+            serde_json::json!([{"kind": "split_ring", "message": sentence}])
+        );
+    }
+}
+
+#[test]
+fn repair_removes_a_spike_and_merges_holes_sharing_an_edge() {
+    let wkt = "POLYGON ((0 0, 9 0, 9 9, 4 9, 4 12, 4 9, 0 9), (1 1, 3 1, 3 3, 1 3), (3 1, 5 1, 5 3, 3 3))";
+    let (code, _, err) = run(&["--from", "wkt"], Some(wkt));
+    assert_eq!(code, 1);
+    assert!(err.contains("--repair removes spikes"), "{err}");
+    let (code, out, err) = run(&["--from", "wkt", "--repair", "--verify"], Some(wkt));
+    assert_eq!(code, 0, "{err}");
+    let p = &json(&out)["polygons"][0];
+    assert!(p.get("piece").is_none(), "one piece: no piece field");
+    assert_eq!(p["holes"], 1);
+    assert_eq!(p["verification"]["ok"], true);
+    let kinds: Vec<&str> = p["repaired"]
+        .as_array()
+        .expect("repaired")
+        .iter()
+        .map(|r| r["kind"].as_str().expect("kind"))
+        .collect();
+    assert_eq!(kinds, ["spike", "merged_rings"]);
+    assert_eq!(
+        p["repaired"][0]["message"],
+        "outer ring: spike at vertex 4 (4, 12) removed (edges 3-4 and 4-5 folded back onto each other)"
+    );
+    // A valid polygon with --repair: an empty list.
+    let (_, out, _) = run(
+        &["--from", "wkt", "--repair"],
+        Some("POLYGON ((0 0, 1 0, 0 1))"),
+    );
+    assert_eq!(json(&out)["polygons"][0]["repaired"], serde_json::json!([]));
+}
+
+#[test]
+fn repair_leaves_crossing_rings_rejected() {
+    let (code, out, _) = run(
+        &["--from", "wkt", "--repair"],
+        Some("POLYGON ((0 0, 2 2, 2 0, 0 2))"),
+    );
+    assert_eq!(code, 1);
+    let message = json(&out)["errors"][0]["message"]
+        .as_str()
+        .expect("message")
+        .to_string();
+    assert!(message.starts_with("self-intersection"), "{message}");
+}

@@ -119,6 +119,7 @@ pub fn check_polygons(raws: &[RawPolygon]) {
         dp_limit: asano::DEFAULT_LIMIT,
         verify: true,
         time_limit: None,
+        repair: false,
     };
     let mut outcomes = Vec::new();
     for (index, raw) in raws.iter().enumerate() {
@@ -128,11 +129,26 @@ pub fn check_polygons(raws: &[RawPolygon]) {
                 for e in &errors {
                     assert!(!e.to_string().is_empty(), "empty message");
                 }
-                outcomes.push(pipeline::process_raw("fuzz", index, raw.clone(), &options));
+                outcomes.extend(pipeline::process_raw("fuzz", index, raw.clone(), &options));
+                if is_small(raw) {
+                    // --repair: every piece it makes valid is solved and verified.
+                    let repair = Options {
+                        repair: true,
+                        ..options.clone()
+                    };
+                    for outcome in pipeline::process_raw("fuzz", index, raw.clone(), &repair) {
+                        if let Ok(solved) = &outcome.result {
+                            let verification = solved.verification.as_ref().expect("verified");
+                            assert!(verification.ok, "--repair, --verify fails: {verification:?}");
+                        }
+                        outcomes.push(outcome);
+                    }
+                }
             }
             Ok((polygon, _warnings)) if is_small(raw) => {
                 check_ear(&polygon);
-                let outcome = pipeline::process_raw("fuzz", index, raw.clone(), &options);
+                let outcome = pipeline::process_raw("fuzz", index, raw.clone(), &options)
+                    .swap_remove(0);
                 let solved = outcome.result.as_ref().expect("a valid polygon is solved");
                 let verification = solved.verification.as_ref().expect("verified");
                 assert!(verification.ok, "--verify fails: {verification:?}");

@@ -402,21 +402,27 @@ impl<'a> Chunker<'a> {
         let (options, renderer) = (self.options, self.renderer);
         let outcomes: Vec<(Outcome, Option<String>)> = items
             .into_par_iter()
-            .map(|item| {
-                let outcome = match item {
+            .flat_map_iter(|item| {
+                let outcomes = match item {
                     Item::Polygon { source, index, raw } => {
                         process_raw(&source, index, raw, options)
                     }
-                    Item::Failed(outcome) => *outcome,
+                    Item::Failed(outcome) => vec![*outcome],
                     Item::Line { source, .. } => {
-                        unreadable(&source, Error::Read("line not read".into()))
+                        vec![unreadable(&source, Error::Read("line not read".into()))]
                     }
                 };
-                let rendered = renderer.and_then(|render| render(&outcome));
-                (outcome, rendered)
+                outcomes.into_iter().map(move |outcome| {
+                    let rendered = renderer.and_then(|render| render(&outcome));
+                    (outcome, rendered)
+                })
             })
             .collect();
-        let polygons = outcomes.iter().filter(|(o, _)| o.index.is_some()).count();
+        // A repaired polygon split into pieces counts once.
+        let polygons = outcomes
+            .iter()
+            .filter(|(o, _)| o.index.is_some() && o.piece.unwrap_or(0) == 0)
+            .count();
         self.observer.polygons(polygons);
         for (outcome, rendered) in outcomes {
             (self.deliver)(outcome, rendered)?;

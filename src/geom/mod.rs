@@ -2,6 +2,7 @@
 pub mod decimal;
 pub mod kernel;
 pub mod polygon;
+pub mod repair;
 pub mod status;
 pub(crate) mod touch;
 pub mod validate;

@@ -142,11 +142,17 @@ impl Polygon {
         raw: &RawPolygon,
     ) -> Result<(Polygon, Vec<Warning>), Vec<InvalidPolygon>> {
         let (polygon, warnings) = Polygon::build(raw).map_err(|e| vec![e])?;
-        let contacts = validate::touching(&polygon)?;
+        Ok((polygon.validated()?, warnings))
+    }
+
+    /// The polygon validated: as it is when no rings touch, else relinked into the boundary
+    /// walks of its touching rings ([`crate::geom::touch`]).
+    pub(crate) fn validated(self) -> Result<Polygon, Vec<InvalidPolygon>> {
+        let contacts = validate::touching(&self)?;
         if !contacts.any() {
-            return Ok((polygon, warnings));
+            return Ok(self);
         }
-        Ok((super::touch::walks(polygon, &contacts)?, warnings))
+        super::touch::walks(self, &contacts)
     }
 
     /// The same polygon with other rings (points and input numbers, outer ring first); the
@@ -250,57 +256,101 @@ impl Polygon {
         let mut warnings = Vec::new();
         let mut values = grid_values.0.into_iter();
         for (r, input_ring) in raw.rings.iter().enumerate() {
-            let ring = Ring::from_index(r);
-            let start = polygon.points.len();
             let first_id = polygon.input_vertices;
             polygon.input_vertices += input_ring.len();
-            let mut kept: Vec<(Point, usize)> = Vec::with_capacity(input_ring.len());
-            for (k, point) in values.by_ref().take(input_ring.len()).enumerate() {
-                let id = first_id + k;
-                if let Some(&(last, last_id)) = kept.last() {
-                    if last == point {
-                        warnings.push(dropped(ring, id, last_id, &grid, point));
-                        continue;
-                    }
-                }
-                kept.push((point, id));
-            }
-            while kept.len() > 1 && kept.first().map(|f| f.0) == kept.last().map(|l| l.0) {
-                if let (Some(&(point, id)), Some(&(_, first))) = (kept.last(), kept.first()) {
-                    warnings.push(dropped(ring, id, first, &grid, point));
-                }
-                kept.pop();
-            }
-            if kept.len() < 3 {
-                return Err(InvalidPolygon::TooFewVertices {
-                    ring,
-                    distinct: kept.len(),
-                });
-            }
-            let mut area = WideSum::default();
-            for i in 0..kept.len() {
-                area.add(cross(kept[0].0, kept[i].0, kept[(i + 1) % kept.len()].0));
-            }
-            let want = if r == 0 { 1 } else { -1 };
-            let collinear = kept
-                .iter()
-                .all(|&(q, _)| cross(kept[0].0, kept[1].0, q) == 0);
-            if collinear {
-                return Err(InvalidPolygon::ZeroArea { ring });
-            }
-            // A ring of zero signed area that is not collinear crosses itself: the sweep says where.
-            if area.signum() == -want {
-                kept[1..].reverse(); // keeps the first vertex first
-            }
-            polygon.ring_starts.push(start);
-            for (point, id) in kept {
-                polygon.points.push(point);
-                polygon.ids.push(id);
-                polygon.ring_of.push(r as u32);
-            }
+            let ring = values
+                .by_ref()
+                .take(input_ring.len())
+                .enumerate()
+                .map(|(k, point)| (point, first_id + k));
+            polygon.push_ring(r, ring, &mut warnings)?;
         }
         polygon.ring_starts.push(polygon.points.len());
         Ok((polygon, warnings))
+    }
+
+    /// Builds a polygon, without the sweep, from rings already on `grid` (each point with its
+    /// input vertex number; `input_vertices` numbers used by the input): what
+    /// [`crate::geom::repair`] made of the input's rings.
+    pub(crate) fn from_grid_rings(
+        rings: Vec<Vec<(Point, usize)>>,
+        grid: Grid,
+        input_vertices: usize,
+    ) -> Result<(Polygon, Vec<Warning>), InvalidPolygon> {
+        let total = rings.iter().map(Vec::len).sum();
+        let mut polygon = Polygon {
+            points: Vec::with_capacity(total),
+            ids: Vec::with_capacity(total),
+            ring_starts: Vec::with_capacity(rings.len() + 1),
+            ring_of: Vec::with_capacity(total),
+            input_vertices,
+            grid,
+            source_ring: Vec::new(),
+            touches: 0,
+        };
+        let mut warnings = Vec::new();
+        for (r, ring) in rings.into_iter().enumerate() {
+            polygon.push_ring(r, ring.into_iter(), &mut warnings)?;
+        }
+        polygon.ring_starts.push(polygon.points.len());
+        Ok((polygon, warnings))
+    }
+
+    /// Appends ring `r` (points with their input vertex numbers): consecutive duplicates dropped
+    /// with a warning, at least 3 vertices and non-zero area required, winding normalised.
+    fn push_ring(
+        &mut self,
+        r: usize,
+        input_ring: impl Iterator<Item = (Point, usize)>,
+        warnings: &mut Vec<Warning>,
+    ) -> Result<(), InvalidPolygon> {
+        let ring = Ring::from_index(r);
+        let grid = self.grid;
+        let start = self.points.len();
+        let mut kept: Vec<(Point, usize)> = Vec::with_capacity(input_ring.size_hint().0);
+        for (point, id) in input_ring {
+            if let Some(&(last, last_id)) = kept.last() {
+                if last == point {
+                    warnings.push(dropped(ring, id, last_id, &grid, point));
+                    continue;
+                }
+            }
+            kept.push((point, id));
+        }
+        while kept.len() > 1 && kept.first().map(|f| f.0) == kept.last().map(|l| l.0) {
+            if let (Some(&(point, id)), Some(&(_, first))) = (kept.last(), kept.first()) {
+                warnings.push(dropped(ring, id, first, &grid, point));
+            }
+            kept.pop();
+        }
+        if kept.len() < 3 {
+            return Err(InvalidPolygon::TooFewVertices {
+                ring,
+                distinct: kept.len(),
+            });
+        }
+        let mut area = WideSum::default();
+        for i in 0..kept.len() {
+            area.add(cross(kept[0].0, kept[i].0, kept[(i + 1) % kept.len()].0));
+        }
+        let want = if r == 0 { 1 } else { -1 };
+        let collinear = kept
+            .iter()
+            .all(|&(q, _)| cross(kept[0].0, kept[1].0, q) == 0);
+        if collinear {
+            return Err(InvalidPolygon::ZeroArea { ring });
+        }
+        // A ring of zero signed area that is not collinear crosses itself: the sweep says where.
+        if area.signum() == -want {
+            kept[1..].reverse(); // keeps the first vertex first
+        }
+        self.ring_starts.push(start);
+        for (point, id) in kept {
+            self.points.push(point);
+            self.ids.push(id);
+            self.ring_of.push(r as u32);
+        }
+        Ok(())
     }
 
     /// Number of vertices kept (n, over all rings).
@@ -462,7 +512,7 @@ impl Polygon {
     }
 }
 
-fn dropped(ring: Ring, id: usize, same_as: usize, grid: &Grid, p: Point) -> Warning {
+pub(crate) fn dropped(ring: Ring, id: usize, same_as: usize, grid: &Grid, p: Point) -> Warning {
     Warning(format!(
         "{ring}: vertex {id} {} repeats vertex {same_as} and was dropped",
         grid.format_point(p)
@@ -473,7 +523,7 @@ fn dropped(ring: Ring, id: usize, same_as: usize, grid: &Grid, p: Point) -> Warn
 ///
 /// A coordinate beyond 128 bits on the grid, or a range above 2^62 units, is rejected naming
 /// the vertices, the values and the unit (the finest decimal place used).
-fn to_grid(raw: &RawPolygon) -> Result<(Vec<Point>, Grid), InvalidPolygon> {
+pub(crate) fn to_grid(raw: &RawPolygon) -> Result<(Vec<Point>, Grid), InvalidPolygon> {
     let all = || raw.rings.iter().flatten();
     let scale = all()
         .flatten()

@@ -31,7 +31,7 @@ use std::cmp::Ordering;
 #[non_exhaustive]
 pub enum InvalidPolygon {
     /// A ring with fewer than 3 distinct vertices.
-    #[error("{ring} has {distinct} distinct {}; a ring needs at least 3{}", if *distinct == 1 { "vertex" } else { "vertices" }, if *distinct == 1 && !matches!(ring, Ring::Outer) { " (a single point is not a hole; minitri takes no interior points)" } else { "" })]
+    #[error("{ring} has {distinct} distinct {}; a ring needs at least 3{}{}", if *distinct == 1 { "vertex" } else { "vertices" }, if *distinct == 1 && !matches!(ring, Ring::Outer) { " (a single point is not a hole; minitri takes no interior points)" } else { "" }, drop_hint(*ring))]
     TooFewVertices {
         /// The ring.
         ring: Ring,
@@ -39,7 +39,7 @@ pub enum InvalidPolygon {
         distinct: usize,
     },
     /// A ring whose vertices are all collinear.
-    #[error("{ring} has zero area (all its vertices lie on one line)")]
+    #[error("{ring} has zero area (all its vertices lie on one line){}", drop_hint(*ring))]
     ZeroArea {
         /// The ring.
         ring: Ring,
@@ -51,7 +51,7 @@ pub enum InvalidPolygon {
         detail: String,
     },
     /// An edge folds back onto the previous one.
-    #[error("spike at {ring} vertex {vertex} {at}: edges {prev}-{vertex} and {vertex}-{next} fold back onto each other")]
+    #[error("spike at {ring} vertex {vertex} {at}: edges {prev}-{vertex} and {vertex}-{next} fold back onto each other; --repair removes spikes")]
     Spike {
         /// The ring.
         ring: Ring,
@@ -79,7 +79,7 @@ pub enum InvalidPolygon {
         at: String,
     },
     /// Two non-adjacent edges share a point.
-    #[error("{0}")]
+    #[error("{contact}{hint}", contact = .0, hint = overlap_hint(.0))]
     EdgesMeet(Box<EdgeContact>),
     /// A hole that is not inside the outer ring.
     #[error("hole {hole} lies outside the outer ring")]
@@ -157,9 +157,26 @@ pub struct EdgeContact {
     pub at: String,
 }
 
+/// What `--repair` would do about a degenerate ring: drop it, if it is a hole.
+fn drop_hint(ring: Ring) -> &'static str {
+    match ring {
+        Ring::Outer => "",
+        Ring::Hole(_) => "; --repair drops the hole",
+    }
+}
+
+/// What `--repair` would do about edges running along each other.
+fn overlap_hint(contact: &EdgeContact) -> &'static str {
+    match (contact.contact, contact.ring_a == contact.ring_b) {
+        (SegmentContact::Overlap, false) => "; --repair merges rings sharing a stretch of edge",
+        (SegmentContact::Overlap, true) => "; --repair removes a stretch the ring runs along twice",
+        _ => "",
+    }
+}
+
 fn touch_kind(a: Ring, b: Ring) -> &'static str {
     if a == b {
-        "the ring touches itself"
+        "the ring touches itself; --repair splits it there"
     } else {
         "the rings touch"
     }
@@ -357,13 +374,19 @@ fn no_two_edges_meet(polygon: &Polygon) -> bool {
     })
 }
 
-fn spikes(polygon: &Polygon) -> Vec<InvalidPolygon> {
+/// Whether the boundary `a -> b -> c` folds back at `b`: `a` and `c` on one line through `b`, on
+/// the same side of it (a spike; `--repair` removes them with the same test).
+pub(crate) fn folds_back(a: Point, b: Point, c: Point) -> bool {
     use super::kernel::{cross, dot};
+    cross(a, b, c) == 0 && dot(b, a, c) > 0
+}
+
+fn spikes(polygon: &Polygon) -> Vec<InvalidPolygon> {
     (0..polygon.len())
         .filter_map(|i| {
             let (p, w, n) = (polygon.prev(i), i, polygon.next(i));
             let (a, b, c) = (polygon.point(p), polygon.point(w), polygon.point(n));
-            (cross(a, b, c) == 0 && dot(b, a, c) > 0).then(|| InvalidPolygon::Spike {
+            folds_back(a, b, c).then(|| InvalidPolygon::Spike {
                 ring: polygon.ring(i),
                 vertex: polygon.id(w),
                 prev: polygon.id(p),

@@ -68,7 +68,7 @@ fn repeated_vertices_are_named() {
     let e = error(&[&[(0, 0), (2, 2), (4, 0), (4, 4), (2, 2), (0, 4)]]);
     assert_eq!(
         e,
-        "outer ring vertex 1 and outer ring vertex 4 are both at (2, 2): the ring touches itself"
+        "outer ring vertex 1 and outer ring vertex 4 are both at (2, 2): the ring touches itself; --repair splits it there"
     );
     // Rings of different rings at one point touch, which OGC allows (`geom::touch`); twice
     // between the same two rings, they cut the interior in two.
@@ -84,7 +84,7 @@ fn spikes_are_named() {
     let e = error(&[&[(0, 0), (4, 0), (4, 4), (4, 2), (0, 4)]]);
     assert_eq!(
         e,
-        "spike at outer ring vertex 2 (4, 4): edges 1-2 and 2-3 fold back onto each other"
+        "spike at outer ring vertex 2 (4, 4): edges 1-2 and 2-3 fold back onto each other; --repair removes spikes"
     );
 }
 
@@ -146,7 +146,7 @@ fn too_few_and_zero_area() {
     );
     assert_eq!(
         error(&[SQUARE, &[(1, 1), (2, 2), (3, 3), (2, 2)]]),
-        "hole 1 has zero area (all its vertices lie on one line)"
+        "hole 1 has zero area (all its vertices lie on one line); --repair drops the hole"
     );
 }
 

@@ -41,6 +41,8 @@ struct ErrorEntry {
     source: String,
     #[serde(skip_serializing_if = "Option::is_none")]
     index: Option<usize>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    piece: Option<usize>,
     message: String,
 }
 
@@ -78,6 +80,7 @@ impl<W: Write> JsonWriter<W> {
                 self.errors.push(ErrorEntry {
                     source: outcome.source.clone(),
                     index: outcome.index,
+                    piece: outcome.piece,
                     message: e.to_string(),
                 });
             }
@@ -120,11 +123,15 @@ pub fn render(outcome: &Outcome) -> Option<String> {
         None => triangle_fields(outcome, index, polygon, t),
     };
     let mut out = String::from("    {\n");
-    for (name, value) in &fields {
+    // `piece` only for a repaired polygon split into several.
+    for (name, value) in fields.iter().filter(|(_, value)| !value.is_empty()) {
         let _ = writeln!(out, "      \"{name}\": {value},");
     }
     let warnings: Vec<String> = outcome.warnings.iter().map(ToString::to_string).collect();
     let _ = write!(out, "      \"warnings\": {}", json(&warnings));
+    if let Some(repaired) = &outcome.repaired {
+        let _ = write!(out, ",\n      \"repaired\": {}", json(repaired));
+    }
     if let Some(v) = &solved.verification {
         let _ = write!(out, ",\n      \"verification\": {}", json(v));
     }
@@ -142,6 +149,7 @@ fn triangle_fields(
     let mut fields: Vec<(&str, String)> = vec![
         ("source", json(&outcome.source)),
         ("index", json(&index)),
+        ("piece", outcome.piece.map_or(String::new(), |k| json(&k))),
         ("algorithm", json(t.algorithm.name())),
         ("vertices", json(&polygon.len())),
         ("holes", json(&polygon.input_holes())),
@@ -209,6 +217,7 @@ fn pseudo_fields(
     let mut fields: Vec<(&str, String)> = vec![
         ("source", json(&outcome.source)),
         ("index", json(&index)),
+        ("piece", outcome.piece.map_or(String::new(), |k| json(&k))),
         ("algorithm", json(algorithm.name())),
         ("vertices", json(&n)),
         ("holes", json(&polygon.input_holes())),

@@ -1,0 +1,621 @@
+//! `--repair`: the usual defects of real polygons mended without new points, before validation.
+//!
+//! Input contract: the rings of one input polygon on its exact grid ([`crate::geom::polygon`]'s
+//! `to_grid`), each vertex with its input number; ring 0 the outer ring. Output guarantee
+//! ([`repair`]): one or more pieces, each an outer ring (counter-clockwise) and its holes
+//! (clockwise) made only of input vertices at their input coordinates, whose union is the region
+//! the input describes (the points covered an odd number of times by the rings' loops, as OGC
+//! `make_valid` reads a ring); every change reported as a [`Repair`] naming the ring, vertex
+//! numbers and coordinates. The pieces are then validated as any polygon: what needs a new point
+//! (rings that properly cross) is still rejected there.
+//!
+//! The repairs, in order:
+//! 1. per ring, repeated consecutive points dropped (a [`Warning`], as without `--repair`) and
+//!    spikes removed (a vertex where the boundary folds back onto itself), repeatedly, so that a
+//!    spike left by removing another goes too;
+//! 2. rings with fewer than 3 distinct points, or all on one line, dropped (holes only: without
+//!    its outer ring nothing is left, which stays an error);
+//! 3. a ring through one point twice split there into its loops; a loop inside an odd number of
+//!    the ring's other loops is a hole of the outer ring's region (the "inverted hole"), or an
+//!    island inside a hole; otherwise a separate polygon (a figure eight gives two) or hole;
+//! 4. edges shared by two rings in opposite directions (holes sharing a stretch; a hole sharing
+//!    a stretch with the outer ring) removed, after cutting collinear overlapping edges at each
+//!    other's vertices, and the rings around them traced again: two holes become one, a hole
+//!    on the outer ring becomes a notch of it. Tracing turns, at a point with several ways on,
+//!    into the first edge clockwise from the one it came by, which keeps the region on the left
+//!    and splits rings where they touch.
+//!
+//! Every decision is exact (the kernel's orientation and collinearity tests). Complexity:
+//! O(n log n) for steps 1, 2 and 4 (a sort of the edges by their supporting line, hash maps of
+//! edges and points); step 3 costs O(k n) for a ring split into k loops, and placing h holes
+//! into s > 1 outer rings O(h n).
+
+use super::kernel::{cmp_angle_from, cross, line_through, on_segment, Point, WideSum};
+use super::polygon::{dropped, to_grid, Grid, Polygon, Ring, Warning};
+use super::validate::{folds_back, InvalidPolygon};
+use crate::io::read::RawPolygon;
+use serde::Serialize;
+use std::collections::HashMap;
+use std::fmt;
+
+/// A vertex: its grid point and its input number.
+pub(crate) type Vertex = (Point, usize);
+
+/// What a repair did.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum RepairKind {
+    /// A spike removed.
+    Spike,
+    /// A ring of fewer than 3 distinct points, or of zero area, dropped.
+    DroppedRing,
+    /// A ring touching itself at a vertex split into its loops.
+    SplitRing,
+    /// Rings sharing edges merged (the shared edges removed).
+    MergedRings,
+}
+
+/// One change made by `--repair`, in words (`message`) and by kind.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct Repair {
+    /// What was done.
+    pub kind: RepairKind,
+    /// The sentence naming what was changed.
+    pub message: String,
+}
+
+impl fmt::Display for Repair {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+/// The repaired input: its pieces (rings of vertices, outer ring first), what was repaired,
+/// and the repeated points dropped.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Repaired {
+    pub pieces: Vec<Vec<Vec<Vertex>>>,
+    pub repairs: Vec<Repair>,
+    pub warnings: Vec<Warning>,
+}
+
+/// A piece of a repaired polygon: valid (with the warnings of building it), or every problem
+/// validation found.
+pub type Piece = Result<(Polygon, Vec<Warning>), Vec<InvalidPolygon>>;
+
+/// One input polygon after `--repair`: each piece, valid or with its problems; what was
+/// repaired; the repeated points dropped.
+#[derive(Clone, Debug)]
+pub struct Pieces {
+    /// Each piece (in order: by the smallest input vertex number of its outer ring), as a valid
+    /// polygon or with every problem validation found.
+    pub pieces: Vec<Piece>,
+    /// What was repaired (empty when the input needed nothing).
+    pub repairs: Vec<Repair>,
+    /// The repeated points dropped (as without `--repair`).
+    pub warnings: Vec<Warning>,
+}
+
+/// Repairs one polygon as read, then builds and validates each piece.
+///
+/// # Errors
+/// What cannot be repaired into anything: coordinates too large, an outer ring of fewer than 3
+/// distinct points or of zero area.
+pub fn repair_raw(raw: &RawPolygon) -> Result<Pieces, InvalidPolygon> {
+    if raw.rings.is_empty() {
+        return Err(InvalidPolygon::TooFewVertices {
+            ring: Ring::Outer,
+            distinct: 0,
+        });
+    }
+    let (points, grid) = to_grid(raw)?;
+    let mut points = points.into_iter().enumerate();
+    let rings: Vec<Vec<Vertex>> = raw
+        .rings
+        .iter()
+        .map(|r| {
+            points
+                .by_ref()
+                .take(r.len())
+                .map(|(id, p)| (p, id))
+                .collect()
+        })
+        .collect();
+    let input_vertices = rings.iter().map(Vec::len).sum();
+    let repaired = repair(rings, &grid)?;
+    let pieces = repaired
+        .pieces
+        .into_iter()
+        .map(|rings| {
+            let (polygon, warnings) =
+                Polygon::from_grid_rings(rings, grid, input_vertices).map_err(|e| vec![e])?;
+            Ok((polygon.validated()?, warnings))
+        })
+        .collect();
+    Ok(Pieces {
+        pieces,
+        repairs: repaired.repairs,
+        warnings: repaired.warnings,
+    })
+}
+
+/// A loop with its role: an outer boundary (counter-clockwise) or a hole (clockwise).
+#[derive(Clone, Debug)]
+struct Loop {
+    /// The input ring it comes from.
+    ring: usize,
+    shell: bool,
+    vertices: Vec<Vertex>,
+}
+
+/// Repairs the rings of one polygon (see the module documentation).
+///
+/// # Errors
+/// The outer ring's [`InvalidPolygon::TooFewVertices`] or [`InvalidPolygon::ZeroArea`] when it
+/// has fewer than 3 distinct points or no area left once its spikes are gone (nothing to repair
+/// into), or when nothing at all is left.
+pub(crate) fn repair(rings: Vec<Vec<Vertex>>, grid: &Grid) -> Result<Repaired, InvalidPolygon> {
+    let mut out = Repaired::default();
+    let mut loops = Vec::new();
+    for (r, ring) in rings.into_iter().enumerate() {
+        let name = Ring::from_index(r);
+        // Judged as written first (a ring on one line is all spikes), then once despiked.
+        let degenerate = |ring: &[Vertex]| {
+            let mut points: Vec<Point> = ring.iter().map(|v| v.0).collect();
+            points.dedup();
+            while points.len() > 1 && points.first() == points.last() {
+                points.pop();
+            }
+            let distinct = points.len();
+            let flat = points
+                .iter()
+                .all(|&q| cross(points[0], points[1.min(distinct - 1)], q) == 0);
+            (distinct < 3 || flat).then_some((distinct, flat && distinct >= 3))
+        };
+        let as_written = if ring.is_empty() {
+            Some((0, false))
+        } else {
+            degenerate(&ring)
+        };
+        let (cleaned, problem) = match as_written {
+            Some(problem) => (Vec::new(), Some((problem, false))),
+            None => {
+                let cleaned = despike(r, ring, grid, &mut out);
+                let problem = if cleaned.is_empty() {
+                    Some((0, false))
+                } else {
+                    degenerate(&cleaned)
+                };
+                (cleaned, problem.map(|p| (p, true)))
+            }
+        };
+        if let Some(((distinct, flat), despiked)) = problem {
+            if r == 0 {
+                return Err(if flat {
+                    InvalidPolygon::ZeroArea { ring: name }
+                } else {
+                    InvalidPolygon::TooFewVertices {
+                        ring: name,
+                        distinct,
+                    }
+                });
+            }
+            let why = if despiked {
+                "nothing of it is left once its spikes are removed".to_string()
+            } else if flat {
+                "it has zero area (all its points on one line)".to_string()
+            } else {
+                format!(
+                    "it has {distinct} distinct {}",
+                    if distinct == 1 { "point" } else { "points" }
+                )
+            };
+            out.repairs.push(Repair {
+                kind: RepairKind::DroppedRing,
+                message: format!("{name} dropped: {why}"),
+            });
+            continue;
+        }
+        loops.extend(split(r, r == 0, cleaned, grid, &mut out));
+    }
+    let (mut shells, mut holes) = merge(loops, grid, &mut out);
+    if shells.is_empty() {
+        return Err(InvalidPolygon::ZeroArea { ring: Ring::Outer });
+    }
+    let first_id = |l: &Loop| l.vertices.iter().map(|v| v.1).min();
+    shells.sort_by_key(first_id);
+    holes.sort_by_key(|l| (l.ring, first_id(l)));
+    let mut pieces: Vec<Vec<Vec<Vertex>>> =
+        shells.iter().map(|s| vec![s.vertices.clone()]).collect();
+    for hole in holes {
+        let at = if shells.len() == 1 {
+            0
+        } else {
+            innermost(&shells, &hole.vertices).unwrap_or(0)
+        };
+        pieces[at].push(hole.vertices);
+    }
+    out.pieces = pieces;
+    Ok(out)
+}
+
+/// Ring `r` without repeated consecutive points and without spikes.
+fn despike(r: usize, ring: Vec<Vertex>, grid: &Grid, out: &mut Repaired) -> Vec<Vertex> {
+    let name = Ring::from_index(r);
+    let spike = |out: &mut Repaired, a: Vertex, b: Vertex, c: Vertex| {
+        out.repairs.push(Repair {
+            kind: RepairKind::Spike,
+            message: format!(
+                "{name}: spike at vertex {} {} removed (edges {}-{} and {}-{} folded back onto each other)",
+                b.1,
+                grid.format_point(b.0),
+                a.1,
+                b.1,
+                b.1,
+                c.1
+            ),
+        });
+    };
+    let mut kept: Vec<Vertex> = Vec::with_capacity(ring.len());
+    for v in ring {
+        if let Some(&last) = kept.last() {
+            if last.0 == v.0 {
+                out.warnings.push(dropped(name, v.1, last.1, grid, v.0));
+                continue;
+            }
+        }
+        kept.push(v);
+        while kept.len() >= 3 {
+            let k = kept.len();
+            let (a, b, c) = (kept[k - 3], kept[k - 2], kept[k - 1]);
+            if !folds_back(a.0, b.0, c.0) {
+                break;
+            }
+            spike(out, a, b, c);
+            kept.remove(k - 2);
+            if a.0 == c.0 {
+                out.warnings.push(dropped(name, c.1, a.1, grid, c.0));
+                kept.pop();
+            }
+        }
+    }
+    // Where the ring closes: the last vertex against the first, spikes at either end.
+    loop {
+        let k = kept.len();
+        if k < 3 {
+            if k == 2 && kept[0].0 == kept[1].0 {
+                out.warnings
+                    .push(dropped(name, kept[1].1, kept[0].1, grid, kept[1].0));
+                kept.pop();
+            }
+            break;
+        }
+        let (first, second, last, before) = (kept[0], kept[1], kept[k - 1], kept[k - 2]);
+        if first.0 == last.0 {
+            out.warnings
+                .push(dropped(name, last.1, first.1, grid, last.0));
+            kept.pop();
+        } else if folds_back(before.0, last.0, first.0) {
+            spike(out, before, last, first);
+            kept.pop();
+        } else if folds_back(last.0, first.0, second.0) {
+            spike(out, last, first, second);
+            kept.remove(0);
+        } else {
+            break;
+        }
+    }
+    kept
+}
+
+/// Ring `r` (an outer boundary if `outer`, else a hole) split into its loops where it passes a
+/// point twice, each loop with its role and orientation; the loop through the ring's first
+/// vertex first.
+fn split(r: usize, outer: bool, ring: Vec<Vertex>, grid: &Grid, out: &mut Repaired) -> Vec<Loop> {
+    let mut stack: Vec<Vertex> = Vec::with_capacity(ring.len());
+    let mut at: HashMap<Point, usize> = HashMap::new();
+    let mut loops: Vec<Vec<Vertex>> = Vec::new();
+    for v in ring {
+        if let Some(&k) = at.get(&v.0) {
+            let found: Vec<Vertex> = stack.drain(k..).collect();
+            for u in &found[1..] {
+                at.remove(&u.0);
+            }
+            loops.push(found);
+        }
+        at.insert(v.0, stack.len());
+        stack.push(v);
+    }
+    loops.insert(0, stack);
+    let name = Ring::from_index(r);
+    let count = loops.len();
+    let depths: Vec<usize> = (0..count)
+        .map(|i| {
+            (0..count)
+                .filter(|&j| j != i && inside(&loops[i], &loops[j]))
+                .count()
+        })
+        .collect();
+    let mut result = Vec::with_capacity(count);
+    for (i, mut vertices) in loops.into_iter().enumerate() {
+        // The outer ring's loops: outer boundaries at even depth; a hole's: holes at even depth.
+        let shell = depths[i].is_multiple_of(2) == outer;
+        if i > 0 {
+            let what = match (outer, shell) {
+                (true, true) => "a separate polygon",
+                (true, false) => "a hole",
+                (false, false) => "a separate hole",
+                (false, true) => "a separate polygon inside the hole",
+            };
+            out.repairs.push(Repair {
+                kind: RepairKind::SplitRing,
+                message: format!(
+                    "{name} touches itself at vertex {} {}: its loop of {} vertices from there became {what}",
+                    vertices[0].1,
+                    grid.format_point(vertices[0].0),
+                    vertices.len()
+                ),
+            });
+        }
+        orient(&mut vertices, shell);
+        result.push(Loop {
+            ring: r,
+            shell,
+            vertices,
+        });
+    }
+    result
+}
+
+/// Twice the signed area of a loop.
+fn area(vertices: &[Vertex]) -> WideSum {
+    let mut sum = WideSum::default();
+    for (i, v) in vertices.iter().enumerate() {
+        let w = vertices[(i + 1) % vertices.len()];
+        sum.add(cross(Point::default(), v.0, w.0));
+    }
+    sum
+}
+
+/// Turns a loop counter-clockwise (`shell`) or clockwise, keeping its first vertex first.
+fn orient(vertices: &mut [Vertex], shell: bool) {
+    let want = if shell { 1 } else { -1 };
+    if area(vertices).signum() == -want {
+        vertices[1..].reverse();
+    }
+}
+
+/// The winding number of loop `ring` around `p`, or `None` when `p` lies on it.
+fn winding(ring: &[Vertex], p: Point) -> Option<i64> {
+    let mut w = 0;
+    for (i, a) in ring.iter().enumerate() {
+        let (a, b) = (a.0, ring[(i + 1) % ring.len()].0);
+        if on_segment(a, b, p) {
+            return None;
+        }
+        if a.y <= p.y {
+            if b.y > p.y && cross(a, b, p) > 0 {
+                w += 1;
+            }
+        } else if b.y <= p.y && cross(a, b, p) < 0 {
+            w -= 1;
+        }
+    }
+    Some(w)
+}
+
+/// Whether loop `inner` lies inside loop `outer`, judged by its first vertex not on `outer`
+/// (loops that do not cross; if every vertex is on `outer`, by none: false).
+fn inside(inner: &[Vertex], outer: &[Vertex]) -> bool {
+    inner
+        .iter()
+        .find_map(|v| winding(outer, v.0))
+        .is_some_and(|w| w != 0)
+}
+
+/// The innermost of `shells` around `hole`, if any.
+fn innermost(shells: &[Loop], hole: &[Vertex]) -> Option<usize> {
+    let around: Vec<usize> = (0..shells.len())
+        .filter(|&s| inside(hole, &shells[s].vertices))
+        .collect();
+    around.iter().copied().find(|&s| {
+        around
+            .iter()
+            .all(|&t| t == s || inside(&shells[s].vertices, &shells[t].vertices))
+    })
+}
+
+/// Two loops sharing edges: the pair (smaller first), how many edges, and the first one (its
+/// loop and the position of its start).
+type Shared = ((usize, usize), usize, (usize, usize));
+
+/// Step 4: edges shared in opposite directions removed and the loops concerned traced again;
+/// the outer boundaries and the holes.
+fn merge(loops: Vec<Loop>, grid: &Grid, out: &mut Repaired) -> (Vec<Loop>, Vec<Loop>) {
+    let cut = cut_overlaps(&loops);
+    // Each directed edge (from, to) of the cut loops: (loop, position of its start).
+    let mut edges: HashMap<(Point, Point), (usize, usize)> = HashMap::new();
+    for (l, lp) in cut.iter().enumerate() {
+        for i in 0..lp.vertices.len() {
+            let (a, b) = (lp.vertices[i].0, lp.vertices[(i + 1) % lp.vertices.len()].0);
+            edges.entry((a, b)).or_insert((l, i));
+        }
+    }
+    let mut cancelled: Vec<Vec<bool>> = cut.iter().map(|l| vec![false; l.vertices.len()]).collect();
+    // For each pair of loops, how many edges they share and the first one.
+    let mut shared: Vec<Shared> = Vec::new();
+    for (l, lp) in cut.iter().enumerate() {
+        for i in 0..lp.vertices.len() {
+            let (a, b) = (lp.vertices[i].0, lp.vertices[(i + 1) % lp.vertices.len()].0);
+            let Some(&(m, j)) = edges.get(&(b, a)) else {
+                continue;
+            };
+            if edges.get(&(a, b)) != Some(&(l, i)) || cancelled[l][i] || cancelled[m][j] {
+                continue; // a repeated edge, or one already matched
+            }
+            cancelled[l][i] = true;
+            cancelled[m][j] = true;
+            let key = (l.min(m), l.max(m));
+            match shared.iter_mut().find(|s| s.0 == key) {
+                Some(s) => s.1 += 1,
+                None => shared.push((key, 1, (l, i))),
+            }
+        }
+    }
+    if shared.is_empty() {
+        return loops.into_iter().partition(|l| l.shell);
+    }
+    for &((l, m), count, (e, i)) in &shared {
+        let v = &cut[e].vertices;
+        let (a, b) = (v[i], v[(i + 1) % v.len()]);
+        let edge = format!(
+            "{} edge {}-{} {}-{}",
+            Ring::from_index(cut[e].ring),
+            a.1,
+            b.1,
+            grid.format_point(a.0),
+            grid.format_point(b.0)
+        );
+        let (rl, rm) = (cut[l].ring, cut[m].ring);
+        let edges = if count == 1 {
+            "an edge".to_string()
+        } else {
+            format!("{count} edges")
+        };
+        let message = if rl == rm {
+            format!(
+                "{} runs along {edges} twice in opposite directions (first {edge}): removed, the ring traced again",
+                Ring::from_index(rl)
+            )
+        } else if rl == 0 || rm == 0 {
+            format!(
+                "{} shares {edges} with the outer ring (first {edge}): removed, the hole became a notch of the outer ring",
+                Ring::from_index(rl.max(rm))
+            )
+        } else {
+            format!(
+                "{} and {} share {edges} (first {edge}): removed, the holes merged",
+                Ring::from_index(rl),
+                Ring::from_index(rm)
+            )
+        };
+        out.repairs.push(Repair {
+            kind: RepairKind::MergedRings,
+            message,
+        });
+    }
+    let touched: Vec<bool> = cancelled.iter().map(|c| c.iter().any(|&x| x)).collect();
+    let mut result = Vec::new();
+    for (l, lp) in loops.into_iter().enumerate() {
+        if !touched[l] {
+            result.push(lp);
+        }
+    }
+    // The remaining edges of the touched loops: start vertex, end point, and the ring numbers.
+    let mut rest: Vec<(Vertex, Point, usize)> = Vec::new();
+    for (l, lp) in cut.iter().enumerate().filter(|(l, _)| touched[*l]) {
+        let k = lp.vertices.len();
+        for i in (0..k).filter(|&i| !cancelled[l][i]) {
+            rest.push((lp.vertices[i], lp.vertices[(i + 1) % k].0, lp.ring));
+        }
+    }
+    let mut leaving: HashMap<Point, Vec<usize>> = HashMap::new();
+    for (e, edge) in rest.iter().enumerate() {
+        leaving.entry(edge.0 .0).or_default().push(e);
+    }
+    let mut used = vec![false; rest.len()];
+    for first in 0..rest.len() {
+        if used[first] {
+            continue;
+        }
+        let mut vertices = Vec::new();
+        let mut e = first;
+        let ring = rest[first].2;
+        loop {
+            used[e] = true;
+            vertices.push(rest[e].0);
+            let (from, to) = (rest[e].0 .0, rest[e].1);
+            let next = leaving.get(&to).and_then(|out| {
+                // The first edge clockwise from the way back (the largest counter-clockwise angle).
+                out.iter()
+                    .copied()
+                    .max_by(|&f, &g| cmp_angle_from(to, from, rest[f].1, rest[g].1))
+            });
+            match next {
+                Some(f) if !used[f] => e = f,
+                _ => break,
+            }
+        }
+        let twice = area(&vertices).signum();
+        if twice == 0 || vertices.len() < 3 {
+            continue;
+        }
+        // Traced where rings touched, it may pass a point twice: its loops, as for an input ring.
+        result.extend(split(ring, twice > 0, vertices, grid, out));
+    }
+    result.into_iter().partition(|l| l.shell)
+}
+
+/// The loops with every edge cut at the vertices of collinear edges lying strictly inside it (a
+/// vertex of the same point, with that vertex's number), so that a stretch shared by two rings
+/// has the same vertices in both.
+fn cut_overlaps(loops: &[Loop]) -> Vec<Loop> {
+    // Every edge by its supporting line: (line, loop, position of its start).
+    let mut by_line = Vec::new();
+    for (l, lp) in loops.iter().enumerate() {
+        let k = lp.vertices.len();
+        for i in 0..k {
+            let (a, b) = (lp.vertices[i].0, lp.vertices[(i + 1) % k].0);
+            by_line.push((line_through(a, b).0, l, i));
+        }
+    }
+    by_line.sort_unstable_by_key(|x| x.0);
+    // Cuts of each edge: (loop, position) -> vertices to insert.
+    let mut cuts: HashMap<(usize, usize), Vec<Vertex>> = HashMap::new();
+    for group in by_line.chunk_by(|x, y| x.0 == y.0).filter(|g| g.len() > 1) {
+        let mut points: Vec<Vertex> = group
+            .iter()
+            .map(|&(_, l, i)| loops[l].vertices[i])
+            .chain(group.iter().map(|&(_, l, i)| {
+                let v = &loops[l].vertices;
+                v[(i + 1) % v.len()]
+            }))
+            .collect();
+        points.sort_unstable();
+        points.dedup_by_key(|v| v.0);
+        for &(_, l, i) in group {
+            let v = &loops[l].vertices;
+            let (a, b) = (v[i].0, v[(i + 1) % v.len()].0);
+            let (lo, hi) = (a.min(b), a.max(b));
+            let start = points.partition_point(|p| p.0 <= lo);
+            let end = points.partition_point(|p| p.0 < hi);
+            if start < end {
+                let mut inner = points[start..end].to_vec();
+                if a > b {
+                    inner.reverse();
+                }
+                cuts.insert((l, i), inner);
+            }
+        }
+    }
+    loops
+        .iter()
+        .enumerate()
+        .map(|(l, lp)| {
+            let mut vertices = Vec::with_capacity(lp.vertices.len());
+            for (i, &v) in lp.vertices.iter().enumerate() {
+                vertices.push(v);
+                if let Some(inner) = cuts.get(&(l, i)) {
+                    vertices.extend_from_slice(inner);
+                }
+            }
+            Loop {
+                vertices,
+                ..lp.clone()
+            }
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests;
