@@ -6,7 +6,7 @@
 //! messages (errors, warnings) without the source name, the triangles as one WKB MultiPolygon
 //! and the totals. Nothing here decides a fact about the geometry: that is the library's work.
 
-use minitri::io::read::{Format, RawPolygon};
+use minitri::io::read::{self, geojson_stream, Format};
 use minitri::pipeline::{self, Error, Options, Outcome};
 use minitri::{Algorithm, ParseError, Polygon, Triangulation};
 use pyo3::exceptions::PyValueError;
@@ -54,19 +54,62 @@ fn algorithm(name: &str) -> PyResult<Algorithm> {
     }
 }
 
-/// The outcomes of one input, as the CLI's pipeline makes them.
-fn outcomes(input: &Input<'_>, options: &Options) -> Vec<Outcome> {
+/// The outcomes of one input, as the CLI's pipeline makes them, each with the input floats in
+/// input numbering for WKB (`None` for text, whose decimals are rounded on the way out).
+fn outcomes(input: &Input<'_>, options: &Options) -> Vec<(Outcome, Option<Vec<[f64; 2]>>)> {
     match input {
-        Input::Text(text, format) => pipeline::process("-", text, *format, options),
-        Input::Wkb(bytes) => match wkb_in::raw_polygons(bytes) {
-            Ok(raws) => raws
+        Input::Text(text, format) => text_outcomes(text, *format, options)
+            .into_iter()
+            .map(|outcome| (outcome, None))
+            .collect(),
+        Input::Wkb(bytes) => match wkb_in::polygons(bytes) {
+            Ok(polygons) => polygons
                 .into_iter()
                 .enumerate()
-                .map(|(i, raw): (usize, RawPolygon)| pipeline::process_raw("-", i, raw, options))
+                .map(|(i, p)| {
+                    (
+                        pipeline::process_raw("-", i, p.raw, options),
+                        Some(p.floats),
+                    )
+                })
                 .collect(),
-            Err(e) => vec![pipeline::unreadable("-", e)],
+            Err(e) => vec![(pipeline::unreadable("-", e), None)],
         },
     }
+}
+
+/// The outcomes of a text, read as the CLI reads a file or standard input: binary data refused,
+/// GeoJSON Lines line by line (a bad line reported alone, the polygons numbered over the lines).
+fn text_outcomes(text: &str, format: Format, options: &Options) -> Vec<Outcome> {
+    if let Some(error) = read::not_text(text.as_bytes(), true) {
+        return vec![pipeline::unreadable("-", Error::Parse(error))];
+    }
+    if format != Format::GeoJson || !geojson_stream::looks_line_delimited(text.as_bytes()) {
+        return pipeline::process("-", text, format, options);
+    }
+    let mut outcomes = Vec::new();
+    let mut index = 0;
+    let mut any = false;
+    for (k, line) in text.split_inclusive('\n').enumerate() {
+        if line.trim_matches([' ', '\t', '\n', '\r']).is_empty() {
+            continue;
+        }
+        any = true;
+        match geojson_stream::read_line(line, k + 1) {
+            Err(e) => outcomes.push(pipeline::unreadable("-", Error::Parse(e))),
+            Ok(raws) => {
+                for raw in raws {
+                    outcomes.push(pipeline::process_raw("-", index, raw, options));
+                    index += 1;
+                }
+            }
+        }
+    }
+    if !any {
+        let error = ParseError::new("empty input: no polygon found");
+        outcomes.push(pipeline::unreadable("-", Error::Parse(error)));
+    }
+    outcomes
 }
 
 /// A message as the CLI prints it, without `minitri: SOURCE: `.
@@ -85,13 +128,18 @@ fn solve(input: &Input<'_>, options: &Options, json: bool) -> Item {
         ..Item::default()
     };
     let mut triangles = Vec::new();
-    for outcome in &outcomes {
+    for (outcome, floats) in &outcomes {
         for warning in &outcome.warnings {
             item.warnings.push(without_source(outcome, warning));
         }
         match (&outcome.result, &outcome.polygon) {
             (Ok(solved), Some(polygon)) => {
-                add(&mut item, &mut triangles, polygon, &solved.triangulation);
+                let t = &solved.triangulation;
+                add(&mut item, polygon, t);
+                match floats {
+                    Some(floats) => triangles.extend(input_triangles(polygon, t, floats)),
+                    None => triangles.extend(minitri::geo::multi_polygon(polygon, t)),
+                }
                 if json {
                     item.parts.extend(minitri::io::write::json::render(outcome));
                 }
@@ -121,20 +169,33 @@ fn solve(input: &Input<'_>, options: &Options, json: bool) -> Item {
     item
 }
 
+/// The triangles of `t` with corners taken from the input floats (`floats[k]` is input vertex
+/// `k`): the same corners as [`minitri::geo::multi_polygon`] gives for float input (the shortest
+/// decimal of a float rounds back to it), without formatting and parsing each one.
+fn input_triangles<'a>(
+    polygon: &'a Polygon,
+    t: &'a Triangulation,
+    floats: &'a [[f64; 2]],
+) -> impl Iterator<Item = geo_types::Polygon<f64>> + 'a {
+    t.triangles.iter().filter_map(move |triangle| {
+        let corner = |v: usize| {
+            floats
+                .get(polygon.id(v))
+                .map(|&[x, y]| geo_types::Coord { x, y })
+        };
+        let [a, b, c] = triangle.map(corner);
+        Some(geo_types::Triangle::new(a?, b?, c?).to_polygon())
+    })
+}
+
 /// Adds one solved polygon to the totals.
-fn add(
-    item: &mut Item,
-    triangles: &mut Vec<geo_types::Polygon<f64>>,
-    polygon: &Polygon,
-    t: &Triangulation,
-) {
+fn add(item: &mut Item, polygon: &Polygon, t: &Triangulation) {
     item.triangle_count += t.triangles.len();
     item.degenerate_count += t.degenerate.len();
     item.optimal &= t.optimal;
     let (lower, upper) = polygon.minimum_bounds();
     item.lower += lower;
     item.upper += upper;
-    triangles.extend(minitri::geo::multi_polygon(polygon, t));
 }
 
 fn options(algorithm_name: &str, verify: bool) -> PyResult<Options> {
