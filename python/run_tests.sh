@@ -14,6 +14,7 @@ venv=${MINITRI_VENV:-.venv}
 if [ ! -x "$venv/bin/python" ]; then
   "$python" -m venv "$venv"
 fi
+venv=$(cd "$venv" && pwd)
 py="$venv/bin/python"
 missing=()
 "$py" -c "import maturin" 2>/dev/null || missing+=("maturin>=1.5,<2")
@@ -24,13 +25,15 @@ missing=()
 if [ ${#missing[@]} -gt 0 ]; then
   "$py" -m pip install --quiet --disable-pip-version-check "${missing[@]}"
 fi
+# The binding's own lints (its own workspace: the main crate's clippy does not see it).
+cargo clippy --release --quiet -- -D warnings
 # The command-line tool the tests compare with (the main crate's debug build).
 (cd .. && cargo build --quiet --bin minitri)
 export MINITRI_BIN
 MINITRI_BIN="$(cd .. && pwd)/target/debug/minitri"
 # Build the wheel and install it as a user would (pip install ./python does the same).
 rm -rf target/wheels
-"$venv/bin/maturin" build --release --quiet --out target/wheels
+"$venv/bin/maturin" build --release --quiet --interpreter "$py" --out target/wheels
 "$py" -m pip install --quiet --disable-pip-version-check --force-reinstall --no-deps \
   target/wheels/minitri-*.whl
 # Run from tests/ so that `import minitri` finds the installed package, not this directory's
