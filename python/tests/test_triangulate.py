@@ -143,3 +143,15 @@ def test_algorithms(algorithm, count):
     result = minitri.triangulate(U_FLAT, algorithm=algorithm)
     assert result.triangle_count == count
     assert result.parts[0].algorithm == algorithm
+
+
+def test_a_failed_verification_raises(monkeypatch):
+    # The library's fault injection for tests: with verify, the chosen output loses a triangle.
+    monkeypatch.setenv("MINITRI_CORRUPT_FOR_TESTS", "drop")
+    with pytest.raises(minitri.VerificationError) as caught:
+        minitri.triangulate(U_FLAT, verify=True)
+    assert caught.value.messages == ["polygon 0: minitri gives 4 triangles but asano gives 5"]
+    with pytest.raises(minitri.VerificationError, match="^geometry 0: polygon 0: minitri gives"):
+        minitri.triangulate_many([shapely.from_wkt(U_FLAT)], verify=True)
+    # Without verify nothing is checked, and nothing is corrupted.
+    assert minitri.triangulate(U_FLAT).triangle_count == 5
