@@ -13,6 +13,7 @@ the input floats, bit for bit.
 
 from __future__ import annotations
 
+import functools
 import json
 from collections.abc import Mapping
 
@@ -103,7 +104,7 @@ class Triangulation:
     - ``parts``: one :class:`Part` per polygon (the tool's JSON, per-polygon numbering).
     """
 
-    def __init__(self, parts, warnings, wkb, vertices):
+    def __init__(self, parts, warnings, wkb, geom):
         self.parts = parts
         self.warnings = list(warnings)
         self.triangles = shapely.from_wkb(wkb)
@@ -116,7 +117,14 @@ class Triangulation:
         self.degenerate = _triples(
             np.concatenate([p.degenerate + o for p, o in zip(parts, offsets)])
         )
-        self.vertices = vertices
+        self._geom = geom
+
+    @functools.cached_property
+    def vertices(self):
+        """The input coordinates in input numbering, an ``(n, 2)`` float array (made when first
+        asked for)."""
+        geom = self._geom
+        return _vertices(geom if isinstance(geom, shapely.Geometry) else _text_shape(geom))
 
     def __repr__(self):
         return (
@@ -198,8 +206,7 @@ def triangulate(geom, algorithm: str = "minitri", verify: bool = False) -> Trian
     if failures:
         raise VerificationError(failures)
     parts = [Part(json.loads(p)) for p in parts]
-    vertices = _vertices(shape if shape is not None else _text_shape(geom))
-    return Triangulation(parts, warnings, wkb, vertices)
+    return Triangulation(parts, warnings, wkb, shape if shape is not None else geom)
 
 
 def _text_shape(geom):
