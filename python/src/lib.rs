@@ -172,20 +172,18 @@ fn solve(input: &Input<'_>, options: &Options, json: bool) -> Item {
 /// The triangles of `t` with corners taken from the input floats (`floats[k]` is input vertex
 /// `k`): the same corners as [`minitri::geo::multi_polygon`] gives for float input (the shortest
 /// decimal of a float rounds back to it), without formatting and parsing each one.
-fn input_triangles<'a>(
-    polygon: &'a Polygon,
-    t: &'a Triangulation,
-    floats: &'a [[f64; 2]],
-) -> impl Iterator<Item = geo_types::Polygon<f64>> + 'a {
-    t.triangles.iter().filter_map(move |triangle| {
-        let corner = |v: usize| {
-            floats
-                .get(polygon.id(v))
-                .map(|&[x, y]| geo_types::Coord { x, y })
-        };
-        let [a, b, c] = triangle.map(corner);
-        Some(geo_types::Triangle::new(a?, b?, c?).to_polygon())
-    })
+fn input_triangles(
+    polygon: &Polygon,
+    t: &Triangulation,
+    floats: &[[f64; 2]],
+) -> Vec<geo_types::Polygon<f64>> {
+    let corner = |v: usize| floats.get(v).map(|&[x, y]| geo_types::Coord { x, y });
+    t.input_triangles(polygon)
+        .into_iter()
+        .filter_map(|[a, b, c]| {
+            Some(geo_types::Triangle::new(corner(a)?, corner(b)?, corner(c)?).to_polygon())
+        })
+        .collect()
 }
 
 /// Adds one solved polygon to the totals.
