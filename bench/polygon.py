@@ -21,6 +21,12 @@
   bench/polygon.py zigzag N [SEED]       the same corridor turning right and up alternately
                                          (segments of about sqrt(12 N) columns), so that it runs
                                          both ways and its bounding box is square
+  bench/polygon.py comb N                a comb of N teeth 1 wide and 9 high, gaps 1 wide, the
+                                         gap floors on one line (about 4 N vertices)
+  bench/polygon.py sliver N              a staircase of unit steps from (N 1) to (1 N) over the
+                                         long sliver edge (0 0, N 1): (0 0, N 1, N-1 1, N-1 2,
+                                         ..., 1 N); about 2 N vertices, every reflex corner on the
+                                         line x + y = N, each seeing along it
 """
 import math, random, sys
 
@@ -138,6 +144,16 @@ elif kind == "zigzag":
         else:
             y0 += length - 6
     pts = boundary(cells)
+elif kind == "comb":
+    pts = [(0, 0), (2 * n - 1, 0)]
+    for i in range(n - 1, -1, -1):
+        pts += [(2 * i + 1, 10), (2 * i, 10)]
+        if i > 0:
+            pts += [(2 * i, 1), (2 * i - 1, 1)]
+elif kind == "sliver":
+    pts = [(0, 0), (n, 1)]
+    for k in range(1, n):
+        pts += [(n - k, k), (n - k, k + 1)]
 else:
-    sys.exit(f"unknown kind {kind!r}: use star, convex, maze, bars, snake or zigzag")
+    sys.exit(f"unknown kind {kind!r}: use star, convex, maze, bars, snake, zigzag, comb or sliver")
 print("POLYGON ((" + ", ".join(f"{x} {y}" for x, y in pts + pts[:1]) + "))")
