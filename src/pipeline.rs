@@ -9,6 +9,7 @@ use crate::algo::{
     asano, ear, minitri, pseudo, pseudo_hull, Algorithm, Pseudotriangulation, TriangulateError,
     Triangulation,
 };
+use crate::feature::Identity;
 use crate::geom::polygon::{Polygon, Warning};
 use crate::geom::validate::InvalidPolygon;
 use crate::io::read::{self, Format, ParseError, RawPolygon};
@@ -130,6 +131,8 @@ pub struct Outcome {
     pub result: Result<Solved, Error>,
     /// What the tool changed in the input (dropped duplicate vertices).
     pub warnings: Vec<Warning>,
+    /// The input feature and part this outcome is (GeoJSON inputs; see [`crate::feature`]).
+    pub feature: Option<Identity>,
 }
 
 impl Outcome {
@@ -152,11 +155,19 @@ impl Outcome {
 }
 
 impl fmt::Display for Outcome {
-    /// `source: polygon 2: ` as a prefix for messages about this outcome.
+    /// `source: polygon 2` (or `source: feature 3`, `source: feature 3, part 1` for a
+    /// GeoJSON feature) as a prefix for messages about this outcome. A failure to read names
+    /// its feature or line in its own message.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self.index {
-            Some(i) => write!(f, "{}: polygon {i}", self.source),
-            None => write!(f, "{}", self.source),
+        match (self.index, &self.feature) {
+            (Some(_), Some(id)) if id.multipart() => write!(
+                f,
+                "{}: feature {}, part {}",
+                self.source, id.feature.number, id.part
+            ),
+            (Some(_), Some(id)) => write!(f, "{}: feature {}", self.source, id.feature.number),
+            (Some(i), None) => write!(f, "{}: polygon {i}", self.source),
+            (None, _) => write!(f, "{}", self.source),
         }
     }
 }
@@ -335,6 +346,7 @@ pub fn unreadable(source: &str, error: Error) -> Outcome {
         polygon: None,
         result: Err(error),
         warnings: Vec::new(),
+        feature: None,
     }
 }
 
@@ -363,6 +375,7 @@ pub fn process_raw(source: &str, index: usize, raw: RawPolygon, options: &Option
         polygon: None,
         result: Err(Error::Invalid(Vec::new())),
         warnings: Vec::new(),
+        feature: None,
     };
     let validated = Polygon::from_raw_all_errors(&raw);
     drop(raw);

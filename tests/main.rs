@@ -7,6 +7,7 @@ mod errors;
 mod formats;
 mod geo;
 mod holes_dp;
+mod pipelines;
 mod property;
 mod pseudo;
 mod svg;

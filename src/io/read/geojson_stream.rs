@@ -29,15 +29,22 @@
 use super::geojson::{collection_feature, json_message, top_level, type_of, JSON_WHITESPACE};
 use super::geojson_seed::{FeatureSink, Node, NodeSeed, Object};
 use super::{locate, Location, ParseError, RawPolygon};
+use crate::feature::{Feature, Geometry};
 use serde::de::{self, DeserializeSeed};
+use serde_json::value::RawValue;
 use std::cell::RefCell;
 use std::collections::VecDeque;
 use std::io::{self, BufRead, Read};
 use std::rc::Rc;
+use std::sync::Arc;
 
 /// One thing read from the stream.
 #[derive(Debug)]
 pub enum Event {
+    /// A feature starts (a Feature of a collection, or a top-level value): its identity and
+    /// what its geometry is. Its events follow: [`Geometry::Parts`]`(k)` polygons, or one
+    /// failure ([`Geometry::Failed`]), or none ([`Geometry::Null`]).
+    Feature(Arc<Feature>),
     /// The next polygon.
     Polygon(RawPolygon),
     /// A feature or top-level value that is not a polygon (its polygons, if any, are skipped).
@@ -96,6 +103,7 @@ pub fn stream<R: BufRead>(
         output_error: None,
         polygons: 0,
         failures: 0,
+        features: 0,
     };
     // The first value's failure waits until we know whether the input holds several values,
     // which decides whether its message carries a location (as in `geojson::read`).
@@ -169,10 +177,20 @@ pub fn stream<R: BufRead>(
 /// # Ok::<(), minitri::io::read::ParseError>(())
 /// ```
 pub fn read_line(line: &str, number: usize) -> Result<Vec<RawPolygon>, ParseError> {
+    read_line_feature(line, number, 0).1
+}
+
+/// [`read_line`] with the line's feature (numbered `feature`): its `id`, `properties` and
+/// geometry, `None` for a blank line or a line that is not JSON.
+pub fn read_line_feature(
+    line: &str,
+    number: usize,
+    feature: usize,
+) -> (Option<Feature>, Result<Vec<RawPolygon>, ParseError>) {
     let line = line.strip_prefix('\u{feff}').unwrap_or(line);
     let body = line.trim_start_matches(JSON_WHITESPACE);
     if body.trim_end_matches(JSON_WHITESPACE).is_empty() {
-        return Ok(Vec::new());
+        return (None, Ok(Vec::new()));
     }
     let at = |column: usize| Location {
         line: number,
@@ -194,13 +212,48 @@ pub fn read_line(line: &str, number: usize) -> Result<Vec<RawPolygon>, ParseErro
             .then(|| body.as_bytes().get(e.column() - 1).copied())
             .flatten();
         ParseError::at(at(column), json_message(&e, found))
-    })?;
+    });
+    let mut node = match node {
+        Ok(node) => node,
+        Err(e) => return (None, Err(e)),
+    };
+    let (id, properties, null) = identity(&mut node);
     let mut polygons = Vec::new();
-    top_level(node, &mut polygons).map_err(|failure| {
+    let result = top_level(node, &mut polygons).map_err(|failure| {
         let column = line.chars().count() - body.chars().count() + 1;
         ParseError::at(at(column), failure.to_string())
-    })?;
-    Ok(polygons)
+    });
+    let geometry = geometry_of(result.is_ok(), null, polygons.len());
+    let feature = Feature {
+        number: feature,
+        line: Some(number),
+        id,
+        properties,
+        geometry,
+    };
+    (Some(feature), result.map(|()| polygons))
+}
+
+/// A Feature object's `id` and `properties` (taken out of it), and whether its geometry is
+/// `null`; nothing for any other value.
+fn identity(node: &mut Node) -> (Option<Box<RawValue>>, Option<Box<RawValue>>, bool) {
+    match node {
+        Node::Object(object) if object.kind() == Some("Feature") => (
+            object.id.take(),
+            object.properties.take(),
+            matches!(object.geometry, Some(Node::Null)),
+        ),
+        _ => (None, None, false),
+    }
+}
+
+/// What a feature's geometry is, from how it was read.
+fn geometry_of(read: bool, null: bool, polygons: usize) -> Geometry {
+    match (read, null) {
+        (false, _) => Geometry::Failed,
+        (true, true) => Geometry::Null,
+        (true, false) => Geometry::Parts(polygons),
+    }
 }
 
 /// Does `start` (the first bytes of an input) look like GeoJSON Lines: a first line that is a
@@ -349,9 +402,28 @@ struct Sink<'e> {
     output_error: Option<io::Error>,
     polygons: usize,
     failures: usize,
+    features: usize,
 }
 
 impl Sink<'_> {
+    /// Announces the next feature ([`Event::Feature`]).
+    fn announce(
+        &mut self,
+        (id, properties, null): (Option<Box<RawValue>>, Option<Box<RawValue>>, bool),
+        read: bool,
+        polygons: usize,
+    ) -> io::Result<()> {
+        let feature = Feature {
+            number: self.features,
+            line: None,
+            id,
+            properties,
+            geometry: geometry_of(read, null, polygons),
+        };
+        self.features += 1;
+        (self.emit)(Event::Feature(Arc::new(feature)))
+    }
+
     fn polygon(&mut self, polygon: RawPolygon) -> io::Result<()> {
         self.polygons += 1;
         (self.emit)(Event::Polygon(polygon))
@@ -363,9 +435,12 @@ impl Sink<'_> {
     }
 
     /// Element `index` of a FeatureCollection's `features`: its polygons, or why not.
-    fn feature(&mut self, index: usize, node: Node) -> io::Result<()> {
+    fn feature(&mut self, index: usize, mut node: Node) -> io::Result<()> {
+        let identity = identity(&mut node);
         let mut polygons = Vec::new();
-        match collection_feature(node, &mut polygons) {
+        let read = collection_feature(node, &mut polygons);
+        self.announce(identity, read.is_ok(), polygons.len())?;
+        match read {
             Ok(()) => polygons
                 .into_iter()
                 .try_for_each(|polygon| self.polygon(polygon)),
@@ -396,9 +471,12 @@ impl Sink<'_> {
                 }
                 Ok(None)
             }
-            node => {
+            mut node => {
+                let identity = identity(&mut node);
                 let mut polygons = Vec::new();
-                match top_level(node, &mut polygons) {
+                let read = top_level(node, &mut polygons);
+                self.announce(identity, read.is_ok(), polygons.len())?;
+                match read {
                     Ok(()) => {
                         for polygon in polygons {
                             self.polygon(polygon)?;
@@ -431,10 +509,11 @@ mod tests {
     fn events(text: &str) -> (Vec<Result<RawPolygon, String>>, Option<String>) {
         let mut out = Vec::new();
         let stop = stream(text.as_bytes(), &mut |e| {
-            out.push(match e {
-                Event::Polygon(p) => Ok(p),
-                Event::Failed(e) => Err(e.to_string()),
-            });
+            match e {
+                Event::Feature(_) => {}
+                Event::Polygon(p) => out.push(Ok(p)),
+                Event::Failed(e) => out.push(Err(e.to_string())),
+            }
             Ok(())
         })
         .err()
