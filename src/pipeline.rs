@@ -156,16 +156,21 @@ impl Outcome {
 
 impl fmt::Display for Outcome {
     /// `source: polygon 2` (or `source: feature 3`, `source: feature 3, part 1` for a
-    /// GeoJSON feature) as a prefix for messages about this outcome. A failure to read names
-    /// its feature or line in its own message.
+    /// GeoJSON feature, `source: line 4` for a line of GeoJSON Lines) as a prefix for messages
+    /// about this outcome. A failure to read names its feature or line in its own message.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match (self.index, &self.feature) {
-            (Some(_), Some(id)) if id.multipart() => write!(
-                f,
-                "{}: feature {}, part {}",
-                self.source, id.feature.number, id.part
-            ),
-            (Some(_), Some(id)) => write!(f, "{}: feature {}", self.source, id.feature.number),
+            (Some(_), Some(id)) => {
+                // GeoJSON Lines: by line, as their reading errors are.
+                match id.feature.line {
+                    Some(line) => write!(f, "{}: line {line}", self.source)?,
+                    None => write!(f, "{}: feature {}", self.source, id.feature.number)?,
+                }
+                if id.multipart() {
+                    write!(f, ", part {}", id.part)?;
+                }
+                Ok(())
+            }
             (Some(i), None) => write!(f, "{}: polygon {i}", self.source),
             (None, _) => write!(f, "{}", self.source),
         }

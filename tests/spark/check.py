@@ -3,8 +3,8 @@
     python3 check.py INPUT_DIR OUTPUT_DIR PLAIN.geojsonl PLAIN.json
 
 Every input id comes back exactly once (in results/, features/ and joined/); each feature's
-outcome (ok, parts, triangle_count, degenerate_count, optimal, errors) is the one of the plain
-run (`minitri --to geojsonl` on the concatenated input); the totals equal the plain JSON run's
+outcome (ok, parts, triangle_count, degenerate_count, optimal, errors but their line numbers,
+which count lines within a task's part) is the one of the plain run (`minitri --to geojsonl` on the concatenated input); the totals equal the plain JSON run's
 (`minitri --to json`: its polygons' triangles, its errors); the invalid and null features, and
 only those, are reported with their ids. Prints a summary; exits 1 on the first difference.
 """
@@ -12,7 +12,18 @@ only those, are reported with their ids. Prints a summary; exits 1 on the first 
 import glob
 import json
 import os
+import re
 import sys
+
+# Line numbers are those of a task's part of the input, not of the whole file: compared without.
+LINE = re.compile(r"^line \d+(, column \d+)?: ")
+
+
+def outcome(facts, fields):
+    got = {k: facts.get(k) for k in fields}
+    if got["errors"]:
+        got["errors"] = [LINE.sub("", e) for e in got["errors"]]
+    return got
 
 
 def lines(pattern):
@@ -40,7 +51,7 @@ def main():
     plain = {}
     for f in lines(plain_lines):
         m = f["properties"]["minitri"]
-        plain[f["id"]] = {k: m.get(k) for k in fields}
+        plain[f["id"]] = outcome(m, fields)
 
     for name in ["results", "features", "joined"]:
         rows = list(lines(os.path.join(output_dir, name, "part-*")))
@@ -52,7 +63,7 @@ def main():
                  f"({len(missing)} missing, {extra} repeated)")
     results = {r["id"]: r for r in lines(os.path.join(output_dir, "results", "part-*"))}
     for i in ids:
-        spark = {k: results[i].get(k) for k in fields}
+        spark = outcome(results[i], fields)
         if spark != plain[i]:
             fail(f"id {i}: Spark gives {spark}, the plain run {plain[i]}")
         if (kinds[i] in ("invalid", "null")) == spark["ok"]:
