@@ -25,12 +25,12 @@ if [ ! -x "$venv/bin/spark-submit" ]; then
   "$venv/bin/pip" install -q pyspark
 fi
 
-cargo build --release --quiet --bin minitri --example buildings
+cargo build --release --quiet --bin minitri
 minitri=target/release/minitri
 
 rm -rf "$work"
 mkdir -p "$work/input"
-target/release/examples/buildings "$n" > "$work/all.geojsonl"
+python3 tests/spark/buildings.py "$n" > "$work/all.geojsonl"
 # A dataset as Spark jobs find them: a directory of part files.
 split -n l/4 -d -a 5 "$work/all.geojsonl" "$work/input/part-"
 
