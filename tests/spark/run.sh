@@ -35,8 +35,8 @@ python3 tests/spark/buildings.py "$n" > "$work/all.geojsonl"
 split -n l/4 -d -a 5 "$work/all.geojsonl" "$work/input/part-"
 
 # The plain run the Spark result must equal (exit status 1: some features are invalid).
-"$minitri" -q --to geojsonl "$work/all.geojsonl" > "$work/plain.geojsonl" || [ $? -eq 1 ]
-"$minitri" -q --to json "$work/all.geojsonl" > "$work/plain.json" || [ $? -eq 1 ]
+"$minitri" -q --to geojsonl "$work/all.geojsonl" > "$work/plain.geojsonl" 2> "$work/plain.err" || [ $? -eq 1 ]
+"$minitri" -q --to json "$work/all.geojsonl" > "$work/plain.json" 2>> "$work/plain.err" || [ $? -eq 1 ]
 
 export PYSPARK_PYTHON="$PWD/$venv/bin/python"
 started=$(date +%s.%N)
@@ -55,7 +55,7 @@ if [ -n "${MINITRI_SPARK_TIMES:-}" ]; then
   for jobs in 1 2; do
     t0=$(date +%s.%N)
     "$minitri" -q --jobs "$jobs" --from geojson - --to geojsonl < "$work/all.geojsonl" \
-      > /dev/null || [ $? -eq 1 ]
+      > /dev/null 2>&1 || [ $? -eq 1 ]
     t1=$(date +%s.%N)
     echo "filter, --jobs $jobs: $(rate "$(awk -v a="$t0" -v b="$t1" 'BEGIN { print b - a }')")"
   done
