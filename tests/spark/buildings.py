@@ -6,8 +6,8 @@ test and of the throughput figures in docs/pipelines.md.
 Each line is a Feature with `id` "b<k>" and properties {"k": k, "kind": ...}: a rectilinear
 footprint (a rectangle with notches cut from some corners and the bottom side: 4 to 16
 vertices, coordinates with one decimal), one in ten with a rectangular courtyard (a hole), one
-in 1000 a two-part MultiPolygon (a building and its annex), one in 500 invalid (a bow tie,
-"kind": "invalid") and one in 2000 with a null geometry ("kind": "null"). Deterministic for a
+in 1000 a two-part MultiPolygon (a building and its annex); every 500th invalid (a bow tie,
+"kind": "invalid") but every 2000th with a null geometry instead ("kind": "null"). Deterministic for a
 seed. (Python rather than a Rust example: an example would build every dev-dependency.)
 """
 

@@ -713,6 +713,37 @@ mod tests {
     }
 
     #[test]
+    fn each_feature_is_announced_with_its_id_and_properties_as_written() {
+        let text = format!(
+            r#"{{"type": "FeatureCollection", "features": [{{"type": "Feature", "id": "a", "properties": {{"h": 12.50}}, "geometry": {B}}}, {{"type": "Feature", "id": 1e400, "geometry": null}}, {{"type": "Feature", "geometry": {{"type": "Point", "coordinates": [0, 0]}}}}]}}"#
+        );
+        let mut announced = Vec::new();
+        stream(text.as_bytes(), &mut |e| {
+            if let Event::Feature(f) = e {
+                let raw = |v: &Option<Box<RawValue>>| v.as_ref().map(|v| v.get().to_string());
+                announced.push((f.number, raw(&f.id), raw(&f.properties), f.geometry));
+            }
+            Ok(())
+        })
+        .unwrap();
+        let some = |s: &str| Some(s.to_string());
+        assert_eq!(
+            announced,
+            [
+                (0, some("\"a\""), some("{\"h\": 12.50}"), Geometry::Parts(2)),
+                (1, some("1e400"), None, Geometry::Null),
+                (2, None, None, Geometry::Failed),
+            ]
+        );
+        let (feature, read) = read_line_feature(A, 4, 9);
+        let feature = feature.unwrap();
+        assert_eq!((feature.number, feature.line), (9, Some(4)));
+        assert_eq!(feature.geometry, Geometry::Parts(1));
+        assert_eq!(read.unwrap().len(), 1);
+        assert!(read_line_feature("{", 4, 9).0.is_none(), "not JSON: no feature");
+    }
+
+    #[test]
     fn an_output_error_stops_reading_and_is_returned() {
         let mut calls = 0;
         let stop = stream(format!("{A}\n{A}\n").as_bytes(), &mut |_| {
