@@ -77,8 +77,11 @@ pub enum Stop {
 ///   {"type": "Feature", "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 1]]]}}]}"#;
 /// let mut events = Vec::new();
 /// stream(text.as_bytes(), &mut |e| Ok(events.push(e))).map_err(|e| format!("{e:?}"))?;
-/// assert!(matches!(&events[0], Event::Failed(e) if e.to_string().starts_with("feature 0: ")));
-/// assert!(matches!(&events[1], Event::Polygon(p) if p.rings[0].len() == 3));
+/// // Each feature is announced (its id, properties, geometry kind), then its polygons or failure.
+/// assert!(matches!(&events[0], Event::Feature(f) if f.number == 0));
+/// assert!(matches!(&events[1], Event::Failed(e) if e.to_string().starts_with("feature 0: ")));
+/// assert!(matches!(&events[2], Event::Feature(f) if f.number == 1));
+/// assert!(matches!(&events[3], Event::Polygon(p) if p.rings[0].len() == 3));
 /// # Ok::<(), String>(())
 /// ```
 pub fn stream<R: BufRead>(
@@ -740,7 +743,10 @@ mod tests {
         assert_eq!((feature.number, feature.line), (9, Some(4)));
         assert_eq!(feature.geometry, Geometry::Parts(1));
         assert_eq!(read.unwrap().len(), 1);
-        assert!(read_line_feature("{", 4, 9).0.is_none(), "not JSON: no feature");
+        assert!(
+            read_line_feature("{", 4, 9).0.is_none(),
+            "not JSON: no feature"
+        );
     }
 
     #[test]
