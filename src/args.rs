@@ -16,6 +16,8 @@ macro_rules! examples {
   minitri --to svg -o u.svg u_shape.wkt            draw it
   minitri --to svg --labels --verify big.wkt > b.svg   vertex numbers at any size, faults in red
   minitri --to geojson u_shape.wkt                 the triangles for a GIS (also --to wkt)
+  minitri layer.geojson -o out.geojson             one Feature per input feature, id and properties kept
+  minitri --from geojson - --to geojsonl < in.geojsonl   a filter: one GeoJSON line out per line in
   minitri --from vertices points.txt               one `x y` vertex per line (also --from wkt, geojson)
   minitri --verify shapes/                         a directory, every output checked by the DP too
   minitri shapes/ -o out/ --jobs 2                 one output per input file, mirrored, 2 threads
@@ -60,9 +62,10 @@ pub struct Flags {
     /// Input format; auto decides by extension, then by content
     #[arg(long, value_enum, default_value = "auto")]
     pub from: FromFlag,
-    /// Output format
-    #[arg(short, long, value_enum, default_value = "json")]
-    pub to: ToFlag,
+    /// Output format [default: from -o's extension (.json, .geojson, .geojsonl, .wkt, .svg),
+    /// else json]
+    #[arg(short, long, value_enum)]
+    pub to: Option<ToFlag>,
     /// Write the output to this file instead of standard output; with a directory input or
     /// several inputs, a directory mirroring the input tree, one output file per input file
     #[arg(short, long, value_name = "PATH")]
@@ -148,12 +151,26 @@ pub enum FromFlag {
 pub enum ToFlag {
     /// The JSON document: every polygon with its triangles, counts, bounds and warnings
     Json,
-    /// A GeoJSON FeatureCollection, one Feature per triangle
+    /// A GeoJSON FeatureCollection, one Feature per input feature (a MultiPolygon of its
+    /// triangles, the input's id and properties)
     Geojson,
+    /// GeoJSON Lines: the same Features, one per line (a filter with GeoJSON Lines in)
+    Geojsonl,
+    /// A GeoJSON FeatureCollection, one Feature per triangle
+    GeojsonTriangles,
     /// WKT, one MULTIPOLYGON of triangles per line and polygon
     Wkt,
     /// A picture
     Svg,
+}
+
+impl ToFlag {
+    /// The flag's value as written on the command line.
+    pub fn name(self) -> String {
+        self.to_possible_value()
+            .map(|v| v.get_name().to_string())
+            .unwrap_or_default()
+    }
 }
 
 /// The validated configuration the binary runs with.
@@ -206,7 +223,11 @@ impl Flags {
         }
         let matches = cmd.get_matches_mut();
         let flags = Flags::from_arg_matches(&matches).unwrap_or_else(|e| e.format(&mut cmd).exit());
-        if flags.labels && flags.to != ToFlag::Svg {
+        if let Err(message) = flags.output_format() {
+            cmd.error(clap::error::ErrorKind::ArgumentConflict, message)
+                .exit();
+        }
+        if flags.labels && flags.output_format().ok() != Some(ToFlag::Svg) {
             cmd.error(
                 clap::error::ErrorKind::ArgumentConflict,
                 "--labels only applies to --to svg",
@@ -216,8 +237,44 @@ impl Flags {
         flags
     }
 
+    /// The output format: `--to`, or else `-o`'s extension when it names one, or else JSON.
+    ///
+    /// # Errors
+    /// When `--to` and `-o`'s extension name different formats.
+    pub fn output_format(&self) -> Result<ToFlag, String> {
+        let by_name = self
+            .output
+            .as_deref()
+            .filter(|out| !out.is_dir())
+            .and_then(|out| out.extension())
+            .and_then(|e| e.to_str())
+            .and_then(|e| OutputFormat::from_extension(e).map(|f| (e, f)));
+        let named = by_name.map(|(_, format)| match format {
+            OutputFormat::Json => ToFlag::Json,
+            OutputFormat::GeoJson | OutputFormat::GeoJsonTriangles => ToFlag::Geojson,
+            OutputFormat::GeoJsonLines => ToFlag::Geojsonl,
+            OutputFormat::Wkt => ToFlag::Wkt,
+            OutputFormat::Svg(_) => ToFlag::Svg,
+        });
+        let agrees = |to: ToFlag, named: ToFlag| {
+            to == named || (to == ToFlag::GeojsonTriangles && named == ToFlag::Geojson)
+        };
+        match (self.to, named, by_name) {
+            (Some(to), Some(named), Some((extension, _))) if !agrees(to, named) => Err(format!(
+                "--to {} conflicts with the output file's extension .{extension} (which stands \
+                 for --to {}): change one, or drop --to",
+                to.name(),
+                named.name()
+            )),
+            (Some(to), _, _) => Ok(to),
+            (None, Some(named), _) => Ok(named),
+            (None, None, _) => Ok(ToFlag::Json),
+        }
+    }
+
     /// Validates the flags into a [`Config`].
     pub fn into_config(self) -> Config {
+        let to = self.output_format().unwrap_or(ToFlag::Json);
         let algorithm = match self.algorithm {
             AlgorithmFlag::Minitri => Algorithm::Minitri,
             AlgorithmFlag::Asano => Algorithm::Asano,
@@ -239,9 +296,11 @@ impl Flags {
         Config {
             inputs,
             from,
-            to: match self.to {
+            to: match to {
                 ToFlag::Json => OutputFormat::Json,
                 ToFlag::Geojson => OutputFormat::GeoJson,
+                ToFlag::Geojsonl => OutputFormat::GeoJsonLines,
+                ToFlag::GeojsonTriangles => OutputFormat::GeoJsonTriangles,
                 ToFlag::Wkt => OutputFormat::Wkt,
                 ToFlag::Svg => OutputFormat::Svg(svg::Style {
                     labels: self.labels,

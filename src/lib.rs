@@ -84,6 +84,7 @@ macro_rules! order_from_cmp {
 
 pub mod algo;
 pub mod batch;
+pub mod feature;
 pub mod geo;
 pub mod geom;
 pub mod io;

@@ -9,6 +9,7 @@ use crate::algo::{
     asano, ear, minitri, pseudo, pseudo_hull, Algorithm, Pseudotriangulation, TriangulateError,
     Triangulation,
 };
+use crate::feature::Identity;
 use crate::geom::polygon::{Polygon, Warning};
 use crate::geom::repair::{self, Repair};
 use crate::geom::validate::InvalidPolygon;
@@ -141,6 +142,8 @@ pub struct Outcome {
     /// With `--repair`: what was repaired in the input polygon (the same list for each of its
     /// pieces); `None` without `--repair`.
     pub repaired: Option<Vec<Repair>>,
+    /// The input feature and part this outcome is (GeoJSON inputs; see [`crate::feature`]).
+    pub feature: Option<Identity>,
 }
 
 impl Outcome {
@@ -173,10 +176,28 @@ impl Outcome {
 }
 
 impl fmt::Display for Outcome {
-    /// `source: polygon 2: ` as a prefix for messages about this outcome.
+    /// `source: polygon 2` (or `source: feature 3`, `source: feature 3, part 1` for a
+    /// GeoJSON feature, `source: line 4` for a line of GeoJSON Lines) as a prefix for messages
+    /// about this outcome. A failure to read names its feature or line in its own message.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match (self.index, self.piece) {
-            (Some(i), Some(k)) => write!(f, "{}: polygon {i} piece {k}", self.source),
+        match (self.index, &self.feature) {
+            (Some(_), Some(id)) => {
+                // GeoJSON Lines: by line, as their reading errors are.
+                match id.feature.line {
+                    Some(line) => write!(f, "{}: line {line}", self.source)?,
+                    None => write!(f, "{}: feature {}", self.source, id.feature.number)?,
+                }
+                if id.multipart() {
+                    write!(f, ", part {}", id.part)?;
+                }
+                if let Some(k) = self.piece {
+                    write!(f, " piece {k}")?;
+                }
+                Ok(())
+            }
+            (Some(i), None) if self.piece.is_some() => {
+                write!(f, "{}: polygon {i} piece {}", self.source, self.piece.unwrap_or(0))
+            }
             (Some(i), None) => write!(f, "{}: polygon {i}", self.source),
             (None, _) => write!(f, "{}", self.source),
         }
@@ -434,6 +455,7 @@ pub fn unreadable(source: &str, error: Error) -> Outcome {
         result: Err(error),
         warnings: Vec::new(),
         repaired: None,
+        feature: None,
     }
 }
 
@@ -465,6 +487,7 @@ pub fn process_raw(source: &str, index: usize, raw: RawPolygon, options: &Option
         result: Err(Error::Invalid(Vec::new())),
         warnings: Vec::new(),
         repaired: None,
+        feature: None,
     };
     if options.repair {
         let repaired = repair::repair_raw(&raw);

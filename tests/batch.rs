@@ -97,11 +97,14 @@ fn feature_collection(features: &[String]) -> String {
 
 /// The JSON document without the `source` fields (which name the input file).
 fn without_sources(mut doc: Value) -> Value {
+    // And the line of a feature read from GeoJSON Lines (a FeatureCollection has none).
     for p in doc["polygons"].as_array_mut().unwrap() {
         p.as_object_mut().unwrap().remove("source");
+        p.as_object_mut().unwrap().remove("line");
     }
     for e in doc["errors"].as_array_mut().unwrap() {
         e.as_object_mut().unwrap().remove("source");
+        e.as_object_mut().unwrap().remove("line");
     }
     doc
 }

@@ -148,6 +148,11 @@ fn read_with_geojson_crate(text: &str) -> Option<Vec<ReadFeature>> {
 
 /// Runs `minitri --to FORMAT path`, with exit status 0 unless `code` says otherwise.
 fn output(format: &str, path: &str, code: i32) -> String {
+    let format = if format == "geojson" {
+        "geojson-triangles"
+    } else {
+        format
+    };
     let (got, out, err) = run(&["--to", format, path], None);
     assert_eq!(got, code, "{format} {path}: {err}");
     out
@@ -330,7 +335,7 @@ fn decimal_coordinates_come_out_exactly_in_geojson_and_wkt() {
     for text in ["0.1 0.3", "0.2 0.6", "-0.5 1", "0 0"] {
         assert!(wkt_out.contains(text), "{text} in {wkt_out}");
     }
-    let (code, geo_out, err) = run(&["--to", "geojson"], Some(input));
+    let (code, geo_out, err) = run(&["--to", "geojson-triangles"], Some(input));
     assert_eq!(code, 0, "{err}");
     for text in ["[0.1, 0.3]", "[0.2, 0.6]", "[-0.5, 1]", "[0, 0]"] {
         assert!(geo_out.contains(text), "{text} in {geo_out}");
@@ -355,7 +360,7 @@ fn failed_polygons_get_no_feature_and_no_line_and_nothing_at_all_gives_empty_doc
     let (code, out, err) = run(&["--to", "wkt"], Some(bowtie));
     assert_eq!((code, out.as_str()), (1, ""), "{err}");
     assert!(err.contains("self-intersection"), "{err}");
-    let (code, out, err) = run(&["--to", "geojson"], Some(bowtie));
+    let (code, out, err) = run(&["--to", "geojson-triangles"], Some(bowtie));
     assert_eq!(code, 1, "{err}");
     assert!(err.contains("self-intersection"), "{err}");
     match geojson::GeoJson::from_str(&out) {

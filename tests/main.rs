@@ -8,6 +8,7 @@ mod formats;
 mod geo;
 mod holes_dp;
 mod hostile;
+mod pipelines;
 mod property;
 mod pseudo;
 mod svg;

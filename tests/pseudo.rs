@@ -336,7 +336,7 @@ fn pseudo_writes_geojson_wkt_and_svg() {
     let count = json(&out)["polygons"][0]["pseudotriangle_count"]
         .as_u64()
         .unwrap() as usize;
-    let (code, geo, err) = run(&["-a", "pseudo", "--to", "geojson"], Some(input));
+    let (code, geo, err) = run(&["-a", "pseudo", "--to", "geojson-triangles"], Some(input));
     assert_eq!(code, 0, "{err}");
     let doc = json(&geo);
     let features = doc["features"].as_array().unwrap();

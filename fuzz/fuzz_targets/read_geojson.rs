@@ -21,6 +21,7 @@ fuzz_target!(|data: &[u8]| {
     let mut failures = Vec::new();
     let stopped = stream(BufReader::with_capacity(7, data), &mut |event| {
         match event {
+            Event::Feature(_) => {}
             Event::Polygon(raw) => streamed.push(raw),
             Event::Failed(e) => failures.push(e),
         }

@@ -165,6 +165,8 @@ pub fn write_all(outcomes: Vec<Outcome>) {
     for format in [
         OutputFormat::Json,
         OutputFormat::GeoJson,
+        OutputFormat::GeoJsonTriangles,
+        OutputFormat::GeoJsonLines,
         OutputFormat::Wkt,
         OutputFormat::Svg(Style { labels: false }),
         OutputFormat::Svg(Style { labels: true }),
@@ -178,9 +180,19 @@ pub fn write_all(outcomes: Vec<Outcome>) {
             sink.finish().expect("writing to memory");
         }
         let text = std::str::from_utf8(&bytes).expect("writers write UTF-8");
-        if matches!(format, OutputFormat::Json | OutputFormat::GeoJson) {
+        if matches!(
+            format,
+            OutputFormat::Json | OutputFormat::GeoJson | OutputFormat::GeoJsonTriangles
+        ) {
             if let Err(e) = serde_json::from_str::<serde_json::Value>(text) {
                 panic!("{format:?} output is not JSON ({e}):\n{text}");
+            }
+        }
+        if format == OutputFormat::GeoJsonLines {
+            for line in text.lines() {
+                if let Err(e) = serde_json::from_str::<serde_json::Value>(line) {
+                    panic!("GeoJSON Lines output line is not JSON ({e}):\n{line}");
+                }
             }
         }
     }

@@ -15,6 +15,7 @@
 use super::atomic::AtomicFile;
 use super::discover::{Input, Unreadable};
 use super::tally::Tally;
+use crate::feature::{Feature, Geometry, Identity};
 use crate::io::read::geojson::JSON_WHITESPACE;
 use crate::io::read::geojson_stream::{self, Event, Stop};
 use crate::io::read::{self, detect_start, Format, ParseError, RawPolygon};
@@ -288,6 +289,7 @@ enum Item {
         source: Arc<str>,
         index: usize,
         raw: RawPolygon,
+        feature: Option<Identity>,
     },
     /// Something that failed already (an unreadable input or part of one).
     Failed(Box<Outcome>),
@@ -296,6 +298,7 @@ enum Item {
     Line {
         source: Arc<str>,
         number: usize,
+        feature: usize,
         text: String,
     },
 }
@@ -303,7 +306,7 @@ enum Item {
 /// An item after the parallel reading of lines, before its polygons are numbered.
 enum Parsed {
     Ready(Item),
-    Line(Arc<str>, Result<Vec<RawPolygon>, ParseError>),
+    Line(Arc<str>, Feature, Result<Vec<RawPolygon>, ParseError>),
 }
 
 /// Where a chunk's outcomes go, in order, each with what the sink's renderer made of it.
@@ -364,8 +367,20 @@ impl<'a> Chunker<'a> {
                 Item::Line {
                     source,
                     number,
+                    feature,
                     text,
-                } => Parsed::Line(source, geojson_stream::read_line(&text, number)),
+                } => {
+                    let (read, result) = geojson_stream::read_line_feature(&text, number, feature);
+                    // Not JSON: a feature of which nothing is known but its place.
+                    let read = read.unwrap_or(Feature {
+                        number: feature,
+                        line: Some(number),
+                        id: None,
+                        properties: None,
+                        geometry: Geometry::Failed,
+                    });
+                    Parsed::Line(source, read, result)
+                }
                 other => Parsed::Ready(other),
             })
             .collect();
@@ -373,19 +388,34 @@ impl<'a> Chunker<'a> {
         for parsed in parsed {
             match parsed {
                 Parsed::Ready(item) => items.push(item),
-                Parsed::Line(source, Err(e)) => {
-                    items.push(Item::Failed(Box::new(unreadable(&source, Error::Parse(e)))));
+                Parsed::Line(source, feature, Err(e)) => {
+                    let outcome = unreadable(&source, Error::Parse(e));
+                    items.push(failed_feature(outcome, &Arc::new(feature)));
                 }
-                Parsed::Line(source, Ok(raws)) => {
+                Parsed::Line(source, feature, Ok(raws)) => {
+                    let feature = Arc::new(feature);
+                    if let Some(item) = no_parts(&source, &feature) {
+                        items.push(item);
+                        continue;
+                    }
                     let next = match &mut self.lines {
                         Some((last, next)) if Arc::ptr_eq(last, &source) => next,
                         lines => &mut lines.insert((Arc::clone(&source), 0)).1,
                     };
-                    for raw in raws {
+                    for (part, raw) in raws.into_iter().enumerate() {
                         let index = *next;
                         *next += 1;
                         let source = Arc::clone(&source);
-                        items.push(Item::Polygon { source, index, raw });
+                        let feature = Some(Identity {
+                            feature: Arc::clone(&feature),
+                            part,
+                        });
+                        items.push(Item::Polygon {
+                            source,
+                            index,
+                            raw,
+                            feature,
+                        });
                     }
                 }
             }
@@ -404,8 +434,17 @@ impl<'a> Chunker<'a> {
             .into_par_iter()
             .flat_map_iter(|item| {
                 let outcomes = match item {
-                    Item::Polygon { source, index, raw } => {
-                        process_raw(&source, index, raw, options)
+                    Item::Polygon {
+                        source,
+                        index,
+                        raw,
+                        feature,
+                    } => {
+                        let mut outcomes = process_raw(&source, index, raw, options);
+                        for outcome in &mut outcomes {
+                            outcome.feature = feature.clone();
+                        }
+                        outcomes
                     }
                     Item::Failed(outcome) => vec![*outcome],
                     Item::Line { source, .. } => {
@@ -489,7 +528,12 @@ fn read_input(input: &Input, from: Option<Format>, chunker: &mut Chunker) -> io:
             drop(text);
             for (index, raw) in raws.into_iter().enumerate() {
                 let source = Arc::clone(&source);
-                chunker.push(Item::Polygon { source, index, raw })?;
+                chunker.push(Item::Polygon {
+                    source,
+                    index,
+                    raw,
+                    feature: None,
+                })?;
             }
             Ok(true)
         }
@@ -506,6 +550,7 @@ fn read_lines(
     chunker: &mut Chunker,
 ) -> io::Result<bool> {
     let mut number = 0;
+    let mut features = 0;
     let mut any = false;
     loop {
         let mut bytes = Vec::new();
@@ -525,10 +570,16 @@ fn read_lines(
                 if let Some(location) = &mut error.location {
                     location.line = number;
                 }
-                chunker.push(Item::Failed(Box::new(unreadable(
-                    source,
-                    Error::Parse(error),
-                ))))?;
+                let feature = Arc::new(Feature {
+                    number: features,
+                    line: Some(number),
+                    id: None,
+                    properties: None,
+                    geometry: Geometry::Failed,
+                });
+                features += 1;
+                let outcome = unreadable(source, Error::Parse(error));
+                chunker.push(failed_feature(outcome, &feature))?;
                 continue;
             }
             None => String::from_utf8_lossy(&bytes).into_owned(),
@@ -541,8 +592,10 @@ fn read_lines(
         chunker.push(Item::Line {
             source,
             number,
+            feature: features,
             text,
         })?;
+        features += 1;
     }
     if !any {
         let error = ParseError::new("empty input: no polygon found");
@@ -562,17 +615,43 @@ fn stream_geojson(
     chunker: &mut Chunker,
 ) -> io::Result<bool> {
     let mut index = 0;
+    // The feature being read, and the number of its next part.
+    let mut current: Option<(Arc<Feature>, usize)> = None;
     let mut emit = |event: Event| match event {
+        Event::Feature(feature) => {
+            current = None;
+            match no_parts(source, &feature) {
+                Some(item) => chunker.push(item),
+                None => {
+                    current = Some((feature, 0));
+                    Ok(())
+                }
+            }
+        }
         Event::Polygon(raw) => {
             index += 1;
+            let feature = current.as_mut().map(|(feature, part)| {
+                *part += 1;
+                Identity {
+                    feature: Arc::clone(feature),
+                    part: *part - 1,
+                }
+            });
             chunker.push(Item::Polygon {
                 source: Arc::clone(source),
                 index: index - 1,
                 raw,
+                feature,
             })
         }
         Event::Failed(e) => {
-            chunker.push(Item::Failed(Box::new(unreadable(source, Error::Parse(e)))))
+            let outcome = unreadable(source, Error::Parse(e));
+            match current.take() {
+                Some((feature, _)) if feature.geometry == Geometry::Failed => {
+                    chunker.push(failed_feature(outcome, &feature))
+                }
+                _ => chunker.push(Item::Failed(Box::new(outcome))),
+            }
         }
     };
     let stop = match geojson_stream::stream(reader, &mut emit) {
@@ -584,4 +663,29 @@ fn stream_geojson(
     chunker
         .push(Item::Failed(Box::new(unreadable(source, stop))))
         .map(|()| false)
+}
+
+/// A failed outcome of `feature` (its only one).
+fn failed_feature(mut outcome: Outcome, feature: &Arc<Feature>) -> Item {
+    outcome.feature = Some(Identity {
+        feature: Arc::clone(feature),
+        part: 0,
+    });
+    Item::Failed(Box::new(outcome))
+}
+
+/// The error of a feature with nothing to triangulate (a `null` or empty geometry), if it is
+/// one: reported, never skipped silently, so that every input feature has an outcome.
+fn no_parts(source: &str, feature: &Arc<Feature>) -> Option<Item> {
+    let why = match feature.geometry {
+        Geometry::Null => Feature::null_message(),
+        Geometry::Parts(0) => "the geometry is empty: nothing to triangulate",
+        Geometry::Parts(_) | Geometry::Failed => return None,
+    };
+    let message = match feature.line {
+        Some(line) => format!("line {line}: {why}"),
+        None => format!("feature {}: {why}", feature.number),
+    };
+    let outcome = unreadable(source, Error::Parse(ParseError::new(message)));
+    Some(failed_feature(outcome, feature))
 }

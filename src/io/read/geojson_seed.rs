@@ -99,6 +99,10 @@ pub(super) struct Object {
     pub(super) features: Option<Node>,
     /// The first GeoJSON member named twice, if any.
     pub(super) duplicate: Option<&'static str>,
+    /// `id` as written (kept for the output: [`crate::feature`]); the last one if named twice.
+    pub(super) id: Option<Box<RawValue>>,
+    /// `properties` as written (kept for the output); the last one if named twice.
+    pub(super) properties: Option<Box<RawValue>>,
 }
 
 impl Object {
@@ -298,7 +302,15 @@ fn read_object<'de, A: MapAccess<'de>>(
     let mut key = Some(first);
     while let Some(current) = key {
         let Key::Member(member) = current else {
-            map.next_value::<Skip>()?;
+            match &current {
+                Key::Other(name) if name == "id" => object.id = Some(map.next_value()?),
+                Key::Other(name) if name == "properties" => {
+                    object.properties = Some(map.next_value()?);
+                }
+                _ => {
+                    map.next_value::<Skip>()?;
+                }
+            }
             key = map.next_key_seed(KeySeed)?;
             continue;
         };

@@ -29,15 +29,22 @@
 use super::geojson::{collection_feature, json_message, top_level, type_of, JSON_WHITESPACE};
 use super::geojson_seed::{FeatureSink, Node, NodeSeed, Object};
 use super::{locate, Location, ParseError, RawPolygon};
+use crate::feature::{Feature, Geometry};
 use serde::de::{self, DeserializeSeed};
+use serde_json::value::RawValue;
 use std::cell::RefCell;
 use std::collections::VecDeque;
 use std::io::{self, BufRead, Read};
 use std::rc::Rc;
+use std::sync::Arc;
 
 /// One thing read from the stream.
 #[derive(Debug)]
 pub enum Event {
+    /// A feature starts (a Feature of a collection, or a top-level value): its identity and
+    /// what its geometry is. Its events follow: [`Geometry::Parts`]`(k)` polygons, or one
+    /// failure ([`Geometry::Failed`]), or none ([`Geometry::Null`]).
+    Feature(Arc<Feature>),
     /// The next polygon.
     Polygon(RawPolygon),
     /// A feature or top-level value that is not a polygon (its polygons, if any, are skipped).
@@ -70,8 +77,11 @@ pub enum Stop {
 ///   {"type": "Feature", "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 1]]]}}]}"#;
 /// let mut events = Vec::new();
 /// stream(text.as_bytes(), &mut |e| Ok(events.push(e))).map_err(|e| format!("{e:?}"))?;
-/// assert!(matches!(&events[0], Event::Failed(e) if e.to_string().starts_with("feature 0: ")));
-/// assert!(matches!(&events[1], Event::Polygon(p) if p.rings[0].len() == 3));
+/// // Each feature is announced (its id, properties, geometry kind), then its polygons or failure.
+/// assert!(matches!(&events[0], Event::Feature(f) if f.number == 0));
+/// assert!(matches!(&events[1], Event::Failed(e) if e.to_string().starts_with("feature 0: ")));
+/// assert!(matches!(&events[2], Event::Feature(f) if f.number == 1));
+/// assert!(matches!(&events[3], Event::Polygon(p) if p.rings[0].len() == 3));
 /// # Ok::<(), String>(())
 /// ```
 pub fn stream<R: BufRead>(
@@ -96,6 +106,7 @@ pub fn stream<R: BufRead>(
         output_error: None,
         polygons: 0,
         failures: 0,
+        features: 0,
     };
     // The first value's failure waits until we know whether the input holds several values,
     // which decides whether its message carries a location (as in `geojson::read`).
@@ -169,10 +180,20 @@ pub fn stream<R: BufRead>(
 /// # Ok::<(), minitri::io::read::ParseError>(())
 /// ```
 pub fn read_line(line: &str, number: usize) -> Result<Vec<RawPolygon>, ParseError> {
+    read_line_feature(line, number, 0).1
+}
+
+/// [`read_line`] with the line's feature (numbered `feature`): its `id`, `properties` and
+/// geometry, `None` for a blank line or a line that is not JSON.
+pub fn read_line_feature(
+    line: &str,
+    number: usize,
+    feature: usize,
+) -> (Option<Feature>, Result<Vec<RawPolygon>, ParseError>) {
     let line = line.strip_prefix('\u{feff}').unwrap_or(line);
     let body = line.trim_start_matches(JSON_WHITESPACE);
     if body.trim_end_matches(JSON_WHITESPACE).is_empty() {
-        return Ok(Vec::new());
+        return (None, Ok(Vec::new()));
     }
     let at = |column: usize| Location {
         line: number,
@@ -194,13 +215,48 @@ pub fn read_line(line: &str, number: usize) -> Result<Vec<RawPolygon>, ParseErro
             .then(|| body.as_bytes().get(e.column() - 1).copied())
             .flatten();
         ParseError::at(at(column), json_message(&e, found))
-    })?;
+    });
+    let mut node = match node {
+        Ok(node) => node,
+        Err(e) => return (None, Err(e)),
+    };
+    let (id, properties, null) = identity(&mut node);
     let mut polygons = Vec::new();
-    top_level(node, &mut polygons).map_err(|failure| {
+    let result = top_level(node, &mut polygons).map_err(|failure| {
         let column = line.chars().count() - body.chars().count() + 1;
         ParseError::at(at(column), failure.to_string())
-    })?;
-    Ok(polygons)
+    });
+    let geometry = geometry_of(result.is_ok(), null, polygons.len());
+    let feature = Feature {
+        number: feature,
+        line: Some(number),
+        id,
+        properties,
+        geometry,
+    };
+    (Some(feature), result.map(|()| polygons))
+}
+
+/// A Feature object's `id` and `properties` (taken out of it), and whether its geometry is
+/// `null`; nothing for any other value.
+fn identity(node: &mut Node) -> (Option<Box<RawValue>>, Option<Box<RawValue>>, bool) {
+    match node {
+        Node::Object(object) if object.kind() == Some("Feature") => (
+            object.id.take(),
+            object.properties.take(),
+            matches!(object.geometry, Some(Node::Null)),
+        ),
+        _ => (None, None, false),
+    }
+}
+
+/// What a feature's geometry is, from how it was read.
+fn geometry_of(read: bool, null: bool, polygons: usize) -> Geometry {
+    match (read, null) {
+        (false, _) => Geometry::Failed,
+        (true, true) => Geometry::Null,
+        (true, false) => Geometry::Parts(polygons),
+    }
 }
 
 /// Does `start` (the first bytes of an input) look like GeoJSON Lines: a first line that is a
@@ -349,9 +405,28 @@ struct Sink<'e> {
     output_error: Option<io::Error>,
     polygons: usize,
     failures: usize,
+    features: usize,
 }
 
 impl Sink<'_> {
+    /// Announces the next feature ([`Event::Feature`]).
+    fn announce(
+        &mut self,
+        (id, properties, null): (Option<Box<RawValue>>, Option<Box<RawValue>>, bool),
+        read: bool,
+        polygons: usize,
+    ) -> io::Result<()> {
+        let feature = Feature {
+            number: self.features,
+            line: None,
+            id,
+            properties,
+            geometry: geometry_of(read, null, polygons),
+        };
+        self.features += 1;
+        (self.emit)(Event::Feature(Arc::new(feature)))
+    }
+
     fn polygon(&mut self, polygon: RawPolygon) -> io::Result<()> {
         self.polygons += 1;
         (self.emit)(Event::Polygon(polygon))
@@ -363,9 +438,12 @@ impl Sink<'_> {
     }
 
     /// Element `index` of a FeatureCollection's `features`: its polygons, or why not.
-    fn feature(&mut self, index: usize, node: Node) -> io::Result<()> {
+    fn feature(&mut self, index: usize, mut node: Node) -> io::Result<()> {
+        let identity = identity(&mut node);
         let mut polygons = Vec::new();
-        match collection_feature(node, &mut polygons) {
+        let read = collection_feature(node, &mut polygons);
+        self.announce(identity, read.is_ok(), polygons.len())?;
+        match read {
             Ok(()) => polygons
                 .into_iter()
                 .try_for_each(|polygon| self.polygon(polygon)),
@@ -396,9 +474,12 @@ impl Sink<'_> {
                 }
                 Ok(None)
             }
-            node => {
+            mut node => {
+                let identity = identity(&mut node);
                 let mut polygons = Vec::new();
-                match top_level(node, &mut polygons) {
+                let read = top_level(node, &mut polygons);
+                self.announce(identity, read.is_ok(), polygons.len())?;
+                match read {
                     Ok(()) => {
                         for polygon in polygons {
                             self.polygon(polygon)?;
@@ -431,10 +512,11 @@ mod tests {
     fn events(text: &str) -> (Vec<Result<RawPolygon, String>>, Option<String>) {
         let mut out = Vec::new();
         let stop = stream(text.as_bytes(), &mut |e| {
-            out.push(match e {
-                Event::Polygon(p) => Ok(p),
-                Event::Failed(e) => Err(e.to_string()),
-            });
+            match e {
+                Event::Feature(_) => {}
+                Event::Polygon(p) => out.push(Ok(p)),
+                Event::Failed(e) => out.push(Err(e.to_string())),
+            }
             Ok(())
         })
         .err()
@@ -631,6 +713,40 @@ mod tests {
         );
         assert!(read_line(" \t\r", 3).unwrap().is_empty());
         assert!(!looks_line_delimited(format!("\u{c}{A}\n{A}\n").as_bytes()));
+    }
+
+    #[test]
+    fn each_feature_is_announced_with_its_id_and_properties_as_written() {
+        let text = format!(
+            r#"{{"type": "FeatureCollection", "features": [{{"type": "Feature", "id": "a", "properties": {{"h": 12.50}}, "geometry": {B}}}, {{"type": "Feature", "id": 1e400, "geometry": null}}, {{"type": "Feature", "geometry": {{"type": "Point", "coordinates": [0, 0]}}}}]}}"#
+        );
+        let mut announced = Vec::new();
+        stream(text.as_bytes(), &mut |e| {
+            if let Event::Feature(f) = e {
+                let raw = |v: &Option<Box<RawValue>>| v.as_ref().map(|v| v.get().to_string());
+                announced.push((f.number, raw(&f.id), raw(&f.properties), f.geometry));
+            }
+            Ok(())
+        })
+        .unwrap();
+        let some = |s: &str| Some(s.to_string());
+        assert_eq!(
+            announced,
+            [
+                (0, some("\"a\""), some("{\"h\": 12.50}"), Geometry::Parts(2)),
+                (1, some("1e400"), None, Geometry::Null),
+                (2, None, None, Geometry::Failed),
+            ]
+        );
+        let (feature, read) = read_line_feature(A, 4, 9);
+        let feature = feature.unwrap();
+        assert_eq!((feature.number, feature.line), (9, Some(4)));
+        assert_eq!(feature.geometry, Geometry::Parts(1));
+        assert_eq!(read.unwrap().len(), 1);
+        assert!(
+            read_line_feature("{", 4, 9).0.is_none(),
+            "not JSON: no feature"
+        );
     }
 
     #[test]

@@ -1,4 +1,5 @@
-//! The GeoJSON writer: one RFC 7946 `FeatureCollection` of triangles for the whole document.
+//! The per-triangle GeoJSON writer (`--to geojson-triangles`): one RFC 7946 `FeatureCollection` of
+//! triangles for the whole document (the per-feature one is [`super::features`]).
 //!
 //! Input contract: outcomes in order; a solved outcome carries its [`Polygon`] and a valid
 //! triangulation (triangles counter-clockwise, degenerate triangles `[a, b, c]` with `b`

@@ -43,6 +43,15 @@ struct ErrorEntry {
     index: Option<usize>,
     #[serde(skip_serializing_if = "Option::is_none")]
     piece: Option<usize>,
+    /// The input feature's number, part, line (GeoJSON Lines) and `id` as written.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    feature: Option<usize>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    part: Option<usize>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    line: Option<usize>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    id: Option<Box<serde_json::value::RawValue>>,
     message: String,
 }
 
@@ -77,10 +86,15 @@ impl<W: Write> JsonWriter<W> {
     pub fn push_rendered(&mut self, outcome: &Outcome, text: Option<String>) -> io::Result<()> {
         let Some(text) = text else {
             if let Err(e) = &outcome.result {
+                let feature = outcome.feature.as_ref();
                 self.errors.push(ErrorEntry {
                     source: outcome.source.clone(),
                     index: outcome.index,
                     piece: outcome.piece,
+                    feature: feature.map(|f| f.feature.number),
+                    part: feature.filter(|f| f.multipart()).map(|f| f.part),
+                    line: feature.and_then(|f| f.feature.line),
+                    id: feature.and_then(|f| f.feature.id.clone()),
                     message: e.to_string(),
                 });
             }
@@ -122,6 +136,24 @@ pub fn render(outcome: &Outcome) -> Option<String> {
         Some(p) => pseudo_fields(outcome, index, polygon, t.algorithm, p),
         None => triangle_fields(outcome, index, polygon, t),
     };
+    let mut fields = fields;
+    if let Some(feature) = &outcome.feature {
+        // Which input feature this is, right after `index`.
+        let mut identity = vec![("feature", json(&feature.feature.number))];
+        if feature.multipart() {
+            identity.push(("part", json(&feature.part)));
+        }
+        if let Some(line) = feature.feature.line {
+            identity.push(("line", json(&line)));
+        }
+        if let Some(id) = &feature.feature.id {
+            identity.push(("id", id.get().to_string()));
+        }
+        if let Some(properties) = &feature.feature.properties {
+            identity.push(("properties", properties.get().to_string()));
+        }
+        fields.splice(2..2, identity);
+    }
     let mut out = String::from("    {\n");
     // `piece` only for a repaired polygon split into several.
     for (name, value) in fields.iter().filter(|(_, value)| !value.is_empty()) {

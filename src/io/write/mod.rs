@@ -3,6 +3,7 @@
 //! [`OutputFormat::sink`] gives a [`Sink`] that takes outcomes one at a time, in order: the JSON,
 //! GeoJSON and WKT sinks write each polygon at once (streamed); the SVG sink keeps them and draws the picture at
 //! the end (a layout needs every panel, and a picture of a huge batch is not useful anyway).
+pub mod features;
 pub mod geojson;
 pub mod json;
 pub mod svg;
@@ -16,8 +17,13 @@ use std::io::{self, Write};
 pub enum OutputFormat {
     /// The JSON document of `spec/CLI.md`.
     Json,
-    /// A GeoJSON FeatureCollection, one Feature per triangle.
+    /// A GeoJSON FeatureCollection, one Feature per input feature (a MultiPolygon of its
+    /// triangles; [`features`]).
     GeoJson,
+    /// GeoJSON Lines: the same Features, one per line ([`features`]).
+    GeoJsonLines,
+    /// A GeoJSON FeatureCollection, one Feature per triangle ([`geojson`]).
+    GeoJsonTriangles,
     /// WKT, one MULTIPOLYGON of triangles per line and polygon.
     Wkt,
     /// An SVG picture, drawn in this style.
@@ -25,11 +31,25 @@ pub enum OutputFormat {
 }
 
 impl OutputFormat {
+    /// The format a file name's extension stands for (`None` for an unknown one): `json`,
+    /// `geojson`, `geojsonl` (or `geojsons`, `ndjson`, `jsonl`), `wkt`, `svg`.
+    pub fn from_extension(extension: &str) -> Option<OutputFormat> {
+        Some(match extension.to_ascii_lowercase().as_str() {
+            "json" => OutputFormat::Json,
+            "geojson" => OutputFormat::GeoJson,
+            "geojsonl" | "geojsons" | "ndjson" | "jsonl" => OutputFormat::GeoJsonLines,
+            "wkt" => OutputFormat::Wkt,
+            "svg" => OutputFormat::Svg(svg::Style::default()),
+            _ => return None,
+        })
+    }
+
     /// The file extension of this format, without the dot.
     pub fn extension(self) -> &'static str {
         match self {
             OutputFormat::Json => "json",
-            OutputFormat::GeoJson => "geojson",
+            OutputFormat::GeoJson | OutputFormat::GeoJsonTriangles => "geojson",
+            OutputFormat::GeoJsonLines => "geojsonl",
             OutputFormat::Wkt => "wkt",
             OutputFormat::Svg(_) => "svg",
         }
@@ -42,7 +62,9 @@ impl OutputFormat {
     pub fn sink<'w, W: Write + 'w>(self, out: W) -> io::Result<Box<dyn Sink + 'w>> {
         Ok(match self {
             OutputFormat::Json => Box::new(json::JsonWriter::new(out)?),
-            OutputFormat::GeoJson => Box::new(geojson::GeoJsonWriter::new(out)?),
+            OutputFormat::GeoJson => Box::new(features::FeatureWriter::new(out, false)?),
+            OutputFormat::GeoJsonLines => Box::new(features::FeatureWriter::new(out, true)?),
+            OutputFormat::GeoJsonTriangles => Box::new(geojson::GeoJsonWriter::new(out)?),
             OutputFormat::Wkt => Box::new(wkt::WktWriter::new(out)),
             OutputFormat::Svg(style) => Box::new(SvgSink {
                 out,

@@ -128,6 +128,19 @@ pub struct Figure<'a> {
     pub pseudo: Option<&'a Pseudotriangulation>,
 }
 
+/// A figure's title: the outcome (`source: feature 3`), and the input feature's `id` as
+/// written when it has one (`source: feature 3, id "b-1"`).
+fn title(outcome: &Outcome) -> String {
+    let id = outcome
+        .feature
+        .as_ref()
+        .and_then(|f| f.feature.id.as_deref());
+    match id {
+        Some(id) => format!("{outcome}, id {}", id.get()),
+        None => outcome.to_string(),
+    }
+}
+
 /// Writes one SVG document of every outcome that has a valid polygon (solved or not; inputs that
 /// could not be read and invalid polygons have nothing to draw). A verification that failed
 /// adds its faults and alerts, and a panel for each other algorithm's output.
@@ -148,7 +161,7 @@ pub fn write_outcomes(outcomes: &[Outcome], style: Style, out: &mut impl Write) 
             Err(e) => {
                 figures.push(Figure {
                     error: Some(e.to_string()),
-                    ..base(o.to_string())
+                    ..base(title(o))
                 });
                 continue;
             }
@@ -172,14 +185,14 @@ pub fn write_outcomes(outcomes: &[Outcome], style: Style, out: &mut impl Write) 
                 triangulation: Some(&solved.triangulation),
                 pseudo: Some(p),
                 alerts,
-                ..base(o.to_string())
+                ..base(title(o))
             });
             continue;
         }
         let Some(v) = solved.verification.as_ref().filter(|v| !v.ok) else {
             figures.push(Figure {
                 triangulation: Some(&solved.triangulation),
-                ..base(o.to_string())
+                ..base(title(o))
             });
             continue;
         };
