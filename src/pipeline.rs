@@ -196,7 +196,12 @@ impl fmt::Display for Outcome {
                 Ok(())
             }
             (Some(i), None) if self.piece.is_some() => {
-                write!(f, "{}: polygon {i} piece {}", self.source, self.piece.unwrap_or(0))
+                write!(
+                    f,
+                    "{}: polygon {i} piece {}",
+                    self.source,
+                    self.piece.unwrap_or(0)
+                )
             }
             (Some(i), None) => write!(f, "{}: polygon {i}", self.source),
             (None, _) => write!(f, "{}", self.source),

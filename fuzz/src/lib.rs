@@ -139,7 +139,10 @@ pub fn check_polygons(raws: &[RawPolygon]) {
                     for outcome in pipeline::process_raw("fuzz", index, raw.clone(), &repair) {
                         if let Ok(solved) = &outcome.result {
                             let verification = solved.verification.as_ref().expect("verified");
-                            assert!(verification.ok, "--repair, --verify fails: {verification:?}");
+                            assert!(
+                                verification.ok,
+                                "--repair, --verify fails: {verification:?}"
+                            );
                         }
                         outcomes.push(outcome);
                     }
@@ -147,8 +150,8 @@ pub fn check_polygons(raws: &[RawPolygon]) {
             }
             Ok((polygon, _warnings)) if is_small(raw) => {
                 check_ear(&polygon);
-                let outcome = pipeline::process_raw("fuzz", index, raw.clone(), &options)
-                    .swap_remove(0);
+                let outcome =
+                    pipeline::process_raw("fuzz", index, raw.clone(), &options).swap_remove(0);
                 let solved = outcome.result.as_ref().expect("a valid polygon is solved");
                 let verification = solved.verification.as_ref().expect("verified");
                 assert!(verification.ok, "--verify fails: {verification:?}");

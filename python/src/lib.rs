@@ -66,11 +66,12 @@ fn outcomes(input: &Input<'_>, options: &Options) -> Vec<(Outcome, Option<Vec<[f
             Ok(polygons) => polygons
                 .into_iter()
                 .enumerate()
-                .map(|(i, p)| {
-                    (
-                        pipeline::process_raw("-", i, p.raw, options),
-                        Some(p.floats),
-                    )
+                .flat_map(|(i, p)| {
+                    // Several outcomes only when `--repair` splits a polygon (not offered here).
+                    let floats = p.floats;
+                    pipeline::process_raw("-", i, p.raw, options)
+                        .into_iter()
+                        .map(move |outcome| (outcome, Some(floats.clone())))
                 })
                 .collect(),
             Err(e) => vec![(pipeline::unreadable("-", e), None)],
@@ -99,7 +100,7 @@ fn text_outcomes(text: &str, format: Format, options: &Options) -> Vec<Outcome> 
             Err(e) => outcomes.push(pipeline::unreadable("-", Error::Parse(e))),
             Ok(raws) => {
                 for raw in raws {
-                    outcomes.push(pipeline::process_raw("-", index, raw, options));
+                    outcomes.extend(pipeline::process_raw("-", index, raw, options));
                     index += 1;
                 }
             }
