@@ -11,3 +11,4 @@ mod property;
 mod pseudo;
 mod svg;
 mod util;
+mod wide;

@@ -32,6 +32,7 @@
 //! Complexity: O(n^3) time, O(n^2) memory (four `n x n` tables of `u16`, 8 n^2 bytes, plus the
 //! chord bits). Above [`DEFAULT_LIMIT`] vertices (configurable) it refuses, with an estimate.
 
+use crate::geom::kernel::Coord;
 use super::chords::ChordTable;
 use super::{Algorithm, TriangulateError, Triangulation};
 use crate::geom::kernel::{cross, Point};
@@ -69,7 +70,7 @@ pub fn estimate(n: usize) -> (String, String) {
 /// table's range); for polygons with holes, those of [`super::asano_holes::triangulate`]
 /// ([`TriangulateError::TooManyHoles`] above 2 holes, [`TriangulateError::TooLargeWithHoles`]
 /// above its size limits).
-pub fn triangulate(polygon: &Polygon, limit: usize) -> Result<Triangulation, TriangulateError> {
+pub fn triangulate<P: Coord>(polygon: &Polygon<P>, limit: usize) -> Result<Triangulation, TriangulateError> {
     let n = polygon.len();
     if polygon.holes() > 0 {
         return super::asano_holes::triangulate(polygon, limit);
@@ -125,9 +126,9 @@ pub(crate) struct WalkTriangulation {
 /// own point must get a number no other position on a line through `p` gets).
 ///
 /// Returns `None` when the walk has no triangulation (cannot happen for a valid walk).
-pub(crate) fn solve_walk<'a>(
+pub(crate) fn solve_walk<'a, P: Coord>(
     m: usize,
-    point: impl Fn(usize) -> Point,
+    point: impl Fn(usize) -> P,
     is_chord: impl Fn(usize, usize) -> bool,
     lines_through: impl Fn(usize) -> &'a [u16],
 ) -> Option<WalkTriangulation> {

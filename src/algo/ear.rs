@@ -24,6 +24,7 @@
 //! to O(n^3) (each ear test looks at every remaining vertex, a bit set), with no allocation but
 //! its result; it handles no holes, so holes never reach it.
 
+use crate::geom::kernel::Coord;
 use super::{Algorithm, TriangulateError, Triangulation};
 use crate::geom::kernel::{cross, Point};
 use crate::geom::polygon::Polygon;
@@ -53,7 +54,7 @@ use crate::geom::polygon::Polygon;
 /// assert_eq!(t.triangles.len(), 8); // n + 2w - 2 = 8 + 2 - 2
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-pub fn triangulate(polygon: &Polygon) -> Result<Triangulation, TriangulateError> {
+pub fn triangulate<P: Coord>(polygon: &Polygon<P>) -> Result<Triangulation, TriangulateError> {
     Ok(Triangulation {
         algorithm: Algorithm::Ear,
         triangles: super::plain_polygon(polygon),
@@ -80,7 +81,7 @@ pub(crate) const CLIP_UP_TO: usize = 32;
 /// # Panics
 /// With more than [`MAX_CLIP`] points, or if no ear is left (not a simple counter-clockwise
 /// polygon).
-pub(crate) fn clip(pts: &[Point]) -> Vec<[usize; 3]> {
+pub(crate) fn clip<P: Coord>(pts: &[P]) -> Vec<[usize; 3]> {
     let n = pts.len();
     assert!(
         n <= MAX_CLIP,
@@ -126,7 +127,7 @@ pub(crate) fn clip(pts: &[Point]) -> Vec<[usize; 3]> {
 
 /// Whether `v` (between `p` and `q`) is an ear: a strict left turn whose closed triangle holds
 /// no other vertex of `remaining` (a bit set).
-fn is_ear(pts: &[Point], remaining: u64, p: usize, v: usize, q: usize) -> bool {
+fn is_ear<P: Coord>(pts: &[P], remaining: u64, p: usize, v: usize, q: usize) -> bool {
     let (a, b, c) = (pts[p], pts[v], pts[q]);
     if cross(a, b, c) <= 0 {
         return false;

@@ -4,3 +4,4 @@ pub mod kernel;
 pub mod polygon;
 pub mod status;
 pub mod validate;
+pub mod wide;

@@ -21,7 +21,7 @@
 //! footprints) are first checked pair by pair, which costs less than the sweep's set there; the
 //! sweep runs only if some pair meets, so the reported contact is the same either way.
 
-use super::kernel::{segment_contact, Point, SegmentContact};
+use super::kernel::{segment_contact, Coord, SegmentContact};
 use super::polygon::{Polygon, Ring};
 use super::status::{Handle, Status};
 use std::cmp::Ordering;
@@ -155,14 +155,14 @@ fn contact_verb(contact: SegmentContact) -> &'static str {
 }
 
 /// The first problem of `polygon`, if any.
-pub fn check(polygon: &Polygon) -> Result<(), InvalidPolygon> {
+pub fn check<P: Coord>(polygon: &Polygon<P>) -> Result<(), InvalidPolygon> {
     errors(polygon).into_iter().next().map_or(Ok(()), Err)
 }
 
 /// Every problem of `polygon` that can be reported reliably: all spikes and repeated vertices;
 /// then, only if there are none, the leftmost contact between edges; then, only if there is none,
 /// every misplaced hole.
-pub fn errors(polygon: &Polygon) -> Vec<InvalidPolygon> {
+pub fn errors<P: Coord>(polygon: &Polygon<P>) -> Vec<InvalidPolygon> {
     errors_with(polygon, true)
 }
 
@@ -171,7 +171,7 @@ pub fn errors(polygon: &Polygon) -> Vec<InvalidPolygon> {
 const SMALL_RING: usize = 32;
 
 /// [`errors`], with the pair-by-pair check of small rings on or off (the tests compare both).
-pub(crate) fn errors_with(polygon: &Polygon, small_rings_by_pairs: bool) -> Vec<InvalidPolygon> {
+pub(crate) fn errors_with<P: Coord>(polygon: &Polygon<P>, small_rings_by_pairs: bool) -> Vec<InvalidPolygon> {
     let mut errors = spikes(polygon);
     let mut order: Vec<usize> = (0..polygon.len()).collect();
     order.sort_unstable_by_key(|&i| (polygon.point(i), i));
@@ -206,35 +206,42 @@ pub(crate) fn errors_with(polygon: &Polygon, small_rings_by_pairs: bool) -> Vec<
 }
 
 /// Whether no two non-adjacent edges of `polygon` share a point, testing every pair: O(n^2).
-fn no_two_edges_meet(polygon: &Polygon) -> bool {
+fn no_two_edges_meet<P: Coord>(polygon: &Polygon<P>) -> bool {
     let n = polygon.len();
-    // Each edge with its bounding box, so that most pairs are told apart by comparisons alone.
-    let edges: Vec<(Point, Point, [i64; 4])> = (0..n)
+    // Each edge with its bounding box (the ends of least and greatest x, then y), so that most
+    // pairs are told apart by comparisons alone.
+    let edges: Vec<(P, P, [P; 4])> = (0..n)
         .map(|e| {
             let (a, b) = (polygon.point(e), polygon.point(polygon.next(e)));
-            (
-                a,
-                b,
-                [a.x.min(b.x), a.x.max(b.x), a.y.min(b.y), a.y.max(b.y)],
-            )
+            let (x, y) = (P::cmp_x(a, b).is_le(), P::cmp_y(a, b).is_le());
+            let pick = |first: bool| if first { a } else { b };
+            (a, b, [pick(x), pick(!x), pick(y), pick(!y)])
         })
         .collect();
+    let lt = |axis: usize, u: P, v: P| {
+        let order = if axis == 0 {
+            P::cmp_x(u, v)
+        } else {
+            P::cmp_y(u, v)
+        };
+        order == Ordering::Less
+    };
     (0..n).all(|e| {
         let (a, b, r) = edges[e];
         (e + 1..n)
             .filter(|&f| polygon.next(e) != f && polygon.next(f) != e)
             .all(|f| {
                 let (c, d, s) = edges[f];
-                r[1] < s[0]
-                    || s[1] < r[0]
-                    || r[3] < s[2]
-                    || s[3] < r[2]
+                lt(0, r[1], s[0])
+                    || lt(0, s[1], r[0])
+                    || lt(1, r[3], s[2])
+                    || lt(1, s[3], r[2])
                     || segment_contact(a, b, c, d) == SegmentContact::Disjoint
             })
     })
 }
 
-fn spikes(polygon: &Polygon) -> Vec<InvalidPolygon> {
+fn spikes<P: Coord>(polygon: &Polygon<P>) -> Vec<InvalidPolygon> {
     use super::kernel::{cross, dot};
     (0..polygon.len())
         .filter_map(|i| {
@@ -254,16 +261,16 @@ fn spikes(polygon: &Polygon) -> Vec<InvalidPolygon> {
 /// An edge in the sweep status: `a < b` lexicographically; `edge` is the index of its first
 /// vertex along the ring (the edge runs `edge -> next(edge)`). A probe for a point has `a == b`.
 #[derive(Clone, Copy, Debug)]
-struct Cut {
-    a: Point,
-    b: Point,
+struct Cut<P> {
+    a: P,
+    b: P,
     edge: usize,
 }
 
 const PROBE: usize = usize::MAX;
 
-impl Cut {
-    fn of(polygon: &Polygon, edge: usize) -> Cut {
+impl<P: Coord> Cut<P> {
+    fn of(polygon: &Polygon<P>, edge: usize) -> Cut<P> {
         let (u, w) = (polygon.point(edge), polygon.point(polygon.next(edge)));
         Cut {
             a: u.min(w),
@@ -273,9 +280,9 @@ impl Cut {
     }
 }
 
-order_from_cmp!(Cut);
+order_from_cmp!(Cut<P>);
 
-impl Ord for Cut {
+impl<P: Coord> Ord for Cut<P> {
     /// Below/above at the current sweep position, for edges cut by the sweep line at the same
     /// time (the only ones a set ever compares): test the later-starting edge's start (or, if it
     /// lies on the other edge's line, its end) against the earlier-starting edge.
@@ -308,11 +315,11 @@ impl Ord for Cut {
 }
 
 /// The sweep: the leftmost forbidden contact, or the ring enclosing each ring (`None`: none).
-fn sweep(polygon: &Polygon, order: &[usize]) -> Result<Vec<Option<usize>>, InvalidPolygon> {
+fn sweep<P: Coord>(polygon: &Polygon<P>, order: &[usize]) -> Result<Vec<Option<usize>>, InvalidPolygon> {
     let rings = polygon.holes() + 1;
     let mut parent: Vec<Option<usize>> = vec![None; rings];
     let mut seen = vec![false; rings];
-    let mut status: Status<Cut> = Status::new();
+    let mut status: Status<Cut<P>> = Status::new();
     // The status handle of each edge present (edges are numbered by their first vertex).
     let mut handle: Vec<Option<Handle>> = vec![None; polygon.len()];
     for &i in order {
@@ -371,7 +378,7 @@ fn sweep(polygon: &Polygon, order: &[usize]) -> Result<Vec<Option<usize>>, Inval
 }
 
 /// Whether edges `e` and `f` meet where they must not.
-fn test(polygon: &Polygon, e: usize, f: usize) -> Result<(), InvalidPolygon> {
+fn test<P: Coord>(polygon: &Polygon<P>, e: usize, f: usize) -> Result<(), InvalidPolygon> {
     if polygon.next(e) == f || polygon.next(f) == e {
         return Ok(()); // neighbours share their common vertex; spikes are reported separately
     }
@@ -395,7 +402,7 @@ fn test(polygon: &Polygon, e: usize, f: usize) -> Result<(), InvalidPolygon> {
         }
         _ => {
             let on =
-                |v: usize, s: Point, t: Point| super::kernel::on_segment(s, t, polygon.point(v));
+                |v: usize, s: P, t: P| super::kernel::on_segment(s, t, polygon.point(v));
             let v = [c, d]
                 .iter()
                 .zip([f, f1])

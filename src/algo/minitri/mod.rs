@@ -29,6 +29,7 @@ pub mod partition;
 pub mod small;
 mod staircase;
 
+use crate::geom::kernel::Coord;
 use super::{Algorithm, TriangulateError, Triangulation};
 use crate::geom::polygon::Polygon;
 use std::time::{Duration, Instant};
@@ -41,7 +42,7 @@ pub const DEFAULT_TIME_LIMIT: Duration = Duration::from_secs(10);
 ///
 /// # Errors
 /// Those of [`triangulate_within`].
-pub fn triangulate(polygon: &Polygon) -> Result<Triangulation, TriangulateError> {
+pub fn triangulate<P: Coord>(polygon: &Polygon<P>) -> Result<Triangulation, TriangulateError> {
     triangulate_within(polygon, Instant::now().checked_add(DEFAULT_TIME_LIMIT))
 }
 
@@ -51,8 +52,8 @@ pub fn triangulate(polygon: &Polygon) -> Result<Triangulation, TriangulateError>
 /// # Errors
 /// Without holes, none for valid polygons; with holes, those of [`triangulate_general`] (not
 /// seen in the tests).
-pub fn triangulate_within(
-    polygon: &Polygon,
+pub fn triangulate_within<P: Coord>(
+    polygon: &Polygon<P>,
     deadline: Option<Instant>,
 ) -> Result<Triangulation, TriangulateError> {
     if polygon.holes() > 0 {
@@ -96,8 +97,8 @@ pub fn triangulate_within(
 /// # Errors
 /// [`TriangulateError::MinitriCutFailed`] if a self-check of the cut step fails (see [`cut`];
 /// not seen in the tests).
-pub fn triangulate_general(
-    polygon: &Polygon,
+pub fn triangulate_general<P: Coord>(
+    polygon: &Polygon<P>,
     deadline: Option<Instant>,
 ) -> Result<Triangulation, TriangulateError> {
     let (mdts, base) = degenerate::minimally_degenerate_and_mesh(polygon);
