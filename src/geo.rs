@@ -189,7 +189,10 @@ fn corners<P: crate::geom::kernel::Coord>(polygon: &Polygon<P>) -> Vec<Coord<f64
 }
 
 /// The triples of `list` as geo-types triangles; triples with an index out of range are skipped.
-fn to_triangles<P: crate::geom::kernel::Coord>(polygon: &Polygon<P>, list: &[[usize; 3]]) -> Vec<Triangle<f64>> {
+fn to_triangles<P: crate::geom::kernel::Coord>(
+    polygon: &Polygon<P>,
+    list: &[[usize; 3]],
+) -> Vec<Triangle<f64>> {
     let at = corners(polygon);
     list.iter()
         .filter_map(|&[a, b, c]| Some(Triangle::new(*at.get(a)?, *at.get(b)?, *at.get(c)?)))
@@ -198,19 +201,28 @@ fn to_triangles<P: crate::geom::kernel::Coord>(polygon: &Polygon<P>, list: &[[us
 
 /// The triangles of `t`, counter-clockwise, with the input coordinates (see the module
 /// documentation for their exactness).
-pub fn triangles<P: crate::geom::kernel::Coord>(polygon: &Polygon<P>, t: &Triangulation) -> Vec<Triangle<f64>> {
+pub fn triangles<P: crate::geom::kernel::Coord>(
+    polygon: &Polygon<P>,
+    t: &Triangulation,
+) -> Vec<Triangle<f64>> {
     to_triangles(polygon, &t.triangles)
 }
 
 /// The degenerate triangles `[a, b, c]` of `t` (zero area: `b` lies between `a` and `c`, a
 /// T-junction), in that order of corners.
-pub fn degenerate<P: crate::geom::kernel::Coord>(polygon: &Polygon<P>, t: &Triangulation) -> Vec<Triangle<f64>> {
+pub fn degenerate<P: crate::geom::kernel::Coord>(
+    polygon: &Polygon<P>,
+    t: &Triangulation,
+) -> Vec<Triangle<f64>> {
     to_triangles(polygon, &t.degenerate)
 }
 
 /// The triangles of `t` as one multipolygon of closed counter-clockwise rings, e.g. for WKT or
 /// GeoJSON output.
-pub fn multi_polygon<P: crate::geom::kernel::Coord>(polygon: &Polygon<P>, t: &Triangulation) -> MultiPolygon<f64> {
+pub fn multi_polygon<P: crate::geom::kernel::Coord>(
+    polygon: &Polygon<P>,
+    t: &Triangulation,
+) -> MultiPolygon<f64> {
     triangles(polygon, t)
         .into_iter()
         .map(|triangle| triangle.to_polygon())

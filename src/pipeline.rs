@@ -308,7 +308,11 @@ fn solve_pseudo<P: Coord>(polygon: &Polygon<P>, options: &Options) -> Result<Sol
 }
 
 /// Checks `main` and every other exact algorithm's output independently, and their agreement.
-fn verify_all<P: Coord>(polygon: &Polygon<P>, main: &Triangulation, options: &Options) -> Verification {
+fn verify_all<P: Coord>(
+    polygon: &Polygon<P>,
+    main: &Triangulation,
+    options: &Options,
+) -> Verification {
     let mut outputs = vec![main.clone()];
     let mut skipped = Vec::new();
     for other in [Algorithm::Minitri, Algorithm::Asano] {

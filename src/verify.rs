@@ -64,8 +64,8 @@
 //! vertices and `d` degenerate triangles: a few sorts, never pairs of triangles or triangles
 //! times edges.
 
-use crate::geom::kernel::Coord;
 use crate::algo::{Algorithm, Triangulation};
+use crate::geom::kernel::Coord;
 use crate::geom::kernel::{cross, line_through, strictly_between, Area, Point};
 use crate::geom::polygon::Polygon;
 use std::cmp::Ordering;
@@ -199,7 +199,12 @@ fn name<P: Coord>(polygon: &Polygon<P>, what: &str, k: usize, tri: [usize; 3]) -
 }
 
 /// Problems with the indices of `tri`, if any (check 1).
-fn index_problem<P: Coord>(polygon: &Polygon<P>, what: &str, k: usize, tri: [usize; 3]) -> Option<String> {
+fn index_problem<P: Coord>(
+    polygon: &Polygon<P>,
+    what: &str,
+    k: usize,
+    tri: [usize; 3],
+) -> Option<String> {
     let n = polygon.len();
     if let Some(&bad) = tri.iter().find(|&&i| i >= n) {
         let name = name(polygon, what, k, tri);
@@ -293,7 +298,11 @@ fn check_chain<P: Coord>(polygon: &Polygon<P>, t: &Triangulation, problems: &mut
 
 /// The chain of `sides` (each `[from, to]` with weight +1) is zero: on every line, the weights of
 /// the segments on it cancel on every stretch (the core of check 3, shared with [`pseudo`]).
-fn check_sides_cancel<P: Coord>(polygon: &Polygon<P>, mut sides: Vec<[usize; 2]>, problems: &mut Problems) {
+fn check_sides_cancel<P: Coord>(
+    polygon: &Polygon<P>,
+    mut sides: Vec<[usize; 2]>,
+    problems: &mut Problems,
+) {
     // Cancel segments with the same two end vertices (most of them in a valid triangulation).
     let pair = |&[u, v]: &[usize; 2]| (u.min(v), u.max(v));
     sides.sort_unstable_by_key(pair);

@@ -23,11 +23,18 @@ fn world_star(n: usize) -> String {
         state ^= state << 13;
         state ^= state >> 7;
         state ^= state << 17;
-        let r = 0.55 + 0.45 * (state % 10_000) as f64 / 10_000.0;
+        let extreme = k % (n / 4) == 0; // on the axes: the full ±180 by ±85
+        let r = if extreme {
+            1.0
+        } else {
+            0.55 + 0.45 * (state % 10_000) as f64 / 10_000.0
+        };
         let theta = std::f64::consts::TAU * k as f64 / n as f64;
         let (mut x, y) = (180.0 * r * theta.cos(), 85.0 * r * theta.sin());
         if k == n / 4 {
             x = 1.2345678901234567e-5;
+        } else if k == n / 2 {
+            x = -179.99999999999997;
         }
         coords.push(format!("{x} {y}"));
     }
@@ -38,8 +45,14 @@ fn world_star(n: usize) -> String {
 #[test]
 fn a_world_sized_polygon_of_full_precision_doubles_is_triangulated_by_every_algorithm() {
     let text = world_star(10_000);
-    assert!(text.contains("1.2345678901234567e-5"));
-    assert!(text.contains("179.9"), "full-precision coordinates near 180");
+    // Rust's `{}` writes 1.2345678901234567e-5 in plain notation, its shortest digits.
+    let tiny = format!("{}", 1.2345678901234567e-5_f64);
+    assert!(tiny.starts_with("0.0000123456789012345"), "{tiny}");
+    assert!(text.contains(&format!(", {tiny} ")));
+    assert!(
+        text.contains("-179.99999999999997 "),
+        "full-precision coordinates near 180"
+    );
     for algorithm in [
         Algorithm::Minitri,
         Algorithm::Ear,

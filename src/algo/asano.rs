@@ -32,9 +32,9 @@
 //! Complexity: O(n^3) time, O(n^2) memory (four `n x n` tables of `u16`, 8 n^2 bytes, plus the
 //! chord bits). Above [`DEFAULT_LIMIT`] vertices (configurable) it refuses, with an estimate.
 
-use crate::geom::kernel::Coord;
 use super::chords::ChordTable;
 use super::{Algorithm, TriangulateError, Triangulation};
+use crate::geom::kernel::Coord;
 use crate::geom::kernel::{cross, Point};
 use crate::geom::polygon::Polygon;
 
@@ -70,7 +70,10 @@ pub fn estimate(n: usize) -> (String, String) {
 /// table's range); for polygons with holes, those of [`super::asano_holes::triangulate`]
 /// ([`TriangulateError::TooManyHoles`] above 2 holes, [`TriangulateError::TooLargeWithHoles`]
 /// above its size limits).
-pub fn triangulate<P: Coord>(polygon: &Polygon<P>, limit: usize) -> Result<Triangulation, TriangulateError> {
+pub fn triangulate<P: Coord>(
+    polygon: &Polygon<P>,
+    limit: usize,
+) -> Result<Triangulation, TriangulateError> {
     let n = polygon.len();
     if polygon.holes() > 0 {
         return super::asano_holes::triangulate(polygon, limit);

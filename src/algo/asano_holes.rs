@@ -55,10 +55,10 @@
 //! [`ONE_HOLE_LIMIT`] and [`TWO_HOLES_LIMIT`] vertices (a few seconds at most), and at most
 //! [`MAX_HOLES`] holes; beyond, it refuses with an estimate.
 
-use crate::geom::kernel::Coord;
 use super::asano::solve_walk;
 use super::chords::ChordTable;
 use super::{Algorithm, TriangulateError, Triangulation};
+use crate::geom::kernel::Coord;
 use crate::geom::kernel::{in_closed_wedge, properly_cross, strictly_between, Point};
 use crate::geom::polygon::Polygon;
 use std::collections::BTreeMap;
@@ -134,7 +134,10 @@ pub fn estimate(n: usize, holes: usize) -> String {
 /// # Ok(())
 /// # }
 /// ```
-pub fn triangulate<P: Coord>(polygon: &Polygon<P>, dp_limit: usize) -> Result<Triangulation, TriangulateError> {
+pub fn triangulate<P: Coord>(
+    polygon: &Polygon<P>,
+    dp_limit: usize,
+) -> Result<Triangulation, TriangulateError> {
     let holes = polygon.holes();
     if holes == 0 || holes > MAX_HOLES {
         return Err(TriangulateError::TooManyHoles {

@@ -134,9 +134,7 @@ impl<P: Coord> Ord for Cut<P> {
 /// if there is one (found by a merge, both halves being sorted), else a new one.
 fn number_lines<P: Coord>(polygon: &Polygon<P>, v: usize, order: &[usize], out: &mut [u16]) {
     let c = polygon.point(v);
-    let upper = |u: usize| {
-        crate::geom::kernel::above(c, polygon.point(u))
-    };
+    let upper = |u: usize| crate::geom::kernel::above(c, polygon.point(u));
     let split = order.partition_point(|&u| upper(u));
     let (mut next_id, mut last): (u16, Option<usize>) = (0, None);
     for &u in &order[..split] {
@@ -170,7 +168,11 @@ fn number_lines<P: Coord>(polygon: &Polygon<P>, v: usize, order: &[usize], out: 
 
 /// Fills `out` with the vertices `u` such that `v u` is a chord; returns all other vertices
 /// sorted by angle around `v`, then by distance.
-pub(crate) fn visible_from<P: Coord>(polygon: &Polygon<P>, v: usize, out: &mut Vec<usize>) -> Vec<usize> {
+pub(crate) fn visible_from<P: Coord>(
+    polygon: &Polygon<P>,
+    v: usize,
+    out: &mut Vec<usize>,
+) -> Vec<usize> {
     out.clear();
     let c = polygon.point(v);
     let (vp, vn) = (

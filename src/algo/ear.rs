@@ -24,8 +24,8 @@
 //! to O(n^3) (each ear test looks at every remaining vertex, a bit set), with no allocation but
 //! its result; it handles no holes, so holes never reach it.
 
-use crate::geom::kernel::Coord;
 use super::{Algorithm, TriangulateError, Triangulation};
+use crate::geom::kernel::Coord;
 use crate::geom::kernel::{cross, Point};
 use crate::geom::polygon::Polygon;
 

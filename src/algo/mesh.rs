@@ -38,8 +38,8 @@
 //! half-edge found by its ends in expected O(1) (hash map); an insertion started in O(degree)
 //! at its first vertex, O(k) to walk it, then the flips above.
 
-use crate::geom::kernel::Coord;
 use crate::algo::number_hash::NumberMap;
+use crate::geom::kernel::Coord;
 use crate::geom::kernel::{cross, dot, incircle_approx, Point};
 use std::collections::VecDeque;
 
@@ -146,11 +146,7 @@ pub(crate) struct Mesh<'a, P: Coord = Point> {
 impl<'a, P: Coord> Mesh<'a, P> {
     /// The mesh of `triangles` (indices into `pts`, as the module's input contract says), with
     /// the undirected edges `fixed` fixed (each an edge of some triangle).
-    pub(crate) fn new(
-        pts: &'a [P],
-        triangles: &[[usize; 3]],
-        fixed: &[(usize, usize)],
-    ) -> Self {
+    pub(crate) fn new(pts: &'a [P], triangles: &[[usize; 3]], fixed: &[(usize, usize)]) -> Self {
         let m = triangles.len();
         let mut mesh = Mesh {
             pts,

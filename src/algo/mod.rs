@@ -218,10 +218,7 @@ pub(crate) fn plain<P: Coord>(pts: &[P]) -> Vec<[usize; 3]> {
 /// # Panics
 /// As [`monotone::triangulate_rings`], if `ring_starts` does not describe rings of at least 3
 /// points.
-pub(crate) fn plain_rings<P: Coord>(
-    pts: &[P],
-    ring_starts: &[usize],
-) -> Vec<[usize; 3]> {
+pub(crate) fn plain_rings<P: Coord>(pts: &[P], ring_starts: &[usize]) -> Vec<[usize; 3]> {
     if ring_starts.len() == 1 {
         plain(pts)
     } else {
@@ -257,13 +254,20 @@ pub(crate) fn plain_polygon_for_walking<P: Coord>(polygon: &crate::Polygon<P>) -
     let mut ends = [pts[0]; 4];
     for &p in pts {
         for (k, end) in ends.iter_mut().enumerate() {
-            let order = if k < 2 { P::cmp_x(p, *end) } else { P::cmp_y(p, *end) };
+            let order = if k < 2 {
+                P::cmp_x(p, *end)
+            } else {
+                P::cmp_y(p, *end)
+            };
             if order == [Ordering::Less, Ordering::Greater][k % 2] {
                 *end = p;
             }
         }
     }
-    let (width, height) = (ends[1].offset_f64(ends[0])[0], ends[3].offset_f64(ends[2])[1]);
+    let (width, height) = (
+        ends[1].offset_f64(ends[0])[0],
+        ends[3].offset_f64(ends[2])[1],
+    );
     if width <= 2.0 * height {
         return plain_polygon(polygon);
     }

@@ -514,7 +514,11 @@ impl<'a, P: Coord> Sweep<'a, P> {
 /// The pieces cut out of the polygon by `diagonals` (proper, pairwise non-crossing, connecting
 /// the rings without cut vertex, see "Holes" in the module documentation): all their vertex
 /// cycles, counter-clockwise, concatenated, and the start of each (plus the end).
-fn pieces<P: Coord>(pts: &[P], links: &Links, diagonals: &[[usize; 2]]) -> (Vec<usize>, Vec<usize>) {
+fn pieces<P: Coord>(
+    pts: &[P],
+    links: &Links,
+    diagonals: &[[usize; 2]],
+) -> (Vec<usize>, Vec<usize>) {
     let n = pts.len();
     let next = |i: usize| links.next[i];
     let prev = |i: usize| links.prev[i];
@@ -695,7 +699,13 @@ fn triangulate_monotone<P: Coord>(
 
 /// The fan from `u` (below the whole stack, on the other chain or the bottom) over the stack
 /// chain, whose vertices `s_1..` lie on `chain`.
-fn fan<P: Coord>(pts: &[P], stack: &[(usize, Chain)], u: usize, chain: Chain, out: &mut Vec<[usize; 3]>) {
+fn fan<P: Coord>(
+    pts: &[P],
+    stack: &[(usize, Chain)],
+    u: usize,
+    chain: Chain,
+    out: &mut Vec<[usize; 3]>,
+) {
     for w in stack.windows(2) {
         let (a, b) = (w[0].0, w[1].0);
         let t = match chain {

@@ -41,8 +41,8 @@
 //! Complexity: O(n) after the triangulation (Theorem 5): linear-time twin matching (two counting
 //! sorts), one work list, one face scan. With the triangulation, O(n log n) in all.
 
-use crate::geom::kernel::Coord;
 use super::{Pseudotriangle, Pseudotriangulation};
+use crate::geom::kernel::Coord;
 use crate::geom::kernel::{cross, Point};
 use crate::geom::polygon::Polygon;
 

@@ -85,10 +85,10 @@
 
 mod funnel;
 
-use crate::geom::kernel::Coord;
 use super::mesh::{Broken, Half, Mesh};
 use super::TriangulateError;
 use super::{plain, plain_polygon, HullCounts, Pseudotriangle, Pseudotriangulation};
+use crate::geom::kernel::Coord;
 use crate::geom::kernel::{cmp_angle, cross, Point};
 use crate::geom::polygon::Polygon;
 use std::collections::HashSet;
@@ -112,7 +112,9 @@ use std::collections::HashSet;
 /// assert_eq!(p.faces.len(), 2); // n - 2: the polygon and the pocket under vertex (2, 1)
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-pub fn pseudotriangulate<P: Coord>(polygon: &Polygon<P>) -> Result<Pseudotriangulation, TriangulateError> {
+pub fn pseudotriangulate<P: Coord>(
+    polygon: &Polygon<P>,
+) -> Result<Pseudotriangulation, TriangulateError> {
     let n = polygon.len();
     let points = polygon.points();
     let hull = hull_cycle(points);
@@ -174,7 +176,10 @@ fn construct<P: Coord>(
 
 /// Step 1: the triangulated hull with L and the hull edges fixed, a half-edge `(u, v)` of the
 /// outer boundary of each face (the face on its left), and a bound on any walk.
-fn setup<'a, P: Coord>(polygon: &'a Polygon<P>, hull: &[usize]) -> (Mesh<'a, P>, Vec<(usize, usize)>, usize) {
+fn setup<'a, P: Coord>(
+    polygon: &'a Polygon<P>,
+    hull: &[usize],
+) -> (Mesh<'a, P>, Vec<(usize, usize)>, usize) {
     let n = polygon.len();
     let points = polygon.points();
     let mut triangles = plain_polygon(polygon);

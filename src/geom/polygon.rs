@@ -13,8 +13,8 @@
 
 use super::decimal::Decimal;
 use super::kernel::{cross, Area, Coord, Point, MAX_COORD};
-use super::wide::WidePoint;
 use super::validate::{self, InvalidPolygon};
+use super::wide::WidePoint;
 use crate::io::read::RawPolygon;
 use std::borrow::Cow;
 use std::fmt;
@@ -176,9 +176,7 @@ impl AnyPolygon {
         raw: &RawPolygon,
     ) -> Result<(AnyPolygon, Vec<Warning>), Vec<InvalidPolygon>> {
         match Polygon::from_raw_all_errors(raw) {
-            Err(errors)
-                if matches!(errors[..], [InvalidPolygon::CoordinatesTooLarge { .. }]) =>
-            {
+            Err(errors) if matches!(errors[..], [InvalidPolygon::CoordinatesTooLarge { .. }]) => {
                 let (polygon, warnings) = Polygon::from_raw_wide(raw)?;
                 Ok((AnyPolygon::Wide(polygon), warnings))
             }
@@ -356,7 +354,6 @@ impl Polygon<WidePoint> {
 }
 
 impl<P: Coord> Polygon<P> {
-
     /// One ring of grid points as they are (no validation, no winding change; ids 0, 1, ..), for
     /// checking a cycle with [`crate::geom::validate::errors`] (`verify::pseudo`'s faces).
     pub(crate) fn ring_of_points(points: Vec<P>, grid: Grid) -> Polygon<P> {
@@ -377,7 +374,8 @@ impl<P: Coord> Polygon<P> {
         raw: &RawPolygon,
         points: Vec<P>,
         grid: Grid,
-    ) -> Result<(Polygon<P>, Vec<Warning>), InvalidPolygon> {        // Room for every vertex read (duplicates dropped below only leave a little unused), so
+    ) -> Result<(Polygon<P>, Vec<Warning>), InvalidPolygon> {
+        // Room for every vertex read (duplicates dropped below only leave a little unused), so
         // that the largest arrays never grow by doubling.
         let total: usize = raw.rings.iter().map(Vec::len).sum();
         let mut polygon = Polygon {
@@ -561,7 +559,14 @@ impl<P: Coord> Polygon<P> {
         let (lo, hi) = (P::corner(lo[0], lo[1]), P::corner(hi[0], hi[1]));
         let [w, h] = hi.offset_f64(lo);
         let span = w.max(h);
-        (lo, if span > 0.0 { 2f64.powi(40) / span } else { 1.0 })
+        (
+            lo,
+            if span > 0.0 {
+                2f64.powi(40) / span
+            } else {
+                1.0
+            },
+        )
     }
 
     /// Number of flat vertices (collinear with both neighbours, between them).
@@ -610,7 +615,11 @@ impl<P: Coord> Polygon<P> {
             for i in range.clone() {
                 assert_eq!(self.ring_index(i), r);
                 assert_eq!(self.prev(self.next(i)), i);
-                area.add(self.points[range.start], self.points[i], self.points[self.next(i)]);
+                area.add(
+                    self.points[range.start],
+                    self.points[i],
+                    self.points[self.next(i)],
+                );
             }
             assert_eq!(area.signum(), if r == 0 { 1 } else { -1 });
         }
@@ -822,6 +831,23 @@ mod tests {
         ]]))
         .unwrap_err();
         assert!(e.to_string().contains("too large"), "{e}");
+        // The wide kernel takes them.
+        for rings in [
+            &[&[("0", "0"), ("1e19", "0"), ("0", "0.1")][..]][..],
+            &[&[("0", "0"), ("1e-30", "0"), ("1e10", "1")][..]][..],
+            &[&[("0", "0"), ("1", "0"), ("1", "1e400")][..]][..],
+        ] {
+            let (p, _) = AnyPolygon::from_raw(&raw_decimal(rings)).unwrap();
+            assert!(p.is_wide());
+            assert_eq!(p.len(), 3);
+        }
+        let (p, _) = AnyPolygon::from_raw(&raw_decimal(&[&[
+            ("0", "0"),
+            ("1e-30", "0"),
+            ("1e10", "1"),
+        ]]))
+        .unwrap();
+        assert_eq!(p.format_vertex(1), "(0.000000000000000000000000000001, 0)");
         // The largest span that fits is accepted.
         assert!(Polygon::from_raw(&raw_decimal(&[&[
             ("0", "0"),

@@ -44,7 +44,9 @@ pub enum InvalidPolygon {
         /// The ring.
         ring: Ring,
     },
-    /// Coordinates whose common decimal grid is too large for exact 128-bit predicates.
+    /// Coordinates whose common decimal grid is too large for the fast kernel's exact 128-bit
+    /// predicates: only from the fast kernel's own constructors (`Polygon::from_raw`);
+    /// `AnyPolygon::from_raw` takes the wide kernel instead.
     #[error("coordinates too large for exact arithmetic: {detail}")]
     CoordinatesTooLarge {
         /// What exceeds the range.
@@ -171,7 +173,10 @@ pub fn errors<P: Coord>(polygon: &Polygon<P>) -> Vec<InvalidPolygon> {
 const SMALL_RING: usize = 32;
 
 /// [`errors`], with the pair-by-pair check of small rings on or off (the tests compare both).
-pub(crate) fn errors_with<P: Coord>(polygon: &Polygon<P>, small_rings_by_pairs: bool) -> Vec<InvalidPolygon> {
+pub(crate) fn errors_with<P: Coord>(
+    polygon: &Polygon<P>,
+    small_rings_by_pairs: bool,
+) -> Vec<InvalidPolygon> {
     let mut errors = spikes(polygon);
     let mut order: Vec<usize> = (0..polygon.len()).collect();
     order.sort_unstable_by_key(|&i| (polygon.point(i), i));
@@ -315,7 +320,10 @@ impl<P: Coord> Ord for Cut<P> {
 }
 
 /// The sweep: the leftmost forbidden contact, or the ring enclosing each ring (`None`: none).
-fn sweep<P: Coord>(polygon: &Polygon<P>, order: &[usize]) -> Result<Vec<Option<usize>>, InvalidPolygon> {
+fn sweep<P: Coord>(
+    polygon: &Polygon<P>,
+    order: &[usize],
+) -> Result<Vec<Option<usize>>, InvalidPolygon> {
     let rings = polygon.holes() + 1;
     let mut parent: Vec<Option<usize>> = vec![None; rings];
     let mut seen = vec![false; rings];
@@ -401,8 +409,7 @@ fn test<P: Coord>(polygon: &Polygon<P>, e: usize, f: usize) -> Result<(), Invali
             format!("near ({}, {})", ax + t * (bx - ax), ay + t * (by - ay))
         }
         _ => {
-            let on =
-                |v: usize, s: P, t: P| super::kernel::on_segment(s, t, polygon.point(v));
+            let on = |v: usize, s: P, t: P| super::kernel::on_segment(s, t, polygon.point(v));
             let v = [c, d]
                 .iter()
                 .zip([f, f1])

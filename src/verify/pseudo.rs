@@ -31,9 +31,9 @@
 //! simplicity test (`geom::validate` on each face: pair by pair up to 32 vertices, by the exact
 //! sweep above); for `pseudo-hull`, O(n log n) for the hull.
 
-use crate::geom::kernel::Coord;
 use super::{check_sides_cancel, plural, Check, Problems};
 use crate::algo::{Algorithm, Pseudotriangulation};
+use crate::geom::kernel::Coord;
 use crate::geom::kernel::{cmp_angle, cross, dot, Area};
 use crate::geom::polygon::Polygon;
 use std::collections::BTreeMap;
@@ -41,7 +41,11 @@ use std::collections::BTreeMap;
 /// Checks, exactly, that `p` is a minimal pseudotriangulation of `polygon` (`pseudo`), or a
 /// minimum one of its vertices' convex hull containing its edges (`pseudo-hull`); see the
 /// module documentation.
-pub fn check<P: Coord>(polygon: &Polygon<P>, algorithm: Algorithm, p: &Pseudotriangulation) -> Check {
+pub fn check<P: Coord>(
+    polygon: &Polygon<P>,
+    algorithm: Algorithm,
+    p: &Pseudotriangulation,
+) -> Check {
     let mut problems = Problems::default();
     let hull_region = algorithm == Algorithm::PseudoHull;
     let n = polygon.len();
@@ -74,11 +78,7 @@ pub fn check<P: Coord>(polygon: &Polygon<P>, algorithm: Algorithm, p: &Pseudotri
         for i in 0..hull.len() {
             let (a, b) = (hull[i], hull[(i + 1) % hull.len()]);
             sides.push([b, a]);
-            region.add(
-                polygon.point(hull[0]),
-                polygon.point(a),
-                polygon.point(b),
-            );
+            region.add(polygon.point(hull[0]), polygon.point(a), polygon.point(b));
         }
     } else {
         sides.extend((0..n).map(|i| [polygon.next(i), i]));

@@ -4,9 +4,9 @@
 //! independent; a 3b-chain is a path of such pairs, and any set of its members is independent
 //! (see [`super::mis`]).
 
-use crate::geom::kernel::Coord;
 use super::degenerate::Degenerate;
 use super::lists::Lists;
+use crate::geom::kernel::Coord;
 use crate::geom::kernel::{cross, Dir};
 use crate::geom::polygon::Polygon;
 

@@ -12,9 +12,9 @@
 //!
 //! Complexity: O(K log K) for K triangles.
 
-use crate::geom::kernel::Coord;
 use super::degenerate::Degenerate;
 use crate::geom::kernel::cmp_angle_from;
+use crate::geom::kernel::Coord;
 use crate::geom::polygon::Polygon;
 
 /// Chords on a circle with positions `0..2K`, one endpoint per position.

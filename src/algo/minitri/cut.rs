@@ -38,10 +38,10 @@
 //! on average) this step takes 0.16 s, against 0.37-0.41 s when it removed the crossed
 //! triangles and triangulated both sides again.
 
-use crate::geom::kernel::Coord;
 use super::degenerate::Degenerate;
 use crate::algo::mesh::Mesh;
 use crate::algo::{plain, TriangulateError};
+use crate::geom::kernel::Coord;
 use crate::geom::kernel::{cross, Point};
 use crate::geom::polygon::Polygon;
 use std::collections::{HashMap, HashSet};

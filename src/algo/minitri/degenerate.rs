@@ -34,9 +34,9 @@
 //! and the README's benchmarks). The paper's O(n log^2 n) worst case (polygon cutting and ray
 //! shooting) is not implemented.
 
-use crate::geom::kernel::Coord;
 use super::expansion::{double_cone, Mesh, Workspace};
 use crate::algo::chords::visible_from;
+use crate::geom::kernel::Coord;
 use crate::geom::kernel::{cmp_angle, cross};
 use crate::geom::polygon::Polygon;
 use rayon::prelude::*;
@@ -147,7 +147,9 @@ pub fn minimally_degenerate<P: Coord>(polygon: &Polygon<P>) -> Vec<Degenerate> {
 /// [`minimally_degenerate`], also handing back the plain triangulation it walked (`n + 2w - 2`
 /// positive triangles, every side an edge or a proper diagonal), so that later steps need not
 /// build another one.
-pub fn minimally_degenerate_and_mesh<P: Coord>(polygon: &Polygon<P>) -> (Vec<Degenerate>, Vec<[usize; 3]>) {
+pub fn minimally_degenerate_and_mesh<P: Coord>(
+    polygon: &Polygon<P>,
+) -> (Vec<Degenerate>, Vec<[usize; 3]>) {
     let mut mesh = Mesh::new(polygon, crate::algo::plain_polygon_for_walking(polygon));
     if polygon.len() >= FLIPS_FROM {
         mesh.flip_towards_delaunay(polygon, FLIPS_PER_VERTEX * polygon.len());
@@ -171,7 +173,11 @@ pub fn minimally_degenerate_and_mesh<P: Coord>(polygon: &Polygon<P>) -> (Vec<Deg
 }
 
 /// The triangles found from the vertices of `range`, in vertex order.
-fn search_range<P: Coord>(polygon: &Polygon<P>, mesh: &Mesh, range: std::ops::Range<usize>) -> Vec<Degenerate> {
+fn search_range<P: Coord>(
+    polygon: &Polygon<P>,
+    mesh: &Mesh,
+    range: std::ops::Range<usize>,
+) -> Vec<Degenerate> {
     // One workspace per thread, kept from call to call (a batch of small polygons would
     // otherwise grow its buffers again for every polygon). Nothing in the search calls back
     // into the thread pool, so the borrow never nests.
@@ -262,9 +268,7 @@ pub fn minimally_degenerate_by_sweep<P: Coord>(polygon: &Polygon<P>) -> Vec<Dege
             seen[u] = false;
         }
         // Pair opposite directions: both halves are sorted by angle.
-        let upper = |u: usize| {
-            crate::geom::kernel::above(c, polygon.point(u))
-        };
+        let upper = |u: usize| crate::geom::kernel::above(c, polygon.point(u));
         let split = nearest.partition_point(|&u| upper(u));
         let (top, bottom) = nearest.split_at(split);
         let mut j = 0;

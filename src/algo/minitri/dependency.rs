@@ -18,8 +18,8 @@
 //! sweep over x-extents, comparing segments whose x-ranges overlap: O(K log K + candidate
 //! pairs), near-linear when segments are short, O(K^2) at worst.
 
-use crate::geom::kernel::Coord;
 use super::degenerate::Degenerate;
+use crate::geom::kernel::Coord;
 use crate::geom::kernel::{cross, properly_cross};
 use crate::geom::polygon::Polygon;
 use std::cmp::Ordering;

@@ -40,8 +40,8 @@
 //! the length of the polygon, Theta(n^2) visible pairs), about 10 states per vertex on the mesh
 //! swept along the corridor (`crate::algo::plain_polygon_for_walking`).
 
-use crate::geom::kernel::Coord;
 use crate::algo::mesh::twin_halves;
+use crate::geom::kernel::Coord;
 use crate::geom::kernel::{cross, incircle_approx, Dir};
 use crate::geom::polygon::Polygon;
 
@@ -213,7 +213,11 @@ impl Mesh {
     /// hence walking a little slower, and never changes what the walk finds, which is correct
     /// over any triangulation. Since inexact answers could make flips cycle, at most `max_flips`
     /// are made.
-    pub fn flip_towards_delaunay<P: Coord>(&mut self, polygon: &Polygon<P>, max_flips: usize) -> usize {
+    pub fn flip_towards_delaunay<P: Coord>(
+        &mut self,
+        polygon: &Polygon<P>,
+        max_flips: usize,
+    ) -> usize {
         let p = |v: usize| polygon.point(v);
         let mut stack: Vec<u32> = (0..self.twin.len() as u32)
             .filter(|&h| self.twin[h as usize] != NONE && h < self.twin[h as usize])

@@ -29,8 +29,8 @@ pub mod partition;
 pub mod small;
 mod staircase;
 
-use crate::geom::kernel::Coord;
 use super::{Algorithm, TriangulateError, Triangulation};
+use crate::geom::kernel::Coord;
 use crate::geom::polygon::Polygon;
 use std::time::{Duration, Instant};
 

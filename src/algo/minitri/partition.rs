@@ -13,9 +13,9 @@
 //! Complexity: O((n + K) log n) to build the graph and walk its faces, plus O(n_i log n_i) for
 //! each piece (`crate::algo::plain`).
 
-use crate::geom::kernel::Coord;
 use super::degenerate::Degenerate;
 use crate::algo::plain;
+use crate::geom::kernel::Coord;
 use crate::geom::kernel::{cmp_angle, cross, Area};
 use crate::geom::polygon::Polygon;
 
@@ -23,7 +23,10 @@ use crate::geom::polygon::Polygon;
 const GIVE_BACK: usize = 1 << 12;
 
 /// The triangles of all pieces, in stored vertex indices, counter-clockwise.
-pub fn triangulate_pieces<P: Coord>(polygon: &Polygon<P>, chosen: &[Degenerate]) -> Vec<[usize; 3]> {
+pub fn triangulate_pieces<P: Coord>(
+    polygon: &Polygon<P>,
+    chosen: &[Degenerate],
+) -> Vec<[usize; 3]> {
     let n = polygon.len();
     // Undirected edges, deduplicated.
     let mut edges: Vec<(usize, usize)> = Vec::with_capacity(n + 2 * chosen.len());

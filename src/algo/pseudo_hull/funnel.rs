@@ -18,8 +18,8 @@
 //! sleeve (a point on the line of a chain segment but behind it) is reported as [`Broken`].
 //! O(m) for m diagonals: each vertex enters and leaves a chain once.
 
-use crate::geom::kernel::Coord;
 use crate::algo::mesh::Broken;
+use crate::geom::kernel::Coord;
 use crate::geom::kernel::{cross, dot, Point};
 use std::collections::VecDeque;
 

@@ -155,8 +155,20 @@ fn orientation_matches_exact_rationals_with_mixed_exponents() {
 #[test]
 fn decimals_compare_by_value() {
     let order = [
-        "-1e400", "-12.5", "-1.25", "-1e-30", "0", "1e-400", "0.000123", "0.0123", "0.1",
-        "0.10000000000000001", "1", "9.99", "10", "1e30",
+        "-1e400",
+        "-12.5",
+        "-1.25",
+        "-1e-30",
+        "0",
+        "1e-400",
+        "0.000123",
+        "0.0123",
+        "0.1",
+        "0.10000000000000001",
+        "1",
+        "9.99",
+        "10",
+        "1e30",
     ];
     for (i, a) in order.iter().enumerate() {
         for (j, b) in order.iter().enumerate() {

@@ -30,11 +30,11 @@
 //! is one polygon's. Complexity: O((T + d) log(T + d)) per polygon of `T` triangles and `d`
 //! degenerate triangles (the T-junction lookup sorts the triangle sides on their lines).
 
-use crate::geom::kernel::Coord;
 use super::json::{ids, json};
 use super::Sink;
 use crate::algo::Triangulation;
 use crate::geom::kernel::line_through;
+use crate::geom::kernel::Coord;
 use crate::geom::polygon::Polygon;
 use crate::pipeline::Outcome;
 use std::io::{self, Write};

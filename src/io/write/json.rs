@@ -117,7 +117,9 @@ pub fn render(outcome: &Outcome) -> Option<String> {
     };
     let t = &solved.triangulation;
     let fields: Vec<(&str, String)> = match &solved.pseudo {
-        Some(p) => crate::with_polygon!(polygon, q => pseudo_fields(outcome, index, q, t.algorithm, p)),
+        Some(p) => {
+            crate::with_polygon!(polygon, q => pseudo_fields(outcome, index, q, t.algorithm, p))
+        }
         None => crate::with_polygon!(polygon, q => triangle_fields(outcome, index, q, t)),
     };
     let mut out = String::from("    {\n");
