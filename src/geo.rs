@@ -24,7 +24,6 @@
 
 use crate::algo::Triangulation;
 use crate::geom::decimal::{Decimal, NumberError};
-use crate::geom::kernel::Coord as _;
 use crate::geom::polygon::{AnyPolygon, Polygon, Ring};
 use crate::io::read::{ParseError, RawPolygon};
 use crate::pipeline::Error;

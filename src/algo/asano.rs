@@ -34,8 +34,8 @@
 
 use super::chords::ChordTable;
 use super::{Algorithm, TriangulateError, Triangulation};
+use crate::geom::kernel::cross;
 use crate::geom::kernel::Coord;
-use crate::geom::kernel::{cross, Point};
 use crate::geom::polygon::Polygon;
 
 /// The default largest number of vertices the DP accepts (at most about 6 s and 75 MB at 3000).

@@ -59,7 +59,7 @@ use super::asano::solve_walk;
 use super::chords::ChordTable;
 use super::{Algorithm, TriangulateError, Triangulation};
 use crate::geom::kernel::Coord;
-use crate::geom::kernel::{in_closed_wedge, properly_cross, strictly_between, Point};
+use crate::geom::kernel::{in_closed_wedge, properly_cross, strictly_between};
 use crate::geom::polygon::Polygon;
 use std::collections::BTreeMap;
 

@@ -23,7 +23,7 @@
 //! Complexity: O(n log n) per vertex, O(n^2 log n) time in all; n^2 bits plus 2 n^2 bytes.
 
 use crate::geom::kernel::Coord;
-use crate::geom::kernel::{cmp_angle, cross, dot, in_closed_wedge, Point};
+use crate::geom::kernel::{cmp_angle, cross, in_closed_wedge};
 use crate::geom::polygon::Polygon;
 use std::cmp::Ordering;
 use std::collections::BTreeSet;

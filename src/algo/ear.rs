@@ -25,8 +25,8 @@
 //! its result; it handles no holes, so holes never reach it.
 
 use super::{Algorithm, TriangulateError, Triangulation};
+use crate::geom::kernel::cross;
 use crate::geom::kernel::Coord;
-use crate::geom::kernel::{cross, Point};
 use crate::geom::polygon::Polygon;
 
 /// Triangulates a polygon with w holes (possibly none) into n + 2w - 2 nondegenerate
@@ -146,6 +146,7 @@ fn is_ear<P: Coord>(pts: &[P], remaining: u64, p: usize, v: usize, q: usize) -> 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geom::kernel::Point;
     use crate::test_support::{polygon, U_SHAPE};
 
     fn check(ring: &[(i64, i64)]) {

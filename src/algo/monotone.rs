@@ -197,7 +197,7 @@
 //! collinear triples as on reflex ones.
 
 use crate::geom::kernel::Coord;
-use crate::geom::kernel::{cross, dot, Point};
+use crate::geom::kernel::{cross, dot};
 use crate::geom::status::{Handle, Status};
 use std::cmp::Ordering;
 

@@ -42,8 +42,8 @@
 //! sorts), one work list, one face scan. With the triangulation, O(n log n) in all.
 
 use super::{Pseudotriangle, Pseudotriangulation};
+use crate::geom::kernel::cross;
 use crate::geom::kernel::Coord;
-use crate::geom::kernel::{cross, Point};
 use crate::geom::polygon::Polygon;
 
 /// No twin: a polygon edge (its other side is outside the polygon).

@@ -89,7 +89,7 @@ use super::mesh::{Broken, Half, Mesh};
 use super::TriangulateError;
 use super::{plain, plain_polygon, HullCounts, Pseudotriangle, Pseudotriangulation};
 use crate::geom::kernel::Coord;
-use crate::geom::kernel::{cmp_angle, cross, Point};
+use crate::geom::kernel::{cmp_angle, cross};
 use crate::geom::polygon::Polygon;
 use std::collections::HashSet;
 

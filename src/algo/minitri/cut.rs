@@ -41,8 +41,8 @@
 use super::degenerate::Degenerate;
 use crate::algo::mesh::Mesh;
 use crate::algo::{plain, TriangulateError};
+use crate::geom::kernel::cross;
 use crate::geom::kernel::Coord;
-use crate::geom::kernel::{cross, Point};
 use crate::geom::polygon::Polygon;
 use std::collections::{HashMap, HashSet};
 

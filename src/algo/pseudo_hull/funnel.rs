@@ -20,7 +20,7 @@
 
 use crate::algo::mesh::Broken;
 use crate::geom::kernel::Coord;
-use crate::geom::kernel::{cross, dot, Point};
+use crate::geom::kernel::{cross, dot};
 use std::collections::VecDeque;
 
 /// A sleeve vertex: the polygon vertex, and the position of its copy in the sleeve.

@@ -104,7 +104,7 @@ fn orientation_matches_exact_rationals_with_mixed_exponents() {
     let mut rng = Rng(42);
     let mut collinear = 0;
     for round in 0..5_000 {
-        let mut coordinate = |rng: &mut Rng| -> Decimal {
+        let coordinate = |rng: &mut Rng| -> Decimal {
             let magnitude = 10f64.powi(rng.int(-8, 2) as i32);
             let v = (rng.next() as f64 / u64::MAX as f64 - 0.5) * 2.0 * magnitude;
             dec(&format!("{v:e}"))
