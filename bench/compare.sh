@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The whole benchmark of the README in one run, one Markdown report:
+# The whole benchmark of docs/benchmarks.md in one run, one Markdown report:
 #   1. MINITRI beside minitri's plain triangulation (ear), the `earcut` crate and the Asano DP on
 #      the same generated inputs (star, maze, bars; n = 10^3 .. 10^6) and the largest
 #      mapbox/earcut fixtures: times, ratios, peak heap per vertex, triangle counts

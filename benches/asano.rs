@@ -1,6 +1,6 @@
 //! The Asano DP on random star-shaped polygons and on convex polygons (its worst case: every
 //! pair is a chord), n = 250 .. 2000; the same families as `bench/polygon.py`.
-//! Run: `cargo bench --bench asano`. Peak memory: `bench/asano.sh` (README, Benchmarks).
+//! Run: `cargo bench --features bench --bench asano`. Peak memory: `bench/asano.sh` (`docs/benchmarks.md`).
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use minitri::algo::{asano, chords::ChordTable};

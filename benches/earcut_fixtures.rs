@@ -20,7 +20,7 @@
 //! earcut, whether the minimum was proved, one run's time) and the totals is printed; the
 //! accepted set is checked against `expected.tsv`.
 //!
-//! Run: `cargo bench --bench earcut_fixtures` (about 2 minutes).
+//! Run: `cargo bench --features bench --bench earcut_fixtures` (about 2 minutes).
 
 mod common;
 

@@ -13,7 +13,7 @@
 //!   bridging (earcut) would grow like n times the number of holes.
 //!
 //! Before timing, the triangle counts of the 64 x 64 square (plain, minimum, earcut) are printed.
-//! Run: `cargo bench --bench holes` (2-3 minutes; `cargo bench --bench holes -- squares`
+//! Run: `cargo bench --features bench --bench holes` (2-3 minutes; `-- squares`
 //! for the first group alone).
 
 mod common;

@@ -6,7 +6,7 @@
 //! Only the triangulation is timed: the polygon is built and validated beforehand; `earcut` gets
 //! the same coordinates as `f64`.
 //!
-//! Run: `cargo bench --bench minitri`. Environment:
+//! Run: `cargo bench --features bench --bench minitri`. Environment:
 //! - `MINITRI_BENCH_MAX_N` (default 100000): the largest size (sizes are 10^3, 10^4, ...).
 //!
 //! The one-run table with peak memory and triangle counts is `benches/compare.rs`.

@@ -11,7 +11,7 @@
 //!   first triangulation and all steps) on random stars and mazes of 10^3 to 3 * 10^5 vertices
 //!   (about 1 s at 10^5, 3 s at 3 * 10^5; see the module docs of `pseudo_hull`).
 //!
-//! Run: `cargo bench --bench pseudo` (about 6 minutes; `-- pseudo_hull` for the last group).
+//! Run: `cargo bench --features bench --bench pseudo` (about 6 minutes; `-- pseudo_hull` for the last group).
 
 mod common;
 

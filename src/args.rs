@@ -141,7 +141,7 @@ pub enum FromFlag {
 /// `--to`.
 #[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
 pub enum ToFlag {
-    /// The JSON document of the spec
+    /// The JSON document: every polygon with its triangles, counts, bounds and warnings
     Json,
     /// A GeoJSON FeatureCollection, one Feature per triangle
     Geojson,
@@ -186,6 +186,19 @@ impl Flags {
     /// prints and exits as clap does (status 2, or 0).
     pub fn from_env() -> Flags {
         let mut cmd = Flags::command_for_env();
+        // clap would suggest `--from` for `--format`; the output format is what is meant most.
+        let format = std::env::args_os()
+            .skip(1)
+            .take_while(|a| a != "--")
+            .any(|a| a == "--format" || a.to_string_lossy().starts_with("--format="));
+        if format {
+            cmd.error(
+                clap::error::ErrorKind::UnknownArgument,
+                "there is no --format: the output format is --to (json, geojson, wkt, svg), \
+                 the input format --from (auto, wkt, geojson, vertices)",
+            )
+            .exit();
+        }
         let matches = cmd.get_matches_mut();
         let flags = Flags::from_arg_matches(&matches).unwrap_or_else(|e| e.format(&mut cmd).exit());
         if flags.labels && flags.to != ToFlag::Svg {

@@ -18,13 +18,15 @@
 //!
 //! Rings: geo-types closes every ring (last coordinate = first); the closing coordinate is dropped,
 //! so input vertex `k` of a ring is its `k`-th coordinate, numbered over the rings in order
-//! (exterior, then interiors), as in `spec/CLI.md`. Any orientation is accepted.
+//! (exterior, then interiors), as on the command line (`docs/cli.md`). Any orientation is accepted.
+//! A consecutive duplicate vertex is dropped, keeping its number: [`polygon_with_warnings`] says
+//! which, and [`Triangulation::input_triangles`] gives triangles in these input numbers.
 //!
 //! Complexity: linear in the number of coordinates (one shortest-decimal formatting each).
 
 use crate::algo::Triangulation;
 use crate::geom::decimal::{Decimal, NumberError};
-use crate::geom::polygon::{AnyPolygon, Polygon, Ring};
+use crate::geom::polygon::{AnyPolygon, Polygon, Ring, Warning};
 use crate::io::read::{ParseError, RawPolygon};
 use crate::pipeline::Error;
 use geo_types::{Coord, CoordNum, LineString, MultiPolygon, Triangle};
@@ -108,6 +110,30 @@ fn valid(raw: &RawPolygon) -> Result<AnyPolygon, Error> {
         .map_err(Error::Invalid)
 }
 
+/// The validated polygon, as `Polygon::try_from`, with the warnings about what validation
+/// changed: each consecutive duplicate vertex dropped (it keeps its input number, which then
+/// appears in no triangle), as the command line prints them.
+///
+/// # Errors
+/// [`Error::Parse`] for a NaN or infinite coordinate, [`Error::Invalid`] with every problem of
+/// an invalid polygon.
+///
+/// # Examples
+/// ```
+/// use geo_types::polygon;
+/// let square = polygon![(x: 0, y: 0), (x: 1, y: 0), (x: 1, y: 0), (x: 1, y: 1), (x: 0, y: 1)];
+/// let (polygon, warnings) = minitri::geo::polygon_with_warnings(&square)?;
+/// assert_eq!((polygon.len(), polygon.input_vertices()), (4, 5));
+/// assert_eq!(warnings.len(), 1);
+/// assert!(warnings[0].to_string().contains("vertex 2 (1, 0) repeats vertex 1"), "{}", warnings[0]);
+/// # Ok::<(), minitri::Error>(())
+/// ```
+pub fn polygon_with_warnings<T: ExactCoord>(
+    polygon: &geo_types::Polygon<T>,
+) -> Result<(Polygon, Vec<Warning>), Error> {
+    Polygon::from_raw_all_errors(&raw(polygon, 0)?).map_err(Error::Invalid)
+}
+
 impl<T: ExactCoord> TryFrom<&geo_types::Polygon<T>> for RawPolygon {
     type Error = Error;
 
@@ -124,7 +150,7 @@ impl<T: ExactCoord> TryFrom<&geo_types::Polygon<T>> for Polygon {
     type Error = Error;
 
     /// The validated polygon on the fast kernel (consecutive duplicate vertices are dropped, as
-    /// [`Polygon::from_raw`] does, without a warning).
+    /// [`Polygon::from_raw`] does, without a warning: [`polygon_with_warnings`] returns them).
     ///
     /// # Errors
     /// [`Error::Parse`] for a NaN or infinite coordinate, [`Error::Invalid`] with every problem

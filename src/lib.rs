@@ -105,11 +105,13 @@ pub mod pipeline;
 pub(crate) mod test_support;
 pub mod verify;
 
-pub use algo::{Algorithm, TriangulateError, Triangulation};
+pub use algo::{Algorithm, Pseudotriangle, Pseudotriangulation, TriangulateError, Triangulation};
 pub use geom::decimal::{Decimal, NumberError};
 pub use geom::kernel::{Coord, Point};
 pub use geom::polygon::{AnyPolygon, Polygon, Ring, Warning};
 pub use geom::validate::InvalidPolygon;
 pub use geom::wide::WidePoint;
 pub use io::read::{Format, ParseError, RawPolygon};
-pub use pipeline::{process, solve, triangulate, triangulate_with, Error, Options, Outcome};
+pub use pipeline::{
+    process, pseudotriangulate, solve, triangulate, triangulate_with, Error, Options, Outcome,
+};

@@ -9,7 +9,7 @@ use anyhow::Context;
 use args::Flags;
 use indicatif::{ProgressBar, ProgressStyle};
 use minitri::batch::{
-    discover, plan, run_document, run_tree, AtomicFile, Observer, Settings, Tally, TreeJob,
+    discover_counting, plan, run_document, run_tree, AtomicFile, Observer, Settings, Tally, TreeJob,
 };
 use std::io::{self, IsTerminal};
 use std::path::Path;
@@ -69,14 +69,20 @@ fn run() -> anyhow::Result<ExitCode> {
             return Ok(ExitCode::from(2));
         }
     }
-    let inputs = discover(&config.inputs, out_dir);
+    let (inputs, skipped) = discover_counting(&config.inputs, out_dir);
+    // Waiting for a terminal to type into would otherwise look like a hang.
+    let typing = inputs.iter().flatten().any(|i| i.is_stdin()) && io::stdin().is_terminal();
+    if typing && !config.quiet {
+        eprintln!("minitri: reading standard input; Ctrl-D to end (minitri --help for usage)");
+    }
     let settings = Settings {
         options: config.options.clone(),
         from: config.from,
         quiet: config.quiet,
     };
-    let progress = Progress::new(!config.quiet && io::stderr().is_terminal(), inputs.len());
-    let tally = match (out_dir, &config.output) {
+    let show_progress = !config.quiet && !typing && io::stderr().is_terminal();
+    let progress = Progress::new(show_progress, inputs.len());
+    let mut tally = match (out_dir, &config.output) {
         (Some(out), _) => {
             let found: Vec<_> = inputs
                 .iter()
@@ -139,6 +145,7 @@ fn run() -> anyhow::Result<ExitCode> {
         }
     };
     progress.bar.finish_and_clear();
+    tally.skipped = skipped;
     let batch =
         out_dir.is_some() || config.inputs.len() > 1 || config.inputs.iter().any(|p| p.is_dir());
     if batch && !config.quiet {
@@ -152,7 +159,7 @@ fn is_tree(inputs: &[std::path::PathBuf], out: &Path) -> bool {
     inputs.len() > 1 || inputs.iter().any(|p| p.is_dir()) || out.is_dir()
 }
 
-/// The exit status of the spec: 3 a `--verify` problem, 1 a failure, 0 all processed.
+/// The exit status (docs/cli.md): 3 a `--verify` problem, 1 a failure, 0 all processed.
 fn exit_code(tally: &Tally) -> ExitCode {
     if tally.verify_failures > 0 {
         ExitCode::from(3)

@@ -193,7 +193,30 @@ pub fn triangulate<P: Coord>(
 /// `algorithm` and `verify` are not used here).
 ///
 /// # Errors
-/// [`TriangulateError`] when the algorithm does not apply (holes, size).
+/// [`TriangulateError`] when the algorithm does not apply (holes, size), and
+/// [`TriangulateError::WrongFunction`] for [`Algorithm::Pseudo`] and [`Algorithm::PseudoHull`],
+/// which make pseudotriangulations: call [`pseudotriangulate`] for them.
+///
+/// # Examples
+/// ```
+/// use geo_types::polygon;
+/// use minitri::{Algorithm, Options, Polygon};
+/// let square = polygon![(x: 0, y: 0), (x: 2, y: 0), (x: 2, y: 2), (x: 0, y: 2)];
+/// let polygon = Polygon::try_from(&square)?;
+/// let options = Options::default();
+/// for algorithm in [Algorithm::Minitri, Algorithm::Asano, Algorithm::Ear] {
+///     let t = minitri::triangulate_with(&polygon, algorithm, &options)?;
+///     assert_eq!((t.algorithm, t.triangles.len()), (algorithm, 2));
+/// }
+/// // A pseudotriangulation is no triangulation: the error says which function makes it.
+/// let error = minitri::triangulate_with(&polygon, Algorithm::Pseudo, &options).unwrap_err();
+/// assert_eq!(
+///     error.to_string(),
+///     "the pseudo algorithm makes a pseudotriangulation, not a triangulation: \
+///      call minitri::pseudotriangulate for it"
+/// );
+/// # Ok::<(), minitri::Error>(())
+/// ```
 pub fn triangulate_with<P: Coord>(
     polygon: &Polygon<P>,
     algorithm: Algorithm,
@@ -201,7 +224,13 @@ pub fn triangulate_with<P: Coord>(
 ) -> Result<Triangulation, TriangulateError> {
     match algorithm {
         Algorithm::Asano => asano::triangulate(polygon, options.dp_limit),
-        Algorithm::Ear | Algorithm::Pseudo | Algorithm::PseudoHull => ear::triangulate(polygon),
+        Algorithm::Ear => ear::triangulate(polygon),
+        Algorithm::Pseudo | Algorithm::PseudoHull => Err(TriangulateError::WrongFunction {
+            algorithm,
+            makes: "a pseudotriangulation",
+            asked: "a triangulation",
+            call: "pseudotriangulate",
+        }),
         Algorithm::Minitri => {
             let deadline = options
                 .time_limit
@@ -226,6 +255,52 @@ impl AnyPolygon {
     /// [`Error::Triangulate`] when the chosen algorithm does not apply.
     pub fn solve(&self, options: &Options) -> Result<Solved, Error> {
         crate::with_polygon!(self, p => solve(p, options))
+    }
+}
+
+/// Pseudotriangulates a valid polygon: [`Algorithm::Pseudo`], a minimal pseudotriangulation of
+/// the polygon inside its plain (`ear`) triangulation (Rote, Wang, Wang & Xu, Section 5), or
+/// [`Algorithm::PseudoHull`], a minimum pseudotriangulation of the convex hull containing every
+/// polygon edge (their Theorem 6). Vertex numbers are stored indices, as in [`Triangulation`];
+/// [`Pseudotriangulation::input_faces`] gives them in input numbering.
+///
+/// # Errors
+/// [`TriangulateError::WrongFunction`] for the triangulation algorithms (call [`triangulate`]);
+/// [`TriangulateError::PseudoHullIncomplete`] should a self-check of the construction fail.
+///
+/// # Examples
+/// ```
+/// use geo_types::polygon;
+/// use minitri::{Algorithm, Polygon};
+/// // A quadrilateral with one reflex vertex is itself a pseudotriangle: one face.
+/// let dart = polygon![(x: 0, y: 0), (x: 4, y: 0), (x: 2, y: 1), (x: 0, y: 4)];
+/// let polygon = Polygon::try_from(&dart)?;
+/// let p = minitri::pseudotriangulate(&polygon, Algorithm::Pseudo)?;
+/// assert_eq!((p.faces.len(), p.faces[0].corners.len()), (1, 3));
+/// // The hull's version also cuts the pocket outside the reflex vertex: n - 2 = 2 faces.
+/// let hull = minitri::pseudotriangulate(&polygon, Algorithm::PseudoHull)?;
+/// assert_eq!(hull.faces.len(), 2);
+/// assert!(minitri::pseudotriangulate(&polygon, Algorithm::Minitri).is_err());
+/// # Ok::<(), minitri::Error>(())
+/// ```
+pub fn pseudotriangulate<P: Coord>(
+    polygon: &Polygon<P>,
+    algorithm: Algorithm,
+) -> Result<Pseudotriangulation, TriangulateError> {
+    match algorithm {
+        Algorithm::PseudoHull => pseudo_hull::pseudotriangulate(polygon),
+        Algorithm::Pseudo => Ok(pseudo::minimal(
+            polygon,
+            &ear::triangulate(polygon)?.triangles,
+        )),
+        Algorithm::Minitri | Algorithm::Asano | Algorithm::Ear => {
+            Err(TriangulateError::WrongFunction {
+                algorithm,
+                makes: "a triangulation",
+                asked: "a pseudotriangulation",
+                call: "triangulate",
+            })
+        }
     }
 }
 

@@ -140,7 +140,7 @@ fn a_directory_is_mirrored_into_an_output_directory() {
         "5 features, one with 2 parts"
     );
     assert!(
-        err.contains("3 files, 8 polygons, ")
+        err.contains("3 files (1 skipped: no input format's extension), 8 polygons triangulated, ")
             && err.contains(" saved against n + 2w - 2), 0 errors, "),
         "summary: {err}"
     );
@@ -184,7 +184,7 @@ fn inputs_with_the_same_stem_keep_their_full_names_and_nothing_is_overwritten() 
     assert_eq!(code, 0, "{err}");
     let (code, _, err) = run_in(root, &["in", "-o", "in/out"], None);
     assert_eq!(code, 0, "{err}");
-    assert!(err.contains("3 files, 3 polygons"), "{err}");
+    assert!(err.contains("3 files, 3 polygons triangulated"), "{err}");
 }
 
 #[test]
@@ -222,7 +222,7 @@ fn a_bad_file_among_good_ones_is_reported_and_the_others_are_written() {
         "{err}"
     );
     assert!(
-        err.contains("5 files, 6 polygons, ") && err.contains(", 3 errors, "),
+        err.contains("5 files, 4 polygons triangulated, ") && err.contains(", 3 errors, "),
         "{err}"
     );
     assert_eq!(
@@ -447,7 +447,8 @@ fn quiet_silences_the_summary_and_bad_command_lines_exit_2() {
     assert_eq!(code, 0);
     assert!(
         err.starts_with(
-            "minitri: 2 files, 2 polygons, 6 triangles (5 saved against n + 2w - 2), 0 errors, "
+            "minitri: 2 files, 2 polygons triangulated, 6 triangles (5 saved against n + 2w - 2), \
+             0 errors, "
         ),
         "{err}"
     );

@@ -575,3 +575,255 @@ fn the_readme_example_is_what_the_binary_prints() {
     assert_eq!(code, 0, "{err}");
     assert_eq!(out, readme[start..end], "README example out of date");
 }
+
+/// The user-facing documents: README.md, ARCHITECTURE.md and every `docs/*.md`, with their text.
+fn documents() -> Vec<(std::path::PathBuf, String)> {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut paths = vec![root.join("README.md"), root.join("ARCHITECTURE.md")];
+    let mut docs: Vec<_> = std::fs::read_dir(root.join("docs"))
+        .expect("docs/")
+        .map(|entry| entry.expect("docs/ entry").path())
+        .filter(|p| p.extension().is_some_and(|e| e == "md"))
+        .collect();
+    docs.sort();
+    paths.extend(docs);
+    paths
+        .into_iter()
+        .map(|p| {
+            let text = std::fs::read_to_string(&p).unwrap_or_else(|e| panic!("{p:?}: {e}"));
+            (p, text)
+        })
+        .collect()
+}
+
+/// Names of material that lives outside the repository (the project's development notes), which
+/// no user-facing text may point to.
+const OUTSIDE: [&str; 7] = [
+    "../",
+    "shared/",
+    "DESIGN.md",
+    "spec/CLI.md",
+    "papers in",
+    "papers/",
+    "the spec",
+];
+
+/// The anchor GitHub gives a Markdown heading: lower case, punctuation dropped, spaces as `-`.
+fn anchor(heading: &str) -> String {
+    heading
+        .trim()
+        .to_lowercase()
+        .chars()
+        .filter(|c| c.is_alphanumeric() || *c == ' ' || *c == '-' || *c == '_')
+        .map(|c| if c == ' ' { '-' } else { c })
+        .collect()
+}
+
+/// The anchors of a Markdown text's headings.
+fn anchors(text: &str) -> Vec<String> {
+    text.lines()
+        .filter(|l| l.starts_with('#'))
+        .map(|l| anchor(l.trim_start_matches('#')))
+        .collect()
+}
+
+/// Every relative link of README.md, ARCHITECTURE.md and docs/*.md names a file of the
+/// repository (and a heading of it, after `#`), and no text names anything outside the
+/// repository; a link may climb out of `docs/` (`../ARCHITECTURE.md`), never out of the root.
+#[test]
+fn the_documents_link_only_to_files_of_the_repository() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .canonicalize()
+        .expect("root");
+    for (path, text) in documents() {
+        let dir = path.parent().expect("a directory");
+        let mut rest = text.clone();
+        for target in markdown_links(&text) {
+            rest = rest.replace(&format!("]({target})"), "]()");
+            if target.contains("://") || target.starts_with("mailto:") {
+                continue;
+            }
+            let (file, fragment) = match target.split_once('#') {
+                Some((file, fragment)) => (file, Some(fragment)),
+                None => (target.as_str(), None),
+            };
+            let linked = if file.is_empty() {
+                path.clone()
+            } else {
+                dir.join(file)
+            };
+            let resolved = linked
+                .canonicalize()
+                .unwrap_or_else(|_| panic!("{path:?}: link to a missing file: {target}"));
+            assert!(
+                resolved.starts_with(&root),
+                "{path:?}: link outside the repository: {target}"
+            );
+            if let Some(fragment) = fragment {
+                let linked_text = std::fs::read_to_string(&resolved).expect("linked file");
+                assert!(
+                    anchors(&linked_text).iter().any(|a| a == fragment),
+                    "{path:?}: link to a missing heading: {target}"
+                );
+            }
+        }
+        for name in OUTSIDE {
+            assert!(
+                !rest.contains(name),
+                "{path:?} refers outside the repository: {name:?}"
+            );
+        }
+    }
+}
+
+/// The targets of the Markdown links `[text](target)` of a text.
+fn markdown_links(text: &str) -> Vec<String> {
+    text.match_indices("](")
+        .filter_map(|(i, _)| {
+            let target = &text[i + 2..];
+            target.find(')').map(|end| target[..end].to_string())
+        })
+        .filter(|t| !t.contains(char::is_whitespace))
+        .collect()
+}
+
+/// `--help` and `--man` name nothing outside the repository either.
+#[test]
+fn help_and_man_page_refer_to_nothing_outside_the_repository() {
+    for flag in ["--help", "--man"] {
+        let (code, out, err) = run(&[flag], None);
+        assert_eq!(code, 0, "{err}");
+        assert!(out.len() > 1000, "{flag}: {out}");
+        for name in OUTSIDE {
+            assert!(!out.contains(name), "{flag} refers to {name:?}");
+        }
+    }
+}
+
+/// A terminal on standard input is told how to end it, and no progress bar is drawn while one
+/// types (`script`, of util-linux, runs the binary on a pseudo-terminal; Ctrl-D is byte 4).
+/// Piped input gets no such line.
+#[test]
+fn typing_on_a_terminal_is_told_how_to_end_it() {
+    use std::io::Write;
+    let bin = assert_cmd::cargo::cargo_bin("minitri");
+    let mut child = std::process::Command::new("script")
+        .args(["-qec", &bin.display().to_string(), "/dev/null"])
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .spawn()
+        .expect("`script` (util-linux) runs the binary on a terminal");
+    let mut stdin = child.stdin.take().expect("stdin");
+    stdin
+        .write_all(b"POLYGON ((0 0, 1 0, 0 1))\n\x04")
+        .expect("typed");
+    drop(stdin);
+    let out = child.wait_with_output().expect("script ran");
+    let screen = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        screen.contains("minitri: reading standard input; Ctrl-D to end"),
+        "{screen}"
+    );
+    assert!(screen.contains("\"triangle_count\": 1"), "{screen}");
+    assert!(!screen.contains("files,"), "no progress bar: {screen}");
+    let (code, _, err) = run(&[], Some("POLYGON ((0 0, 1 0, 0 1))"));
+    assert_eq!((code, err.as_str()), (0, ""));
+}
+
+/// A directory without any input file is an error naming it (exit 1), and files of no input
+/// format below a directory are counted in the summary.
+#[test]
+fn a_directory_without_input_files_is_named_and_skipped_files_are_counted() {
+    let dir = tempfile::tempdir().expect("temporary directory");
+    std::fs::write(dir.path().join("notes.md"), "not a polygon").expect("written");
+    std::fs::write(dir.path().join("photo.png"), "not either").expect("written");
+    let name = dir.path().display().to_string();
+    let (code, out, err) = run(&[&name], None);
+    assert_eq!(code, 1, "{err}");
+    assert!(
+        err.contains(&format!(
+            "minitri: {name}: cannot read: no input file found in this directory (2 other files; \
+             inputs end in .wkt, .geojson"
+        )),
+        "{err}"
+    );
+    assert_eq!(json(&out)["errors"][0]["source"], name.as_str());
+    std::fs::copy(
+        fixtures().join("valid/u_shape.wkt"),
+        dir.path().join("u.wkt"),
+    )
+    .expect("copied");
+    let (code, _, err) = run(&[&name], None);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        err.contains("minitri: 1 file (2 skipped: no input format's extension), 1 polygon triangulated, 5 triangles"),
+        "{err}"
+    );
+}
+
+/// The summary counts the error lines printed (a polygon with two problems gives two) and only
+/// the polygons triangulated.
+#[test]
+fn the_summary_counts_error_lines_and_triangulated_polygons() {
+    let dir = tempfile::tempdir().expect("temporary directory");
+    // Polygon 0 is fine; polygon 1 has two holes outside it: two lines, two errors.
+    std::fs::write(
+        dir.path().join("two.wkt"),
+        "MULTIPOLYGON (((0 0, 1 0, 0 1)), ((0 0, 1 0, 0 1), (5 5, 6 5, 5 6), (7 7, 8 7, 7 8)))",
+    )
+    .expect("written");
+    let name = dir.path().display().to_string();
+    let (code, _, err) = run(&[&name], None);
+    assert_eq!(code, 1, "{err}");
+    assert!(
+        err.contains("two.wkt: polygon 1: hole 1 lies outside the outer ring\n"),
+        "{err}"
+    );
+    assert!(
+        err.contains("two.wkt: polygon 1: hole 2 lies outside the outer ring\n"),
+        "{err}"
+    );
+    assert!(
+        err.contains("minitri: 1 file, 1 polygon triangulated, 1 triangle (0 saved against n + 2w - 2), 2 errors, "),
+        "{err}"
+    );
+}
+
+/// `--format` is answered with the flags that exist: `--to` for the output, `--from` for the
+/// input (exit 2).
+#[test]
+fn format_points_to_to_and_from() {
+    for args in [&["--format", "svg", "x.wkt"][..], &["--format=svg"][..]] {
+        let (code, _, err) = run(args, None);
+        assert_eq!(code, 2, "{err}");
+        assert!(
+            err.contains("there is no --format: the output format is --to (json, geojson, wkt, svg), the input format --from"),
+            "{err}"
+        );
+    }
+}
+
+/// Piped CSV with an `x,y` header is read as a vertex list, the header skipped.
+#[test]
+fn piped_csv_with_a_header_is_a_vertex_list() {
+    let (code, out, err) = run(&[], Some("x,y\n0,0\n2,0\n1,0.5\n2,2\n0,2\n"));
+    assert_eq!(code, 0, "{err}");
+    let p = &json(&out)["polygons"][0];
+    assert_eq!(
+        (p["vertices"].as_u64(), p["input_vertices"].as_u64()),
+        (Some(5), Some(5))
+    );
+    let (code, out, err) = run(
+        &["--from", "vertices"],
+        Some("lon, lat\r\n0,0\r\n1,0\r\n0,1\r\n"),
+    );
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(json(&out)["polygons"][0]["triangle_count"], 1);
+    // Only the first line may be a header.
+    let (code, _, err) = run(&["--from", "vertices"], Some("0,0\nx,y\n1,0\n0,1\n"));
+    assert_eq!(code, 1);
+    assert!(
+        err.contains("line 2, column 1: `x` is not a number"),
+        "{err}"
+    );
+}

@@ -1,6 +1,6 @@
-//! The error catalogue of the README, run against the real binary: every fixture of
+//! The error catalogue of `docs/errors.md`, run against the real binary: every fixture of
 //! `fixtures/invalid/` gives exactly the message of its table row (from a file and from standard
-//! input), and the generated 100 MB inputs give the messages of the second table. The README is
+//! input), and the generated 100 MB inputs give the messages of the second table. That file is
 //! the single source of the expected messages, so it cannot drift from the tool.
 
 use crate::util::{fixtures, json, minitri, outcome};
@@ -8,17 +8,17 @@ use serde_json::Value;
 use std::collections::BTreeSet;
 use std::path::Path;
 
-/// One row of a README table: its cells, code spans unquoted.
+/// One row of a table of `docs/errors.md`: its cells, code spans unquoted.
 type Row = Vec<String>;
 
-/// The rows of the first table after the heading `heading` in README.md (header and separator
-/// left out).
-fn readme_table(heading: &str) -> Vec<Row> {
-    let readme = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md"))
-        .expect("README.md");
-    let section = readme
+/// The rows of the first table after the heading `heading` in `docs/errors.md` (header and
+/// separator left out).
+fn catalogue_table(heading: &str) -> Vec<Row> {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/errors.md");
+    let catalogue = std::fs::read_to_string(&path).expect("docs/errors.md");
+    let section = catalogue
         .split_once(&format!("\n{heading}\n"))
-        .unwrap_or_else(|| panic!("README has no heading {heading:?}"))
+        .unwrap_or_else(|| panic!("docs/errors.md has no heading {heading:?}"))
         .1;
     section
         .lines()
@@ -85,8 +85,8 @@ fn json_error(source: &str, message: &str) -> Value {
 }
 
 #[test]
-fn every_row_of_the_readme_catalogue_is_exactly_what_the_binary_says() {
-    let rows = readme_table("### Error catalogue");
+fn every_row_of_the_error_catalogue_is_exactly_what_the_binary_says() {
+    let rows = catalogue_table("## Error catalogue");
     assert!(rows.len() >= 40, "{} rows", rows.len());
     let listed: Vec<&str> = rows.iter().map(|row| row[1].as_str()).collect();
     let unique: BTreeSet<&str> = listed.iter().copied().collect();
@@ -242,7 +242,7 @@ fn generate(path: &Path, head: &str, unit: &str, tail: &str, size: usize) {
 #[test]
 fn hundred_megabyte_single_lines_are_rejected_with_a_short_message() {
     const SIZE: usize = 100_000_000;
-    // (file name as in the README table, head, repeated unit, tail)
+    // (file name as in the docs/errors.md table, head, repeated unit, tail)
     let inputs = [
         ("number.wkt", "POLYGON ((0 ", "1", "))"),
         ("number.txt", "0 ", "1", "\n"),
@@ -258,18 +258,18 @@ fn hundred_megabyte_single_lines_are_rejected_with_a_short_message() {
         ("garbage.txt", "", "x", ""),
         ("garbage.geojson", r#"{"type":""#, "x", ""),
     ];
-    let table = readme_table("### Inputs too large to store");
+    let table = catalogue_table("## Inputs too large to store");
     assert_eq!(
         table.len(),
         inputs.len(),
-        "one README row per generated input"
+        "one docs/errors.md row per generated input"
     );
     let dir = tempfile::tempdir().unwrap();
     for (name, head, unit, tail) in inputs {
         let row = table
             .iter()
             .find(|row| row[0].starts_with(&format!("{name}: ")))
-            .unwrap_or_else(|| panic!("{name}: no README row"));
+            .unwrap_or_else(|| panic!("{name}: no docs/errors.md row"));
         let path = dir.path().join(name);
         generate(&path, head, unit, tail, SIZE);
         assert_eq!(std::fs::metadata(&path).unwrap().len() as usize, SIZE);

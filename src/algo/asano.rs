@@ -46,7 +46,7 @@ const INF: u16 = u16::MAX;
 /// Estimated memory and time of the DP on `n` vertices, in words.
 pub fn estimate(n: usize) -> (String, String) {
     let bytes = 8.0 * (n as f64).powi(2) + (n as f64).powi(2) / 8.0;
-    // Measured end to end on convex polygons, the worst case: about 1.3 ns per step (README).
+    // Measured end to end on convex polygons, the worst case: about 1.3 ns per step (`docs/benchmarks.md`).
     let seconds = 1.3e-9 * (n as f64).powi(3) / 6.0;
     let memory = if bytes >= 1e9 {
         format!("{:.1} GB", bytes / 1e9)

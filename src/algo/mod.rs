@@ -64,6 +64,56 @@ impl Algorithm {
     }
 }
 
+impl Triangulation {
+    /// The triangles in INPUT vertex numbers, the numbering of the command line's output: 0-based
+    /// over all rings in input order (outer ring first), each ring without its closing vertex,
+    /// a dropped duplicate vertex keeping its number (it then appears in no triangle). The
+    /// stored indices of [`Triangulation::triangles`] skip dropped duplicates, so they differ
+    /// from these once a duplicate was dropped; [`crate::Polygon::id`] maps one vertex.
+    ///
+    /// # Examples
+    /// ```
+    /// use geo_types::polygon;
+    /// // Vertex 1 repeats vertex 0: it is dropped, and the square keeps input numbers 0, 2, 3, 4.
+    /// let square = polygon![(x: 0, y: 0), (x: 0, y: 0), (x: 1, y: 0), (x: 1, y: 1), (x: 0, y: 1)];
+    /// let polygon = minitri::Polygon::try_from(&square)?;
+    /// let t = minitri::triangulate(&polygon, minitri::Algorithm::Minitri)?;
+    /// let used: std::collections::BTreeSet<usize> =
+    ///     t.input_triangles(&polygon).into_iter().flatten().collect();
+    /// assert_eq!(used.into_iter().collect::<Vec<_>>(), [0, 2, 3, 4]);
+    /// assert!(t.triangles.iter().flatten().all(|&i| i < 4)); // stored: 0..4
+    /// # Ok::<(), minitri::Error>(())
+    /// ```
+    pub fn input_triangles(&self, polygon: &crate::Polygon) -> Vec<[usize; 3]> {
+        input_numbers(polygon, &self.triangles)
+    }
+
+    /// The degenerate triangles `[a, b, c]` in input vertex numbers, as
+    /// [`Triangulation::input_triangles`].
+    pub fn input_degenerate(&self, polygon: &crate::Polygon) -> Vec<[usize; 3]> {
+        input_numbers(polygon, &self.degenerate)
+    }
+}
+
+/// Triples of stored indices as input vertex numbers.
+fn input_numbers(polygon: &crate::Polygon, triples: &[[usize; 3]]) -> Vec<[usize; 3]> {
+    triples.iter().map(|t| t.map(|i| polygon.id(i))).collect()
+}
+
+impl Pseudotriangulation {
+    /// The faces in INPUT vertex numbers (`cycle`, `corners`), as
+    /// [`Triangulation::input_triangles`].
+    pub fn input_faces(&self, polygon: &crate::Polygon) -> Vec<Pseudotriangle> {
+        self.faces
+            .iter()
+            .map(|f| Pseudotriangle {
+                cycle: f.cycle.iter().map(|&i| polygon.id(i)).collect(),
+                corners: f.corners.iter().map(|&i| polygon.id(i)).collect(),
+            })
+            .collect()
+    }
+}
+
 impl fmt::Display for Algorithm {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(self.name())
@@ -326,6 +376,19 @@ pub enum TriangulateError {
         vertex: usize,
         /// Its coordinates, as written in the input.
         point: String,
+    },
+    /// `triangulate` was asked for a pseudotriangulation, or `pseudotriangulate` for a
+    /// triangulation: the other function answers it.
+    #[error("the {algorithm} algorithm makes {makes}, not {asked}: call minitri::{call} for it")]
+    WrongFunction {
+        /// The algorithm asked for.
+        algorithm: Algorithm,
+        /// What it makes ("a pseudotriangulation" or "a triangulation").
+        makes: &'static str,
+        /// What the function called returns.
+        asked: &'static str,
+        /// The function to call instead.
+        call: &'static str,
     },
     /// The polygon is too large for an algorithm with polynomial memory.
     #[error("the asano dynamic program needs about {memory} and {time} for {n} vertices, above its limit of {limit} vertices; use --algorithm minitri, or raise the limit with --dp-limit")]

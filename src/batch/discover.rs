@@ -60,17 +60,39 @@ pub struct Unreadable {
 /// # Ok::<(), String>(())
 /// ```
 pub fn discover(paths: &[PathBuf], skip: Option<&Path>) -> Vec<Result<Input, Unreadable>> {
+    discover_counting(paths, skip).0
+}
+
+/// [`discover`], and how many files below the directories were skipped, their names ending in
+/// no input format's extension ([`EXTENSIONS`]). A directory holding no input file at all is an
+/// [`Unreadable`] entry saying so (the run then exits with status 1, naming it).
+pub fn discover_counting(
+    paths: &[PathBuf],
+    skip: Option<&Path>,
+) -> (Vec<Result<Input, Unreadable>>, usize) {
     let skip = skip.and_then(|s| fs::canonicalize(s).ok());
     let mut out = Vec::new();
+    let mut skipped = 0;
     for path in paths {
         if path.is_dir() {
             let mut files = Vec::new();
-            if let Err(e) = walk(path, skip.as_deref(), &mut files) {
+            let mut unknown = 0;
+            if let Err(e) = walk(path, skip.as_deref(), &mut files, &mut unknown) {
                 out.push(Err(Unreadable {
                     name: path.display().to_string(),
                     message: format!("cannot read: {e}"),
                 }));
+            } else if files.is_empty() {
+                out.push(Err(Unreadable {
+                    name: path.display().to_string(),
+                    message: format!(
+                        "no input file found in this directory ({unknown} other file{}; inputs end in .{})",
+                        if unknown == 1 { "" } else { "s" },
+                        EXTENSIONS.join(", .")
+                    ),
+                }));
             }
+            skipped += unknown;
             files.sort();
             out.extend(files.into_iter().map(|file| {
                 let relative = file.strip_prefix(path).unwrap_or(&file).to_path_buf();
@@ -87,24 +109,32 @@ pub fn discover(paths: &[PathBuf], skip: Option<&Path>) -> Vec<Result<Input, Unr
             }));
         }
     }
-    out
+    (out, skipped)
 }
 
-/// Every file below `dir` with a known extension, not entering `skip`.
-fn walk(dir: &Path, skip: Option<&Path>, files: &mut Vec<PathBuf>) -> io::Result<()> {
+/// Every file below `dir` with a known extension, not entering `skip`; `unknown` counts the
+/// other files.
+fn walk(
+    dir: &Path,
+    skip: Option<&Path>,
+    files: &mut Vec<PathBuf>,
+    unknown: &mut usize,
+) -> io::Result<()> {
     if skip.is_some_and(|s| fs::canonicalize(dir).is_ok_and(|d| d == s)) {
         return Ok(());
     }
     for entry in fs::read_dir(dir)? {
         let path = entry?.path();
         if path.is_dir() {
-            walk(&path, skip, files)?;
+            walk(&path, skip, files, unknown)?;
         } else if path
             .extension()
             .and_then(|e| e.to_str())
             .is_some_and(|e| EXTENSIONS.contains(&e.to_ascii_lowercase().as_str()))
         {
             files.push(path);
+        } else {
+            *unknown += 1;
         }
     }
     Ok(())

@@ -19,7 +19,7 @@ pub mod run;
 mod tally;
 
 pub use atomic::{exit_removing_temporaries, write_atomically, AtomicFile};
-pub use discover::{discover, Input, Unreadable, EXTENSIONS};
+pub use discover::{discover, discover_counting, Input, Unreadable, EXTENSIONS};
 pub use plan::plan;
 pub use run::{run_document, run_tree, DocumentReport, Observer, Settings, Silent, TreeJob};
 pub use tally::{Summary, Tally};

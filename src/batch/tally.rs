@@ -21,9 +21,12 @@ pub struct Tally {
     /// Over the triangulated polygons, the sum of (n + 2w - 2) - triangles: what the minimum
     /// saves against any plain triangulation.
     pub saved: usize,
-    /// Failures: polygons that could not be triangulated, inputs (or parts) that could not be read,
-    /// outputs that could not be written.
+    /// Error lines reported: one per problem of a polygon that could not be triangulated (an
+    /// invalid polygon may have several), per input (or part) that could not be read, per output
+    /// that could not be written.
     pub errors: usize,
+    /// Files of directory inputs skipped because their names end in no input format's extension.
+    pub skipped: usize,
     /// Triangulated polygons whose `--verify` report is not ok.
     pub verify_failures: usize,
 }
@@ -50,7 +53,7 @@ impl Tally {
                 }
             }
             (Ok(_), None) => {}
-            (Err(_), _) => self.errors += 1,
+            (Err(e), _) => self.errors += e.messages().len().max(1),
         }
     }
 
@@ -63,6 +66,7 @@ impl Tally {
         self.pseudotriangles += other.pseudotriangles;
         self.saved += other.saved;
         self.errors += other.errors;
+        self.skipped += other.skipped;
         self.verify_failures += other.verify_failures;
     }
 
@@ -75,8 +79,10 @@ impl Tally {
     }
 }
 
-/// The summary line: `3 files, 120 polygons, 1402 triangles (318 saved against n + 2w - 2),
-/// 2 errors, 0.41 s`.
+/// The summary line: `3 files, 120 polygons triangulated, 1402 triangles (318 saved against
+/// n + 2w - 2), 2 errors, 0.41 s`, with `(1 skipped: ...)` after the files when a directory held
+/// files of no input format. The polygons are those triangulated (not those rejected), the
+/// errors are the error lines printed.
 #[derive(Clone, Copy, Debug)]
 pub struct Summary {
     tally: Tally,
@@ -87,12 +93,16 @@ impl fmt::Display for Summary {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let t = &self.tally;
         let plural = |n: usize, word: &str| format!("{n} {word}{}", if n == 1 { "" } else { "s" });
-        write!(
-            f,
-            "{}, {}, ",
-            plural(t.files, "file"),
-            plural(t.polygons, "polygon"),
-        )?;
+        write!(f, "{}", plural(t.files, "file"))?;
+        if t.skipped > 0 {
+            write!(f, " ({} skipped: no input format's extension)", t.skipped)?;
+        }
+        let done = if t.triangles == 0 && t.pseudotriangles > 0 {
+            "pseudotriangulated"
+        } else {
+            "triangulated"
+        };
+        write!(f, ", {} {done}, ", plural(t.solved, "polygon"))?;
         if t.triangles > 0 || t.pseudotriangles == 0 {
             write!(
                 f,
@@ -126,11 +136,21 @@ mod tests {
             pseudotriangles: 0,
             saved: 5,
             errors: 2,
+            skipped: 0,
             verify_failures: 0,
         };
         assert_eq!(
             tally.summary(Duration::from_millis(1234)).to_string(),
-            "3 files, 1 polygon, 5 triangles (5 saved against n + 2w - 2), 2 errors, 1.23 s"
+            "3 files, 1 polygon triangulated, 5 triangles (5 saved against n + 2w - 2), 2 errors, 1.23 s"
+        );
+        let skipping = Tally {
+            skipped: 4,
+            ..tally
+        };
+        assert_eq!(
+            skipping.summary(Duration::from_millis(1234)).to_string(),
+            "3 files (4 skipped: no input format's extension), 1 polygon triangulated, \
+             5 triangles (5 saved against n + 2w - 2), 2 errors, 1.23 s"
         );
         let pseudo = Tally {
             triangles: 0,
@@ -140,7 +160,7 @@ mod tests {
         };
         assert_eq!(
             pseudo.summary(Duration::from_millis(10)).to_string(),
-            "3 files, 1 polygon, 4 pseudotriangles, 2 errors, 0.01 s"
+            "3 files, 1 polygon pseudotriangulated, 4 pseudotriangles, 2 errors, 0.01 s"
         );
     }
 }

@@ -31,7 +31,7 @@
 //! cones may still see a vertex: O(n^2) in the worst case (every reflex vertex seeing most of the
 //! polygon in two opposite directions), near-linear on typical polygons (on random star polygons
 //! about 40-50 triangle visits per vertex from 10^4 to 10^6 vertices; see [`super::expansion`]
-//! and the README's benchmarks). The paper's O(n log^2 n) worst case (polygon cutting and ray
+//! and `docs/benchmarks.md`). The paper's O(n log^2 n) worst case (polygon cutting and ray
 //! shooting) is not implemented.
 
 use super::expansion::{double_cone, Mesh, Workspace};

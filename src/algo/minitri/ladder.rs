@@ -2,7 +2,7 @@
 //!
 //! In a long corridor the triangles across it (rungs) nest along its whole length, each rung's
 //! gap is a range asked for, and Valiente's method scans each of them: Theta(n^2) positions
-//! (the bars and the snake of the README's benchmarks). This module removes the repetition
+//! (the bars and the snake of `docs/benchmarks.md`). This module removes the repetition
 //! without changing a single value.
 //!
 //! A scan (weighted interval scheduling over a range, left to right) is max-plus linear: what

@@ -50,7 +50,7 @@
 //! by one scan of its span (in endpoint positions of its component): O(sum of spans), which is
 //! Valiente's O(total chord length), near-linear when chords are local, O(K^2) when many long
 //! chords nest inside each other in one crossing component (the triangles across a long
-//! corridor: the "bars" and "snake" benchmarks of the README). That case is what
+//! corridor: the "bars" and "snake" benchmarks of `docs/benchmarks.md`). That case is what
 //! [`super::ladder`] removes: a range asked for with few values read across its ends is a
 //! level, its scan a max-plus matrix built once, and every longer range jumps over it. On bars
 //! the positions scanned per position stay flat (50 to 64 from 100 to 1600 columns, against

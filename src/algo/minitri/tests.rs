@@ -731,7 +731,7 @@ fn circle_of(chords: Vec<(usize, usize)>) -> Circle {
 
 /// On corridors the levels make step 3's scans linear: positions scanned per component
 /// position stay flat as the bars and the snake grow, where plain scans grow with the length
-/// (`super::ladder`; the bars benchmark of the README). Same answers, by construction and as
+/// (`super::ladder`; the bars benchmark of `docs/benchmarks.md`). Same answers, by construction and as
 /// checked here.
 #[test]
 fn levels_make_corridor_scans_linear() {

@@ -37,7 +37,7 @@ pub enum Format {
     Wkt,
     /// GeoJSON geometry, Feature, FeatureCollection, or newline-delimited GeoJSON.
     GeoJson,
-    /// One `x y` or `x,y` vertex per line (see the README).
+    /// One `x y` or `x,y` vertex per line (see `docs/cli.md`).
     Vertices,
 }
 
@@ -151,7 +151,24 @@ pub fn detect_start(extension: Option<&str>, start: &str) -> Option<Format> {
             .map(str::trim_start)
             .any(|l| !l.is_empty() && !l.starts_with('#'))
     };
-    by_extension(extension).or_else(|| meaningful().then(|| detect_content(start)))
+    // A first line cut off at the end of `start` that may still become a CSV header (`x,y`)
+    // is decided on more text: `x` alone would look like WKT.
+    let undecided = || {
+        let (done, last) = match start.rfind('\n') {
+            Some(i) => start.split_at(i + 1),
+            None => ("", start),
+        };
+        first_meaningful(done).is_none() && vertices::may_become_header(last.trim_start())
+    };
+    by_extension(extension)
+        .or_else(|| (meaningful() && !undecided()).then(|| detect_content(start)))
+}
+
+/// The first line of `text` that is neither blank nor a `#` comment, without leading blanks.
+fn first_meaningful(text: &str) -> Option<&str> {
+    text.lines()
+        .map(str::trim_start)
+        .find(|l| !l.is_empty() && !l.starts_with('#'))
 }
 
 /// The format a file extension stands for, if any.
@@ -164,15 +181,15 @@ fn by_extension(extension: Option<&str>) -> Option<Format> {
     }
 }
 
-/// Decides the format from the first meaningful character: `{`/`[` is GeoJSON, a letter is WKT,
-/// anything else (digits, signs, `#` comments) is a vertex list.
+/// Decides the format from the first meaningful line: a CSV header (`x,y`, two names and a
+/// comma) is a vertex list; else by its first character: `{`/`[` is GeoJSON, a letter is WKT,
+/// anything else (digits, signs) is a vertex list.
 fn detect_content(text: &str) -> Format {
-    let first = text
-        .lines()
-        .map(str::trim_start)
-        .find(|l| !l.is_empty() && !l.starts_with('#'))
-        .and_then(|l| l.chars().next());
-    match first {
+    let line = first_meaningful(text);
+    if line.is_some_and(vertices::is_header) {
+        return Format::Vertices;
+    }
+    match line.and_then(|l| l.chars().next()) {
         Some('{' | '[') => Format::GeoJson,
         Some(c) if c.is_ascii_alphabetic() => Format::Wkt,
         _ => Format::Vertices,

@@ -26,6 +26,7 @@
 //!   one comma with optional whitespace around it;
 //! - a blank line (whitespace only) ends the current ring; several blank lines in a row count as
 //!   one, and a line holding only a comment is ignored (it neither ends a ring nor adds a vertex);
+//! - a first line of two column names and a comma (a CSV header such as `x,y`) is skipped;
 //! - a line holding only `---` ends the current ring and polygon. A `---` before the first vertex
 //!   or after the last one is allowed; two `---` with no vertex between them are an error.
 //!
@@ -105,6 +106,8 @@ pub fn read(text: &str) -> Result<Vec<RawPolygon>, ParseError> {
     let mut rings: Vec<Vec<[Decimal; 2]>> = Vec::new();
     let mut ring: Vec<[Decimal; 2]> = Vec::new();
     let mut seen_separator = false;
+    // The first meaningful line may be a CSV header (`x,y`), skipped.
+    let mut first = true;
     let mut line_start = 0;
     for raw_line in text.split('\n') {
         let start = line_start;
@@ -115,6 +118,8 @@ pub fn read(text: &str) -> Result<Vec<RawPolygon>, ParseError> {
             end_ring(&mut ring, &mut rings);
         } else if content.trim_matches(is_space).is_empty() {
             // A comment-only line.
+        } else if std::mem::take(&mut first) && is_header(content) {
+            // A CSV header: the column names.
         } else if content.trim_matches(is_space) == "---" {
             end_ring(&mut ring, &mut rings);
             if rings.is_empty() {
@@ -146,6 +151,36 @@ pub fn read(text: &str) -> Result<Vec<RawPolygon>, ParseError> {
         return Err(ParseError::new("empty input: no polygon found"));
     }
     Ok(polygons)
+}
+
+/// Is `line` (its comment, if any, is ignored) a CSV header: two column names separated by one
+/// comma, such as `x,y` or `lon, lat`? A name starts with a letter and holds letters, digits and
+/// `_`; `inf`, `infinity` and `nan` are numbers, not names.
+pub(crate) fn is_header(line: &str) -> bool {
+    let content = line.split('#').next().unwrap_or_default();
+    let mut fields = content.split(',').map(|f| f.trim_matches(is_space));
+    let names = [fields.next(), fields.next()];
+    fields.next().is_none() && names.iter().all(|f| f.is_some_and(is_name))
+}
+
+/// A column name of a CSV header (see [`is_header`]).
+fn is_name(field: &str) -> bool {
+    let number = ["inf", "infinity", "nan"]
+        .iter()
+        .any(|n| field.eq_ignore_ascii_case(n));
+    !number
+        && field.starts_with(|c: char| c.is_ascii_alphabetic())
+        && field.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+}
+
+/// Could `start`, the beginning of a first line cut off, still become a CSV header? (A letter
+/// first, then only name characters, blanks and at most one comma, no comment yet.)
+pub(crate) fn may_become_header(start: &str) -> bool {
+    start.starts_with(|c: char| c.is_ascii_alphabetic())
+        && start.matches(',').count() <= 1
+        && start.chars().all(|c| {
+            c.is_ascii_alphanumeric() || c == '_' || c == ',' || c == ' ' || c == '\t' || c == '\r'
+        })
 }
 
 /// Whitespace inside a line (a byte-order mark counts as whitespace).
