@@ -34,7 +34,7 @@
 //! and the README's benchmarks). The paper's O(n log^2 n) worst case (polygon cutting and ray
 //! shooting) is not implemented.
 
-use super::expansion::{double_cone, Mesh, Workspace};
+use super::expansion::{double_cone, Mesh, Shortcut, Workspace};
 use crate::algo::chords::visible_from;
 use crate::geom::kernel::{cmp_angle, cross};
 use crate::geom::polygon::Polygon;
@@ -154,22 +154,28 @@ pub fn minimally_degenerate_and_mesh(polygon: &Polygon) -> (Vec<Degenerate>, Vec
     // rayon pool) by blocks of vertices, concatenated in vertex order, so the result does not
     // depend on the number of threads. A polygon of one block skips the pool altogether.
     let n = polygon.len();
+    let shortcut = Shortcut::new(n);
     if n <= PARALLEL_BLOCK {
-        let found = search_range(polygon, &mesh, 0..n);
+        let found = search_range(polygon, &mesh, &shortcut, 0..n);
         return (found, mesh.into_triangles());
     }
     let blocks: Vec<Vec<Degenerate>> = (0..n.div_ceil(PARALLEL_BLOCK))
         .into_par_iter()
         .map(|block| {
             let range = block * PARALLEL_BLOCK..((block + 1) * PARALLEL_BLOCK).min(n);
-            search_range(polygon, &mesh, range)
+            search_range(polygon, &mesh, &shortcut, range)
         })
         .collect();
     (blocks.concat(), mesh.into_triangles())
 }
 
 /// The triangles found from the vertices of `range`, in vertex order.
-fn search_range(polygon: &Polygon, mesh: &Mesh, range: std::ops::Range<usize>) -> Vec<Degenerate> {
+fn search_range(
+    polygon: &Polygon,
+    mesh: &Mesh,
+    shortcut: &Shortcut,
+    range: std::ops::Range<usize>,
+) -> Vec<Degenerate> {
     // One workspace per thread, kept from call to call (a batch of small polygons would
     // otherwise grow its buffers again for every polygon). Nothing in the search calls back
     // into the thread pool, so the borrow never nests.
@@ -177,7 +183,7 @@ fn search_range(polygon: &Polygon, mesh: &Mesh, range: std::ops::Range<usize>) -
     WORK.with_borrow_mut(|work| {
         let mut out = Vec::new();
         for b in range {
-            search_from(polygon, mesh, b, work, &mut out);
+            search_from(polygon, mesh, shortcut, b, work, &mut out);
         }
         out
     })
@@ -192,6 +198,7 @@ const PARALLEL_BLOCK: usize = 256;
 fn search_from(
     polygon: &Polygon,
     mesh: &Mesh,
+    shortcut: &Shortcut,
     b: usize,
     work: &mut Workspace,
     out: &mut Vec<Degenerate>,
@@ -199,7 +206,7 @@ fn search_from(
     if !reflex_or_flat(polygon, b, out) {
         return;
     }
-    let (first, second) = double_cone(polygon, mesh, b, work);
+    let (first, second) = double_cone(polygon, mesh, shortcut, b, work);
     // Opposite directions are at the same place of the two cones (both sorted by angle).
     let (mut i, mut j) = (0, 0);
     while i < first.len() && j < second.len() {

@@ -40,9 +40,12 @@
 //! the length of the polygon, Theta(n^2) visible pairs), about 10 states per vertex on the mesh
 //! swept along the corridor (`crate::algo::plain_polygon_for_walking`).
 
+use super::ray::Rays;
 use crate::algo::mesh::twin_halves;
 use crate::geom::kernel::{cross, incircle_approx, Dir};
 use crate::geom::polygon::Polygon;
+use std::sync::atomic::{AtomicUsize, Ordering as Atomic};
+use std::sync::OnceLock;
 
 /// A cone of directions from `lo` counter-clockwise to `hi` (narrower than a half-turn); a bound
 /// marked `_in` is not defined by a vertex, so a vertex exactly on it is seen.
@@ -275,10 +278,56 @@ pub type Sighting = (Dir, usize);
 /// What a part of a cone on the stack stands for.
 #[derive(Clone, Copy, Debug)]
 enum Step {
-    /// Enter the triangle of this half-edge `w -> u` (`w` on the left seen from `b`).
-    Enter(usize),
+    /// Enter the triangle of this half-edge `w -> u` (`w` on the left seen from `b`), with the
+    /// number of triangles walked by the part it came from (towards [`RAY_AFTER`]).
+    Enter(usize, u32),
     /// Record this vertex, found in the direction of the (zero-width) part.
     Found(usize),
+}
+
+/// How many triangles a part that matters only at the directions of vertices found opposite
+/// walks before those directions are settled by ray shooting instead ([`Shortcut`]).
+const RAY_AFTER: u32 = if cfg!(test) { 1 } else { 128 };
+
+/// Ray shooting for long walks, shared by all searches from the vertices of one polygon.
+///
+/// A part of a cone with nothing pending opposite matters only at the directions of the vertices
+/// the other cone found there (see [`double_cone`]); walking it costs the triangles it crosses
+/// whole (on a comb or a staircase over a long edge, O(n) for most vertices: O(n^2) in all).
+/// After [`RAY_AFTER`] triangles such a part stops, and one ray per such direction
+/// ([`Rays::first_vertex`]) tells which vertex, if any, is nearest there: exactly what the walk
+/// would have found in those directions, and nothing else it would have found can matter (its
+/// opposite lies above everything pending in the other cone, which found nothing there).
+/// The rays' box tree costs O(n log n), so it is built only once the triangles walked beyond
+/// [`RAY_AFTER`] in such parts add up to `n` (`cost`): polygons whose walks are short never pay
+/// for it, and the others pay at most twice what the walks would have cost before it.
+pub struct Shortcut {
+    rays: OnceLock<Rays>,
+    walked: AtomicUsize,
+    cost: usize,
+}
+
+impl Shortcut {
+    /// No tree yet, for a polygon of `n` vertices.
+    pub fn new(n: usize) -> Shortcut {
+        Shortcut {
+            rays: OnceLock::new(),
+            walked: AtomicUsize::new(0),
+            cost: if cfg!(test) { 0 } else { n },
+        }
+    }
+
+    /// The rays, once `walked` more triangles bring the long walks' total to the cost of the tree.
+    fn rays(&self, polygon: &Polygon, walked: u32) -> Option<&Rays> {
+        if let Some(rays) = self.rays.get() {
+            return Some(rays);
+        }
+        let walked = walked as usize;
+        if self.walked.fetch_add(walked, Atomic::Relaxed) + walked < self.cost {
+            return None;
+        }
+        Some(self.rays.get_or_init(|| Rays::new(polygon)))
+    }
 }
 
 /// Reusable buffers for [`double_cone`], so that searching from many vertices allocates once.
@@ -327,6 +376,7 @@ pub struct Workspace {
 pub fn double_cone<'w>(
     polygon: &Polygon,
     mesh: &Mesh,
+    shortcut: &Shortcut,
     b: usize,
     work: &'w mut Workspace,
 ) -> (&'w [Sighting], &'w [Sighting]) {
@@ -423,7 +473,7 @@ pub fn double_cone<'w>(
                     lo_in,
                     hi_in,
                 };
-                enter(stack, mesh, far, part);
+                enter(stack, mesh, far, part, 0);
             }
             if after == 0 {
                 stack.push((Step::Found(w), Cone::at(dw)));
@@ -431,6 +481,9 @@ pub fn double_cone<'w>(
             before = after;
         }
     }
+    // Which cone goes first when both tops reach equally high: either keeps the sweep's order;
+    // after a long walk yields (below), the other one.
+    let mut favour = 0;
     loop {
         // Expand the cone whose top part reaches higher (comparing the other cone's directions
         // turned by a half-turn), so that both sweep down together.
@@ -438,7 +491,10 @@ pub fn double_cone<'w>(
             (None, None) => break,
             (Some(_), None) => 0,
             (None, Some(_)) => 1,
-            (Some(s), Some(t)) => usize::from(s.1.hi.cross(t.1.hi.reversed()) > 0),
+            (Some(s), Some(t)) => match s.1.hi.cross(t.1.hi.reversed()) {
+                0 => favour,
+                c => usize::from(c > 0),
+            },
         };
         let (step, mut cone) = stacks[side].pop().expect("the chosen cone has a part");
         // A direction matters only if its opposite may still be found in the other cone: in a
@@ -446,7 +502,8 @@ pub fn double_cone<'w>(
         let other = 1 - side;
         let opposite = cone.reversed();
         let (parts, seen) = (&stacks[other], &found[other]);
-        if !pending_in(parts, opposite) && !found_in(seen, opposite) {
+        let pending = pending_in(parts, opposite);
+        if !pending && !found_in(seen, opposite) {
             continue;
         }
         // Above the other cone's top part, only the directions of vertices found there matter:
@@ -469,18 +526,38 @@ pub fn double_cone<'w>(
                 cone.hi_in = true;
             }
         }
-        let mut g = match step {
+        let (mut g, mut walked) = match step {
             Step::Found(x) => {
                 found[side].push((cone.lo, x));
                 continue;
             }
-            Step::Enter(g) => g,
+            Step::Enter(g, walked) => (g, walked),
         };
         // Walk on while the whole part passes one side of the entered triangle's apex: it stays
         // the highest part of both cones and the other cone is unchanged, so the tests above
         // would give the same answer again (no push and pop for each triangle crossed).
-        let stack = &mut stacks[side];
+        let [first_stack, second_stack] = stacks;
+        let (stack, parts) = if side == 0 {
+            (first_stack, &*second_stack)
+        } else {
+            (second_stack, &*first_stack)
+        };
         loop {
+            walked += 1;
+            if walked >= RAY_AFTER {
+                if let Some(rays) = shortcut.rays(polygon, walked) {
+                    if !pending {
+                        shoot(polygon, rays, b, cone, &found[other], stack);
+                    } else {
+                        // A long walk with a part of the other cone pending opposite: give that
+                        // part its turn, so that what lies above it becomes a part for rays.
+                        favour = other;
+                        yield_part(stack, parts, g, cone);
+                    }
+                    break;
+                }
+                walked = 0;
+            }
             // The entered triangle has the half-edge g = w -> u; its apex x follows u.
             let x = mesh.apex(g);
             let k_ux = Mesh::next_in_triangle(g);
@@ -497,6 +574,7 @@ pub fn double_cone<'w>(
                         hi_in: false,
                         ..cone
                     },
+                    walked,
                 );
                 // x is recorded once every direction above it is settled: by a zero-width part
                 // between the two halves.
@@ -510,6 +588,7 @@ pub fn double_cone<'w>(
                         lo_in: false,
                         ..cone
                     },
+                    walked,
                 );
                 break;
             } else if right <= 0 {
@@ -565,9 +644,65 @@ fn found_in(seen: &[Sighting], range: Cone) -> bool {
 
 /// Pushes the part of a cone that leaves a triangle through its half-edge `k`, unless that is a
 /// polygon edge or the part is empty.
-fn enter(stack: &mut Vec<(Step, Cone)>, mesh: &Mesh, k: usize, part: Cone) {
+fn enter(stack: &mut Vec<(Step, Cone)>, mesh: &Mesh, k: usize, part: Cone, walked: u32) {
     let next = mesh.twin[k];
     if next != NONE && part.lo.cross(part.hi) > 0 {
-        stack.push((Step::Enter(next as usize), part));
+        stack.push((Step::Enter(next as usize, walked), part));
+    }
+}
+
+/// Puts back part `cone`, entering the triangle of half-edge `g`, that has walked long while the
+/// other cone's top part (of `parts`) overlaps its opposite: if that part's upper end turned
+/// round, `f`, lies strictly inside `cone`, as two parts, `[lo, f]` with the walk count reset
+/// and `(f, hi]` (nothing pending opposite any more) ready for rays; otherwise (both reach as
+/// high) whole, with the count reset, for the other cone to go first. Each yield follows
+/// [`RAY_AFTER`] new triangles or settles a part, so the walk still ends.
+fn yield_part(stack: &mut Vec<(Step, Cone)>, parts: &[(Step, Cone)], g: usize, cone: Cone) {
+    if let Some(&(_, top)) = parts.last() {
+        let f = top.hi.reversed();
+        if cone.lo.cross(f) > 0 && f.cross(cone.hi) > 0 {
+            let lower = Cone {
+                hi: f,
+                hi_in: true,
+                ..cone
+            };
+            let upper = Cone {
+                lo: f,
+                lo_in: false,
+                ..cone
+            };
+            stack.push((Step::Enter(g, 0), lower));
+            stack.push((Step::Enter(g, RAY_AFTER - 1), upper));
+            return;
+        }
+    }
+    stack.push((Step::Enter(g, 0), cone));
+}
+
+/// Settles part `cone` (the highest pending part of both cones, nothing pending opposite) by
+/// rays from `b`: for each vertex of `seen` (the other cone's finds, by decreasing angle) whose
+/// opposite direction `cone` holds, the vertex met first in that direction, if it is a vertex,
+/// goes on `stack` as found (lowest first, so that the highest is popped first, as the walk
+/// would have pushed it).
+fn shoot(
+    polygon: &Polygon,
+    rays: &Rays,
+    b: usize,
+    cone: Cone,
+    seen: &[Sighting],
+    stack: &mut Vec<(Step, Cone)>,
+) {
+    let opposite = cone.reversed();
+    for &(d, _) in seen.iter().rev() {
+        if Cone::at(d).wholly_below(opposite) {
+            continue; // at most one, sharing an end (see `found_in`)
+        }
+        if !opposite.holds(d) {
+            break; // above the part: so are all the rest
+        }
+        let d = d.reversed();
+        if let Some(x) = rays.first_vertex(polygon, b, d) {
+            stack.push((Step::Found(x), Cone::at(d)));
+        }
     }
 }
