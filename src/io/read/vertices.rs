@@ -174,13 +174,14 @@ fn is_name(field: &str) -> bool {
 }
 
 /// Could `start`, the beginning of a first line cut off, still become a CSV header? (A letter
-/// first, then only name characters, blanks and at most one comma, no comment yet.)
+/// first, then only name characters, blanks (as [`is_header`] trims them: any whitespace) and
+/// at most one comma, no comment yet.)
 pub(crate) fn may_become_header(start: &str) -> bool {
     start.starts_with(|c: char| c.is_ascii_alphabetic())
         && start.matches(',').count() <= 1
-        && start.chars().all(|c| {
-            c.is_ascii_alphanumeric() || c == '_' || c == ',' || c == ' ' || c == '\t' || c == '\r'
-        })
+        && start
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || c == '_' || c == ',' || is_space(c))
 }
 
 /// Whitespace inside a line (a byte-order mark counts as whitespace).
