@@ -235,14 +235,20 @@ pub(crate) fn t_junctions(polygon: &crate::Polygon, triangles: &[[usize; 3]]) ->
                 continue;
             }
             inside.sort_by_key(|&v| dot(ps, polygon.point(v), polygon.point(v)));
-            let chain: Vec<usize> = std::iter::once(s)
-                .chain(inside)
-                .chain(std::iter::once(e))
-                .collect();
-            out.extend(chain.windows(3).map(|w| [w[0], w[1], w[2]]));
+            push_chain(&mut out, s, inside, e);
         }
     }
     out
+}
+
+/// The degenerate triangles of a side from `s` to `e` with the vertices `inside` it, in order from
+/// `s`: one `[a, b, c]` per inside vertex `b`, with `a` and `c` its neighbours along the side.
+pub(crate) fn push_chain(out: &mut Vec<[usize; 3]>, s: usize, inside: Vec<usize>, e: usize) {
+    let chain: Vec<usize> = std::iter::once(s)
+        .chain(inside)
+        .chain(std::iter::once(e))
+        .collect();
+    out.extend(chain.windows(3).map(|w| [w[0], w[1], w[2]]));
 }
 
 /// A plain triangulation of one counter-clockwise simple polygon given as its cycle of points

@@ -310,11 +310,7 @@ pub(crate) fn t_junctions(polygon: &Polygon, triangles: &[[usize; 3]]) -> Vec<[u
             }
             inside.sort_by_key(|&v| dot(ps, polygon.point(v), polygon.point(v)));
             inside.dedup_by_key(|v| polygon.point(*v));
-            let chain: Vec<usize> = std::iter::once(s)
-                .chain(inside)
-                .chain(std::iter::once(e))
-                .collect();
-            out.extend(chain.windows(3).map(|w| [w[0], w[1], w[2]]));
+            super::push_chain(&mut out, s, inside, e);
         }
     }
     out

@@ -155,20 +155,26 @@ impl Polygon {
         super::touch::walks(self, &contacts)
     }
 
+    /// A polygon without rings yet, with room for `vertices` vertices in `rings` rings (rings are
+    /// pushed by the caller, who closes `ring_starts`).
+    fn empty(vertices: usize, rings: usize, input_vertices: usize, grid: Grid) -> Polygon {
+        Polygon {
+            points: Vec::with_capacity(vertices),
+            ids: Vec::with_capacity(vertices),
+            ring_starts: Vec::with_capacity(rings + 1),
+            ring_of: Vec::with_capacity(vertices),
+            input_vertices,
+            grid,
+            source_ring: Vec::new(),
+            touches: 0,
+        }
+    }
+
     /// The same polygon with other rings (points and input numbers, outer ring first); the
     /// rings' winding is kept as given.
     pub(super) fn with_rings(&self, rings: &[Vec<(Point, usize)>]) -> Polygon {
         let total = rings.iter().map(Vec::len).sum();
-        let mut p = Polygon {
-            points: Vec::with_capacity(total),
-            ids: Vec::with_capacity(total),
-            ring_starts: Vec::with_capacity(rings.len() + 1),
-            ring_of: Vec::with_capacity(total),
-            input_vertices: self.input_vertices,
-            grid: self.grid,
-            source_ring: Vec::new(),
-            touches: 0,
-        };
+        let mut p = Polygon::empty(total, rings.len(), self.input_vertices, self.grid);
         for (r, ring) in rings.iter().enumerate() {
             p.ring_starts.push(p.points.len());
             for &(q, id) in ring {
@@ -243,16 +249,7 @@ impl Polygon {
         // Room for every vertex read (duplicates dropped below only leave a little unused), so
         // that the largest arrays never grow by doubling.
         let total: usize = raw.rings.iter().map(Vec::len).sum();
-        let mut polygon = Polygon {
-            points: Vec::with_capacity(total),
-            ids: Vec::with_capacity(total),
-            ring_starts: Vec::with_capacity(raw.rings.len() + 1),
-            ring_of: Vec::with_capacity(total),
-            input_vertices: 0,
-            grid,
-            source_ring: Vec::new(),
-            touches: 0,
-        };
+        let mut polygon = Polygon::empty(total, raw.rings.len(), 0, grid);
         let mut warnings = Vec::new();
         let mut values = grid_values.0.into_iter();
         for (r, input_ring) in raw.rings.iter().enumerate() {
@@ -278,16 +275,7 @@ impl Polygon {
         input_vertices: usize,
     ) -> Result<(Polygon, Vec<Warning>), InvalidPolygon> {
         let total = rings.iter().map(Vec::len).sum();
-        let mut polygon = Polygon {
-            points: Vec::with_capacity(total),
-            ids: Vec::with_capacity(total),
-            ring_starts: Vec::with_capacity(rings.len() + 1),
-            ring_of: Vec::with_capacity(total),
-            input_vertices,
-            grid,
-            source_ring: Vec::new(),
-            touches: 0,
-        };
+        let mut polygon = Polygon::empty(total, rings.len(), input_vertices, grid);
         let mut warnings = Vec::new();
         for (r, ring) in rings.into_iter().enumerate() {
             polygon.push_ring(r, ring.into_iter(), &mut warnings)?;
