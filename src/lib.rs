@@ -93,7 +93,9 @@ pub mod pipeline;
 pub(crate) mod test_support;
 pub mod verify;
 
-pub use algo::{Algorithm, Pseudotriangle, Pseudotriangulation, TriangulateError, Triangulation};
+pub use algo::{
+    Algorithm, Pseudotriangle, Pseudotriangulation, Stopped, TriangulateError, Triangulation,
+};
 pub use geom::decimal::{Decimal, NumberError};
 pub use geom::polygon::{Polygon, Ring, Warning};
 pub use geom::validate::InvalidPolygon;

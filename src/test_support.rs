@@ -30,6 +30,7 @@ pub(crate) fn plain_problems(p: &Polygon, triangles: Vec<[usize; 3]>) -> Vec<Str
         degenerate: Vec::new(),
         optimal: false,
         lower_bound: None,
+        stopped: None,
     };
     crate::verify::check(p, &t).problems
 }

@@ -107,6 +107,7 @@ pub fn triangulate(polygon: &Polygon, limit: usize) -> Result<Triangulation, Tri
         degenerate,
         optimal: true,
         lower_bound: None,
+        stopped: None,
     })
 }
 

@@ -201,6 +201,7 @@ pub fn triangulate(polygon: &Polygon, dp_limit: usize) -> Result<Triangulation, 
         degenerate,
         optimal: true,
         lower_bound: None,
+        stopped: None,
     })
 }
 

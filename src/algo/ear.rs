@@ -63,6 +63,7 @@ pub fn triangulate(polygon: &Polygon) -> Result<Triangulation, TriangulateError>
         degenerate: Vec::new(),
         optimal: false,
         lower_bound: None,
+        stopped: None,
     })
 }
 

@@ -139,6 +139,40 @@ pub struct Triangulation {
     /// For a minimum algorithm whose search was cut short (`optimal` false): a proved lower
     /// bound on the minimum number of triangles.
     pub lower_bound: Option<usize>,
+    /// For a minimum algorithm whose count is not proved minimum: why.
+    pub stopped: Option<Stopped>,
+}
+
+/// Why a minimum algorithm's count is not proved minimum (`optimal` false). The triangulation
+/// is valid all the same, and `lower_bound` says how far from the minimum it can be.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum Stopped {
+    /// The exact search for a polygon with holes reached its time limit (`--time-limit`):
+    /// while finding the minimally degenerate triangles, building their dependency graph, or
+    /// searching it.
+    TimeLimit,
+    /// A connected component of the dependency graph had more triangles than the exact search
+    /// takes ([`minitri::branch_and_bound::SEARCH_LIMIT`]); it kept a greedy set.
+    SearchSize,
+    /// The dependency graph of all minimally degenerate triangles would have exceeded its size
+    /// budget ([`minitri::dependency::pair_budget`]); the search used the shortest of them.
+    GraphSize,
+    /// Rings that touch, beyond what the exact method for touching rings takes (all rings
+    /// joined into one boundary walk of at most [`walks::WALK_DP_LIMIT`] stored vertices).
+    Touching,
+}
+
+impl Stopped {
+    /// The name written in the JSON (`"stopped_by"`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Stopped::TimeLimit => "time limit",
+            Stopped::SearchSize => "search size",
+            Stopped::GraphSize => "graph size",
+            Stopped::Touching => "touching rings",
+        }
+    }
 }
 
 /// A pseudotriangulation: faces that are simple polygons with exactly three corners (vertices
@@ -340,6 +374,7 @@ pub(crate) fn touching(
                 degenerate,
                 optimal: true,
                 lower_bound: None,
+                stopped: None,
             });
         }
     }
@@ -351,6 +386,7 @@ pub(crate) fn touching(
         degenerate: Vec::new(),
         optimal: false,
         lower_bound: algorithm.is_minimum().then(|| polygon.minimum_bounds().0),
+        stopped: algorithm.is_minimum().then_some(Stopped::Touching),
     })
 }
 

@@ -76,5 +76,11 @@ pub fn problems(polygon: &Polygon, t: &Triangulation) -> Vec<String> {
         )),
         _ => {}
     }
+    if let (Some(stopped), true) = (t.stopped, t.optimal) {
+        out.push(format!(
+            "the count {count} is claimed optimal and also stopped by the {}",
+            stopped.name()
+        ));
+    }
     out
 }

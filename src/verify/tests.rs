@@ -8,6 +8,7 @@ fn triangulation(triangles: &[[usize; 3]], degenerate: &[[usize; 3]]) -> Triangu
         degenerate: degenerate.to_vec(),
         optimal: false,
         lower_bound: None,
+        stopped: None,
     }
 }
 

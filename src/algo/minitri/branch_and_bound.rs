@@ -20,6 +20,7 @@
 //! Complexity: exponential in the worst case (as it must be unless P = NP), O(V + E) for the
 //! components and greedy sets; each search node costs O(V^2 / 64).
 
+use crate::algo::Stopped;
 use std::time::Instant;
 
 /// The largest component searched exactly (bit-set rows cost V^2 / 8 bytes).
@@ -34,6 +35,9 @@ pub struct Found {
     pub upper_bound: usize,
     /// Whether `set` is proved maximum.
     pub optimal: bool,
+    /// When not: why ([`Stopped::TimeLimit`] if the deadline stopped any component, else
+    /// [`Stopped::SearchSize`]).
+    pub stopped: Option<Stopped>,
 }
 
 /// A maximum independent set of the graph given by its adjacency lists (symmetric, no loops),
@@ -59,6 +63,7 @@ pub fn maximum_independent_set_labelled(
         set: Vec::new(),
         upper_bound: 0,
         optimal: true,
+        stopped: None,
     };
     for component in components {
         if component.len() == 1 {
@@ -66,13 +71,16 @@ pub fn maximum_independent_set_labelled(
             found.upper_bound += 1;
             continue;
         }
-        let (set, bound, optimal) = solve_component(adjacent, &component, deadline);
+        let (set, bound, stopped) = solve_component(adjacent, &component, deadline);
         let mut distinct: Vec<usize> = component.iter().map(|&v| labels[v]).collect();
         distinct.sort_unstable();
         distinct.dedup();
         found.upper_bound += bound.min(distinct.len()).max(set.len());
         found.set.extend(set);
-        found.optimal &= optimal;
+        found.optimal &= stopped.is_none();
+        if found.stopped != Some(Stopped::TimeLimit) && stopped.is_some() {
+            found.stopped = stopped;
+        }
     }
     found.set.sort_unstable();
     found
@@ -171,12 +179,13 @@ impl Bits {
     }
 }
 
-/// Solves one component: (its set in global numbers, an upper bound, whether proved maximum).
+/// Solves one component: (its set in global numbers, an upper bound, why it is not proved
+/// maximum if it is not).
 fn solve_component(
     adjacent: &[Vec<usize>],
     component: &[usize],
     deadline: Option<Instant>,
-) -> (Vec<usize>, usize, bool) {
+) -> (Vec<usize>, usize, Option<Stopped>) {
     let n = component.len();
     let local = |v: usize| {
         component
@@ -186,7 +195,7 @@ fn solve_component(
     if n > SEARCH_LIMIT {
         let set = greedy(adjacent, component);
         let bound = n - greedy_matching(adjacent, component);
-        return (set, bound, false);
+        return (set, bound, Some(Stopped::SearchSize));
     }
     let mut closed = Vec::with_capacity(n); // closed neighbourhoods N[v]
     for &v in component {
@@ -211,10 +220,14 @@ fn solve_component(
     search.expand(all, &mut Vec::new());
     let set = search.best.iter().map(|&v| component[v]).collect();
     if search.stopped {
-        (set, root_bound.max(search.best.len()), false)
+        (
+            set,
+            root_bound.max(search.best.len()),
+            Some(Stopped::TimeLimit),
+        )
     } else {
         let size = search.best.len();
-        (set, size, true)
+        (set, size, None)
     }
 }
 

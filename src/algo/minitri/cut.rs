@@ -183,6 +183,7 @@ mod tests {
             degenerate,
             optimal: false,
             lower_bound: None,
+            stopped: None,
         };
         let report = crate::verify::check(polygon, &t);
         assert!(report.valid, "{:?}: {:?}", t.triangles, report.problems);

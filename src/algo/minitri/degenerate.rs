@@ -146,30 +146,55 @@ pub fn minimally_degenerate(polygon: &Polygon) -> Vec<Degenerate> {
 /// positive triangles, every side an edge or a proper diagonal), so that later steps need not
 /// build another one.
 pub fn minimally_degenerate_and_mesh(polygon: &Polygon) -> (Vec<Degenerate>, Vec<[usize; 3]>) {
+    let (found, mesh, _) = minimally_degenerate_and_mesh_until(polygon, None);
+    (found, mesh)
+}
+
+/// [`minimally_degenerate_and_mesh`], stopping at `deadline`: the triangles found by then (from
+/// a subset of the middle vertices; each is minimally degenerate all the same), the mesh, and
+/// whether the search finished (`false`: some were not looked for). The deadline is read before
+/// every 16th middle vertex.
+pub fn minimally_degenerate_and_mesh_until(
+    polygon: &Polygon,
+    deadline: Option<std::time::Instant>,
+) -> (Vec<Degenerate>, Vec<[usize; 3]>, bool) {
     let mut mesh = Mesh::new(polygon, crate::algo::plain_polygon_for_walking(polygon));
     if polygon.len() >= FLIPS_FROM {
         mesh.flip_towards_delaunay(polygon, FLIPS_PER_VERTEX * polygon.len());
     }
+    let cut_short = std::sync::atomic::AtomicBool::new(false);
     // The vertices are independent searches over a shared mesh: in parallel (on the current
     // rayon pool) by blocks of vertices, concatenated in vertex order, so the result does not
     // depend on the number of threads. A polygon of one block skips the pool altogether.
     let n = polygon.len();
     if n <= PARALLEL_BLOCK {
-        let found = search_range(polygon, &mesh, 0..n);
-        return (found, mesh.into_triangles());
+        let found = search_range(polygon, &mesh, 0..n, deadline, &cut_short);
+        return (found, mesh.into_triangles(), !cut_short.into_inner());
     }
     let blocks: Vec<Vec<Degenerate>> = (0..n.div_ceil(PARALLEL_BLOCK))
         .into_par_iter()
         .map(|block| {
             let range = block * PARALLEL_BLOCK..((block + 1) * PARALLEL_BLOCK).min(n);
-            search_range(polygon, &mesh, range)
+            search_range(polygon, &mesh, range, deadline, &cut_short)
         })
         .collect();
-    (blocks.concat(), mesh.into_triangles())
+    (
+        blocks.concat(),
+        mesh.into_triangles(),
+        !cut_short.into_inner(),
+    )
 }
 
-/// The triangles found from the vertices of `range`, in vertex order.
-fn search_range(polygon: &Polygon, mesh: &Mesh, range: std::ops::Range<usize>) -> Vec<Degenerate> {
+/// The triangles found from the vertices of `range`, in vertex order, until `deadline` (then
+/// `cut_short` is set).
+fn search_range(
+    polygon: &Polygon,
+    mesh: &Mesh,
+    range: std::ops::Range<usize>,
+    deadline: Option<std::time::Instant>,
+    cut_short: &std::sync::atomic::AtomicBool,
+) -> Vec<Degenerate> {
+    use std::sync::atomic::Ordering::Relaxed;
     // One workspace per thread, kept from call to call (a batch of small polygons would
     // otherwise grow its buffers again for every polygon). Nothing in the search calls back
     // into the thread pool, so the borrow never nests.
@@ -177,6 +202,12 @@ fn search_range(polygon: &Polygon, mesh: &Mesh, range: std::ops::Range<usize>) -
     WORK.with_borrow_mut(|work| {
         let mut out = Vec::new();
         for b in range {
+            if let Some(deadline) = deadline.filter(|_| b % 16 == 0) {
+                if cut_short.load(Relaxed) || std::time::Instant::now() >= deadline {
+                    cut_short.store(true, Relaxed);
+                    break;
+                }
+            }
             search_from(polygon, mesh, b, work, &mut out);
         }
         out

@@ -49,14 +49,39 @@ fn reaches_straight_side(polygon: &Polygon, t: &Degenerate, u: &Degenerate) -> b
 
 /// The dependency graph: for each triangle, the sorted list of triangles it depends on.
 pub fn graph(polygon: &Polygon, mdts: &[Degenerate]) -> Vec<Vec<usize>> {
+    graph_within(polygon, mdts, u64::MAX, None).unwrap_or_default()
+}
+
+/// How many pairs of triangles [`graph_within`] may compare for a polygon of `n` vertices
+/// before it gives up: `2^24 + 64 n` (a few tenths of a second, some 100 MB at most on a
+/// 15 x 15 grid of small holes), far above what polygons whose triangles are short need (O(K)
+/// pairs), below the Θ(K^2) pairs of polygons in which most triangles cross most others (in a
+/// grid of small holes `K` itself is Θ(n^2)). The graph's memory is at most proportional to the
+/// pairs compared.
+pub fn pair_budget(n: usize) -> u64 {
+    (1 << 24) + 64 * n as u64
+}
+
+/// [`graph`], or `None` as soon as it has compared more than `budget` pairs of triangles or
+/// `deadline` has passed (checked every 4096 pairs), so that neither its time nor its memory
+/// (proportional to the pairs compared) runs away on polygons where most triangles depend on
+/// most others.
+pub fn graph_within(
+    polygon: &Polygon,
+    mdts: &[Degenerate],
+    budget: u64,
+    deadline: Option<std::time::Instant>,
+) -> Option<Vec<Vec<usize>>> {
     let k = mdts.len();
-    let mut adjacent: Vec<Vec<usize>> = vec![Vec::new(); k];
-    let link = |s: usize, t: usize, adjacent: &mut Vec<Vec<usize>>| {
-        if s != t && dependent(polygon, &mdts[s], &mdts[t]) {
-            adjacent[s].push(t);
-            adjacent[t].push(s);
-        }
+    let mut pairs: u64 = 0;
+    let mut spend = |count: usize| -> bool {
+        let before = pairs;
+        pairs = pairs.saturating_add(count as u64);
+        pairs <= budget
+            && (before >> 12 == pairs >> 12
+                || deadline.is_none_or(|d| std::time::Instant::now() < d))
     };
+    let mut adjacent: Vec<Vec<usize>> = vec![Vec::new(); k];
     // Pairs meeting at a vertex that is a middle of one of them.
     let mut at_vertex: Vec<Vec<usize>> = vec![Vec::new(); polygon.len()];
     for (t, m) in mdts.iter().enumerate() {
@@ -65,8 +90,14 @@ pub fn graph(polygon: &Polygon, mdts: &[Degenerate]) -> Vec<Vec<usize>> {
         }
     }
     for (t, m) in mdts.iter().enumerate() {
+        if !spend(at_vertex[m.b].len()) {
+            return None;
+        }
         for &u in &at_vertex[m.b] {
-            link(t, u, &mut adjacent);
+            if u != t && dependent(polygon, m, &mdts[u]) {
+                adjacent[t].push(u);
+                adjacent[u].push(t);
+            }
         }
     }
     // Proper crossings: sweep over x, comparing segments whose x-ranges overlap.
@@ -79,6 +110,9 @@ pub fn graph(polygon: &Polygon, mdts: &[Degenerate]) -> Vec<Vec<usize>> {
     let mut active: Vec<usize> = Vec::new();
     for &t in &order {
         let (lo, _) = range(&mdts[t]);
+        if !spend(active.len()) {
+            return None;
+        }
         active.retain(|&u| range(&mdts[u]).1 >= lo);
         for &u in &active {
             let (m, o) = (&mdts[t], &mdts[u]);
@@ -94,5 +128,5 @@ pub fn graph(polygon: &Polygon, mdts: &[Degenerate]) -> Vec<Vec<usize>> {
         list.sort_unstable();
         list.dedup();
     }
-    adjacent
+    Some(adjacent)
 }

@@ -29,7 +29,7 @@ pub mod partition;
 pub mod small;
 mod staircase;
 
-use super::{Algorithm, TriangulateError, Triangulation};
+use super::{Algorithm, Stopped, TriangulateError, Triangulation};
 use crate::geom::polygon::Polygon;
 use std::time::{Duration, Instant};
 
@@ -86,6 +86,7 @@ pub fn triangulate_within(
         degenerate,
         optimal: true,
         lower_bound: None,
+        stopped: None,
     })
 }
 
@@ -93,8 +94,19 @@ pub fn triangulate_within(
 /// minimally degenerate triangles, their dependency graph ([`dependency`], Theorem 1), a maximum
 /// independent set by exact search ([`branch_and_bound`], until `deadline`), and the chosen
 /// triangles cut into a plain triangulation ([`cut`]). `optimal` is true only when the search
-/// finished; otherwise `lower_bound` holds the proved bound `n + 2w - 2 - (upper bound on d)`.
-/// Without holes it gives the same count as [`triangulate`] (the tests compare them).
+/// finished; otherwise `lower_bound` holds the proved bound `n + 2w - 2 - (upper bound on d)`
+/// and `stopped` says why. Without holes it gives the same count as [`triangulate`] (the tests
+/// compare them).
+///
+/// Time and memory stay bounded whatever the polygon: the deadline is read while the
+/// triangles are found and while their graph is built, not only during the search, and the
+/// graph may compare at most [`dependency::pair_budget`] pairs. When either runs out, the search
+/// goes on with the shorter half of the triangles (by the extent of their long side), halving
+/// again until the graph fits, after the deadline within a budget of [`LATE_PAIRS`] pairs per
+/// try (so the run ends a small constant after the deadline). Any subset of the triangles gives
+/// a valid answer (dependence is a relation between pairs, so a set independent within a subset
+/// is independent), and the lower bound is taken over all of them: the number of distinct middle
+/// vertices bounds `d` from above (triangles sharing their middle are pairwise dependent).
 ///
 /// # Errors
 /// [`TriangulateError::MinitriCutFailed`] if a self-check of the cut step fails (see [`cut`];
@@ -103,22 +115,80 @@ pub fn triangulate_general(
     polygon: &Polygon,
     deadline: Option<Instant>,
 ) -> Result<Triangulation, TriangulateError> {
-    let (mdts, base) = degenerate::minimally_degenerate_and_mesh(polygon);
-    let graph = dependency::graph(polygon, &mdts);
+    let (mut mdts, base, complete) =
+        degenerate::minimally_degenerate_and_mesh_until(polygon, deadline);
+    // An upper bound on `d` over ALL the minimally degenerate triangles: their distinct middles,
+    // or, when some were not looked for, every vertex that could be one (angle of 180 degrees
+    // or more).
+    let all_middles = if complete {
+        let mut middles: Vec<usize> = mdts.iter().map(|m| m.b).collect();
+        middles.sort_unstable();
+        middles.dedup();
+        middles.len()
+    } else {
+        (0..polygon.len())
+            .filter(|&v| {
+                let p = |i: usize| polygon.point(i);
+                crate::geom::kernel::cross(p(polygon.prev(v)), p(v), p(polygon.next(v))) <= 0
+            })
+            .count()
+    };
+    let mut stopped = (!complete).then_some(Stopped::TimeLimit);
+    let mut sorted = false;
+    let graph = loop {
+        let late = deadline.is_some_and(|d| Instant::now() >= d);
+        let (budget, until) = if late {
+            (LATE_PAIRS, None)
+        } else {
+            (dependency::pair_budget(polygon.len()), deadline)
+        };
+        if let Some(graph) = dependency::graph_within(polygon, &mdts, budget, until) {
+            break graph;
+        }
+        let late = deadline.is_some_and(|d| Instant::now() >= d);
+        if stopped.is_none() {
+            stopped = Some(if late {
+                Stopped::TimeLimit
+            } else {
+                Stopped::GraphSize
+            });
+        }
+        if !sorted {
+            mdts.sort_by_key(|m| extent(polygon, m));
+            sorted = true;
+        }
+        mdts.truncate(mdts.len() / 2);
+    };
     let middles: Vec<usize> = mdts.iter().map(|m| m.b).collect();
     let found = branch_and_bound::maximum_independent_set_labelled(&graph, &middles, deadline);
     let chosen: Vec<degenerate::Degenerate> = found.set.iter().map(|&t| mdts[t]).collect();
     let triangles = cut::triangulate_with_cuts(polygon, base, &chosen)?;
-    let lower = lower_bound(polygon, found.upper_bound);
+    let d_upper = match stopped {
+        None => found.upper_bound,
+        Some(_) => all_middles,
+    };
+    let lower = lower_bound(polygon, d_upper);
     // A search cut short whose bound meets its count has found the minimum all the same.
-    let optimal = found.optimal || lower >= triangles.len();
+    let stopped = stopped.or(found.stopped);
+    let optimal = stopped.is_none() || lower >= triangles.len();
     Ok(Triangulation {
         algorithm: Algorithm::Minitri,
         triangles,
         degenerate: chosen.iter().map(|m| [m.a, m.b, m.c]).collect(),
         optimal,
         lower_bound: (!optimal).then_some(lower),
+        stopped: if optimal { None } else { stopped },
     })
+}
+
+/// The pairs the dependency graph may compare per try once the deadline has passed: about
+/// 10 ms of work.
+pub const LATE_PAIRS: u64 = 1 << 20;
+
+/// How far a triangle's long side reaches: `|dx| + |dy|` (shorter triangles cross fewer others).
+fn extent(polygon: &Polygon, m: &degenerate::Degenerate) -> i128 {
+    let (a, c) = (polygon.point(m.a), polygon.point(m.c));
+    (i128::from(a.x) - i128::from(c.x)).abs() + (i128::from(a.y) - i128::from(c.y)).abs()
 }
 
 /// The proved lower bound on the minimum from an upper bound `d_upper` on the number of

@@ -216,6 +216,7 @@ mod tests {
             degenerate: degenerate.to_vec(),
             optimal: true,
             lower_bound: None,
+            stopped: None,
         }
     }
 

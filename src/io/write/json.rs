@@ -204,6 +204,14 @@ fn triangle_fields(
         let at = after.map_or(fields.len(), |i| i + 1);
         fields.insert(at, ("lower_bound", json(&lower)));
     }
+    if let Some(stopped) = t.stopped {
+        // Why the count is not proved minimum, right after `optimal` (and `lower_bound`).
+        let after = ["lower_bound", "optimal"]
+            .iter()
+            .find_map(|field| fields.iter().position(|(name, _)| name == field));
+        let at = after.map_or(fields.len(), |i| i + 1);
+        fields.insert(at, ("stopped_by", json(stopped.name())));
+    }
     fields
 }
 

@@ -992,6 +992,7 @@ mod tests {
             degenerate: vec![[0, 1, 3], [1, 2, 3], [11, 8, 4], [8, 7, 4]],
             optimal: true,
             lower_bound: None,
+            stopped: None,
         }
     }
 
@@ -1036,6 +1037,7 @@ mod tests {
             degenerate: near.iter().map(|&k| [0, k, k + 1]).collect(),
             optimal: false,
             lower_bound: None,
+            stopped: None,
         };
         (p, t)
     }
