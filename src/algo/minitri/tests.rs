@@ -942,3 +942,38 @@ fn the_verifier_checks_the_lower_bound() {
     t.lower_bound = Some(t.triangles.len());
     assert!(crate::verify::check(&p, &t).valid);
 }
+
+/// Issue 24, item 3: the deadline bounds step 1 and the dependency graph too, not only the
+/// search. With the deadline already past, a 30 x 30 grid of holes (its triangles Θ(n^2), its
+/// graph Θ(n^4) pairs) still gives a valid triangulation, stopped by the time limit, with a
+/// true lower bound.
+#[test]
+fn a_past_deadline_bounds_every_stage_on_a_grid_of_holes() {
+    let p = hole_grid(30, 30);
+    let (corners, plain) = p.minimum_bounds();
+    let t = super::triangulate_general(&p, Some(std::time::Instant::now())).unwrap();
+    let check = crate::verify::check(&p, &t);
+    assert!(check.valid, "{:?}", check.problems);
+    assert_eq!(t.stopped, Some(crate::algo::Stopped::TimeLimit));
+    let lower = t.lower_bound.expect("not optimal: a lower bound");
+    assert!(corners <= lower && lower <= t.triangles.len() && t.triangles.len() <= plain);
+}
+
+/// The dependency graph gives up past its pair budget (and the search then goes on with the
+/// shorter triangles, "graph size"); with room it is the graph of [`dependency::graph`].
+#[test]
+fn the_dependency_graph_keeps_to_its_budget() {
+    use super::{degenerate, dependency};
+    let p = hole_grid(6, 6);
+    let mdts = degenerate::minimally_degenerate(&p);
+    let full = dependency::graph(&p, &mdts);
+    let pairs: usize = full.iter().map(Vec::len).sum::<usize>() / 2;
+    assert!(pairs > 1000, "{pairs} dependent pairs");
+    assert_eq!(
+        dependency::graph_within(&p, &mdts, u64::MAX, None),
+        Some(full)
+    );
+    assert_eq!(dependency::graph_within(&p, &mdts, 100, None), None);
+    let past = Some(std::time::Instant::now());
+    assert_eq!(dependency::graph_within(&p, &mdts, u64::MAX, past), None);
+}
