@@ -155,3 +155,46 @@ fn every_earcut_fixture_has_its_expected_outcome() {
     }
     assert!(compared >= 15, "{compared} compared with earcut");
 }
+
+/// The fixtures whose rings touch and leave hole walks (beyond the walk DP): minitri's
+/// triangulation with T-junctions where the bridged walk runs straight through a vertex never
+/// has more triangles than earcut's (issue 19), and it passes `--verify`.
+#[test]
+fn touching_fixtures_take_at_most_earcuts_triangles() {
+    let earcut: Value = serde_json::from_str(
+        &std::fs::read_to_string(fixtures().join("earcut/expected.json")).expect("expected.json"),
+    )
+    .expect("earcut's expected.json");
+    for name in [
+        "boxy",
+        "eberly-3",
+        "issue45",
+        "self-tangent-3",
+        "touching-holes3",
+        "touching-holes4",
+        "touching-holes5",
+        "touching4",
+    ] {
+        let path = format!("fixtures/earcut/{name}.json");
+        let (code, out, err) = run(&["--verify", "--time-limit", "5", &path], None);
+        assert_eq!(code, 0, "{name}: {err}");
+        let doc = json(&out);
+        let p = &doc["polygons"][0];
+        assert!(p["touches"].as_u64().is_some_and(|t| t > 0), "{name}");
+        assert_eq!(p["verification"]["ok"], true, "{name}");
+        let count = p["triangle_count"].as_u64().expect("a count");
+        let theirs = earcut["triangles"][name].as_u64().expect("earcut count");
+        assert!(count <= theirs, "{name}: {count} > earcut's {theirs}");
+        let degenerate = p["degenerate_triangles"].as_array().map_or(0, Vec::len);
+        let (n, holes, touches) = (
+            p["vertices"].as_u64().unwrap(),
+            p["holes"].as_u64().unwrap(),
+            p["touches"].as_u64().unwrap(),
+        );
+        assert_eq!(
+            count + degenerate as u64,
+            n + 2 * (holes - touches) - 2,
+            "{name}"
+        );
+    }
+}

@@ -434,7 +434,14 @@ fn every_algorithm_triangulates_touching_rings_and_the_minimum_is_exact() {
                 assert_eq!(t.triangles.len(), minimum, "{rings:?} {algorithm}");
             } else {
                 assert!(t.triangles.len() >= minimum);
-                assert!(t.lower_bound.is_some_and(|l| l <= minimum), "{rings:?}");
+                assert!(
+                    if t.optimal {
+                        t.triangles.len() == minimum && t.lower_bound.is_none()
+                    } else {
+                        t.lower_bound.is_some_and(|l| l <= minimum)
+                    },
+                    "{rings:?}"
+                );
             }
         }
         if p.holes() == 0 {
@@ -447,6 +454,45 @@ fn every_algorithm_triangulates_touching_rings_and_the_minimum_is_exact() {
         checked == 1500 && one_walk > 1000 && with_hole_walks > 10 && three_at_a_point >= 5,
         "{checked} {one_walk} {with_hole_walks} {three_at_a_point}"
     );
+}
+
+/// Touching polygons that keep hole walks (beyond the walk DP), of any size the generator makes:
+/// the minimum algorithms' triangulation with T-junctions passes the checker, never has more
+/// triangles than the plain one (`ear`), and its `optimal` and `lower_bound` are truthful.
+#[test]
+fn with_hole_walks_the_minimum_algorithms_never_exceed_the_plain_count() {
+    let mut rnd = xorshift(0x5eed_f1a7);
+    let (mut checked, mut fewer) = (0, 0);
+    let mut tries = 0;
+    while checked < 400 && tries < 1_000_000 {
+        tries += 1;
+        let Some(rings) = random_rings(&mut rnd) else {
+            continue;
+        };
+        let Ok((p, _)) = Polygon::from_raw(&raw(&rings)) else {
+            continue;
+        };
+        if p.touches() == 0 || p.holes() == 0 {
+            continue;
+        }
+        checked += 1;
+        let plain = minitri::triangulate(&p, Algorithm::Ear).expect("ear");
+        assert!(verify::check(&p, &plain).valid, "{rings:?} ear");
+        assert!(plain.degenerate.is_empty());
+        let lower = p.minimum_bounds().0;
+        for algorithm in [Algorithm::Minitri, Algorithm::Asano] {
+            let t = minitri::triangulate(&p, algorithm)
+                .unwrap_or_else(|e| panic!("{rings:?} {algorithm}: {e}"));
+            let check = verify::check(&p, &t);
+            assert!(check.valid, "{rings:?} {algorithm}: {:?}", check.problems);
+            assert!(t.triangles.len() <= plain.triangles.len(), "{rings:?}");
+            assert!(t.triangles.len() >= lower, "{rings:?}");
+            assert_eq!(t.optimal, t.triangles.len() == lower, "{rings:?}");
+            assert_eq!(t.lower_bound, (!t.optimal).then_some(lower), "{rings:?}");
+            fewer += usize::from(t.triangles.len() < plain.triangles.len());
+        }
+    }
+    assert!(checked == 400 && fewer > 200, "{checked} {fewer}");
 }
 
 #[test]

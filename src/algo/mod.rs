@@ -360,8 +360,10 @@ pub(crate) fn plain_polygon_for_walking(polygon: &crate::Polygon) -> Vec<[usize;
 
 /// A triangulation of a polygon with touching rings ([`walks`]): for `minitri` and `asano` the
 /// exact minimum when every ring joins the outer ring and the walk is small enough for the DP
-/// ([`walks::minimum`]), else (and for `ear`) the plain triangulation, with `optimal: false` and
-/// the lower bound `ceil((n - f)/3)` for the minimum algorithms.
+/// ([`walks::minimum`]), else the bridged walk clipped with its flat positions dropped
+/// ([`walks::flattened`], T-junctions, at most the plain count), with the lower bound
+/// `ceil((n - f)/3)` and `optimal` only when the count reaches it; for `ear` (and on a failed
+/// self-check) the plain triangulation.
 pub(crate) fn touching(
     polygon: &crate::Polygon,
     algorithm: Algorithm,
@@ -378,15 +380,27 @@ pub(crate) fn touching(
             });
         }
     }
-    let triangles =
-        walks::plain(polygon).map_err(|detail| TriangulateError::Touching { algorithm, detail })?;
+    let flattened = algorithm
+        .is_minimum()
+        .then(|| walks::flattened(polygon).ok())
+        .flatten();
+    let (triangles, degenerate) = match flattened {
+        Some(found) => found,
+        None => (
+            walks::plain(polygon)
+                .map_err(|detail| TriangulateError::Touching { algorithm, detail })?,
+            Vec::new(),
+        ),
+    };
+    let lower = polygon.minimum_bounds().0;
+    let optimal = algorithm.is_minimum() && triangles.len() <= lower;
     Ok(Triangulation {
         algorithm,
         triangles,
-        degenerate: Vec::new(),
-        optimal: false,
-        lower_bound: algorithm.is_minimum().then(|| polygon.minimum_bounds().0),
-        stopped: algorithm.is_minimum().then_some(Stopped::Touching),
+        degenerate,
+        optimal,
+        lower_bound: (algorithm.is_minimum() && !optimal).then_some(lower),
+        stopped: (algorithm.is_minimum() && !optimal).then_some(Stopped::Touching),
     })
 }
 

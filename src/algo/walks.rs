@@ -7,7 +7,9 @@
 //! angle outside the region; no two consecutive stored vertices share a point.
 //! Output guarantee: [`plain`] gives `n + 2w - 2` nondegenerate counter-clockwise triangles (n
 //! stored vertices, copies counted, w hole walks) covering the region, as stored indices, each
-//! corner the copy whose sector holds the triangle there; [`minimum`] the exact minimum of a
+//! corner the copy whose sector holds the triangle there; [`flattened`] the same with
+//! `n + 2w - 2 - d` triangles and `d` degenerate ones (T-junctions), never more than [`plain`];
+//! [`minimum`] the exact minimum of a
 //! polygon whose rings all join the outer ring (one walk), by the DP of [`super::asano`] over the
 //! walk. Every decision is an exact orientation test.
 //!
@@ -24,9 +26,29 @@
 //! those of simple polygons applied to the polygon with each copy moved an infinitesimal step
 //! into its sector, which is simple and has the same triangulations.
 //!
-//! Complexity: O(n^2) for [`plain`] in practice (each ear test scans the remaining vertices),
-//! O(n^3) worst case; O(n^3) time and O(n^2) memory for [`minimum`] (chord table by direct
-//! tests), hence its limit [`WALK_DP_LIMIT`]. Chen & Chang's steps and the O(n log n) monotone
+//! [`flattened`] (the minimum algorithms beyond the walk DP) clips the same bridged cycle, but
+//! first drops every position lying strictly between its two cycle neighbours (an angle of
+//! exactly pi; the test is exact), and again whenever clipping an ear makes a neighbour so, as
+//! earcut's `filterPoints` does. Dropping a position keeps every other angle and the region; the
+//! dropped vertex then lies strictly inside a side of the one triangle later built on that stretch
+//! of the cycle, a T-junction, which saves one triangle (`docs/touching.md`, the claim
+//! `T = N + 2(w - t) - 2 - d`). Another position at the same point (a touch point, a bridge
+//! end) has its sector on the far side of that straight stretch (sectors at a point are disjoint,
+//! and the dropped one is a half-plane), so in the polygon with copies moved into their sectors
+//! it lies outside every triangle on the stretch: the ear test lets a vertex strictly inside the
+//! ear's sides `p v` or `v q` pass (any other vertex point strictly inside a cycle edge is
+//! excluded: walk edges and bridges hold none, and a clipped diagonal held no live vertex). It
+//! clips in two orders and keeps the better: the plain one, and a greedy one that first takes
+//! an ear whose clipping makes a neighbour flat (a round of O(1) tests), any ear only when there
+//! is none. The degenerate triangles are read off the triangles (a scan of the dropped vertices
+//! per side); if they do not number exactly the dropped positions, or no ear is found, it returns
+//! `Err` and the caller takes [`plain`]: never a wrong answer.
+//!
+//! Complexity: O(n^2) for [`plain`] and [`flattened`] in practice (each ear test scans the
+//! remaining vertices; the greedy order adds an O(n) round of O(1) tests per ear, the reading
+//! off O(T d)), O(n^3) worst case; [`flattened`] runs the plain order too only up to
+//! [`BOTH_ORDERS_UP_TO`] positions. O(n^3) time and O(n^2) memory for [`minimum`] (chord table
+//! by direct tests), hence its limit [`WALK_DP_LIMIT`]. Chen & Chang's steps and the O(n log n) monotone
 //! sweep do not yet run on walks.
 
 use super::asano::solve_walk;
@@ -40,6 +62,10 @@ pub type Triangles = Vec<[usize; 3]>;
 /// The largest walk (stored vertices, copies counted) [`minimum`] takes: its chord table costs
 /// O(n^3) direct tests.
 pub const WALK_DP_LIMIT: usize = 300;
+
+/// The largest bridged cycle (positions) [`flattened`] clips in both orders, keeping the better;
+/// beyond, the greedy order only (each clipping costs O(n^2) in practice).
+pub const BOTH_ORDERS_UP_TO: usize = 2000;
 
 /// Whether `t` lies strictly inside the angle at `w` from `next` counter-clockwise to `prev`
 /// (closed angle minus the direction of `prev`: the ear's side `p q` may not run back along the
@@ -56,6 +82,55 @@ fn strictly_inside(prev: Point, w: Point, next: Point, t: Point) -> bool {
 /// `Err(what)` if no ear or bridge is found, which the theory excludes (a broken invariant,
 /// reported rather than a wrong answer).
 pub fn plain(polygon: &Polygon) -> Result<Vec<[usize; 3]>, String> {
+    let cycle = bridged(polygon)?;
+    clip(polygon, &cycle, false, false).map(|(triangles, _)| triangles)
+}
+
+/// A triangulation of a polygon with touching rings with degenerate triangles where the
+/// bridged cycle runs straight through a vertex (see the module documentation): the
+/// nondegenerate triangles and the degenerate ones, at most as many triangles as [`plain`].
+///
+/// # Errors
+/// `Err(what)` as [`plain`], or when the degenerate triangles read off the result do not
+/// account for the triangles saved (a broken invariant; the caller falls back to [`plain`]).
+pub fn flattened(polygon: &Polygon) -> Result<(Triangles, Triangles), String> {
+    let cycle = bridged(polygon)?;
+    let greedy = flattened_clip(polygon, &cycle, true);
+    if cycle.len() > BOTH_ORDERS_UP_TO {
+        return greedy;
+    }
+    match (greedy, flattened_clip(polygon, &cycle, false)) {
+        (Ok(g), Ok(o)) => Ok(if o.0.len() < g.0.len() { o } else { g }),
+        (Ok(found), Err(_)) | (Err(_), Ok(found)) => Ok(found),
+        (Err(why), Err(_)) => Err(why),
+    }
+}
+
+/// [`clip`] with flat positions dropped, in the greedy order or the plain one, and the
+/// degenerate triangles read off its triangles (one per dropped position, else `Err`).
+fn flattened_clip(
+    polygon: &Polygon,
+    cycle: &[usize],
+    greedy: bool,
+) -> Result<(Triangles, Triangles), String> {
+    let (triangles, dropped) = clip(polygon, cycle, true, greedy)?;
+    let mut candidates: Vec<usize> = dropped.iter().map(|&k| cycle[k]).collect();
+    candidates.sort_unstable();
+    candidates.dedup();
+    let degenerate = junctions_among(polygon, &triangles, &candidates);
+    if degenerate.len() != dropped.len() || triangles.len() + dropped.len() + 2 != cycle.len() {
+        return Err(format!(
+            "{} degenerate triangles read off for {} vertices passed straight through",
+            degenerate.len(),
+            dropped.len()
+        ));
+    }
+    Ok((triangles, degenerate))
+}
+
+/// The outer walk with every hole walk joined to it by a bridge (see the module documentation),
+/// as a cycle of stored vertices (a bridge's ends appear twice).
+fn bridged(polygon: &Polygon) -> Result<Vec<usize>, String> {
     let pt = |i: usize| polygon.point(i);
     let walks: Vec<Vec<usize>> = (0..=polygon.holes())
         .map(|w| polygon.ring_range(w).collect())
@@ -115,7 +190,7 @@ pub fn plain(polygon: &Polygon) -> Result<Vec<[usize; 3]>, String> {
         joined.extend_from_slice(&outer[o..]);
         outer = joined;
     }
-    clip(polygon, &outer)
+    Ok(outer)
 }
 
 /// Whether the open segment `a b` contains no vertex of `cycles` and crosses none of their
@@ -134,8 +209,18 @@ fn clear<'a>(
     })
 }
 
-/// Ear clipping of one weakly simple cycle of stored vertices (see the module documentation).
-fn clip(polygon: &Polygon, cycle: &[usize]) -> Result<Vec<[usize; 3]>, String> {
+/// Ear clipping of one weakly simple cycle of stored vertices (see the module documentation):
+/// the triangles and, with `flatten`, the number of positions passed straight through.
+///
+/// With `flatten`, every position strictly between its two cycle neighbours is dropped from the
+/// cycle, first and whenever clipping an ear makes one so; a vertex of the cycle lying strictly
+/// inside a side `p v` or `v q` of an ear then does not block it (see the module documentation).
+fn clip(
+    polygon: &Polygon,
+    cycle: &[usize],
+    flatten: bool,
+    greedy: bool,
+) -> Result<(Triangles, Vec<usize>), String> {
     let n = cycle.len();
     let pt = |k: usize| polygon.point(cycle[k]);
     let mut next: Vec<usize> = (0..n).map(|k| (k + 1) % n).collect();
@@ -143,12 +228,44 @@ fn clip(polygon: &Polygon, cycle: &[usize]) -> Result<Vec<[usize; 3]>, String> {
     let mut alive = vec![true; n];
     let mut triangles = Vec::with_capacity(n.saturating_sub(2));
     let mut remaining = n;
-    let mut v = 0;
+    let mut dropped = Vec::new();
+    // Drops the flat positions of `stack` and, in turn, their neighbours that become flat.
+    let mut flatten_from = |stack: &mut Vec<usize>,
+                            next: &mut Vec<usize>,
+                            prev: &mut Vec<usize>,
+                            alive: &mut Vec<bool>,
+                            remaining: &mut usize| {
+        while let Some(k) = stack.pop() {
+            if *remaining <= 3 || !alive[k] {
+                continue;
+            }
+            let (p, q) = (prev[k], next[k]);
+            if strictly_between(pt(p), pt(k), pt(q)) {
+                next[p] = q;
+                prev[q] = p;
+                alive[k] = false;
+                *remaining -= 1;
+                dropped.push(k);
+                stack.extend([p, q]);
+            }
+        }
+    };
+    if flatten {
+        let mut stack: Vec<usize> = (0..n).rev().collect();
+        flatten_from(&mut stack, &mut next, &mut prev, &mut alive, &mut remaining);
+    }
+    let mut v = (0..n).find(|&k| alive[k]).unwrap_or(0);
     let mut misses = 0;
+    // With `greedy`: first look for an ear whose clipping makes a neighbour flat; after a round
+    // without one, take the next ear of any kind.
+    let mut only_flattening = greedy;
     while remaining > 3 {
         let (p, q) = (prev[v], next[v]);
         let (a, b, c) = (pt(p), pt(v), pt(q));
         let ear = cross(a, b, c) > 0
+            && (!only_flattening
+                || strictly_between(pt(prev[p]), a, c)
+                || strictly_between(a, c, pt(next[q])))
             && strictly_inside(pt(prev[p]), a, b, c)
             && strictly_inside(b, c, pt(next[q]), a)
             && (0..n).all(|r| {
@@ -158,6 +275,7 @@ fn clip(polygon: &Polygon, cycle: &[usize]) -> Result<Vec<[usize; 3]>, String> {
                         || s == b
                         || s == c
                         || !(cross(a, b, s) >= 0 && cross(b, c, s) >= 0 && cross(c, a, s) >= 0)
+                        || (flatten && (strictly_between(a, s, b) || strictly_between(b, s, c)))
                 }
             });
         if ear {
@@ -167,11 +285,23 @@ fn clip(polygon: &Polygon, cycle: &[usize]) -> Result<Vec<[usize; 3]>, String> {
             alive[v] = false;
             remaining -= 1;
             misses = 0;
-            v = p;
+            only_flattening = greedy;
+            if flatten {
+                let mut stack = vec![q, p];
+                flatten_from(&mut stack, &mut next, &mut prev, &mut alive, &mut remaining);
+            }
+            v = if alive[p] { p } else { prev[p] };
+            while !alive[v] {
+                v = prev[v];
+            }
         } else {
             misses += 1;
             if misses > remaining {
-                return Err(format!("no ear among {remaining} vertices"));
+                if !only_flattening {
+                    return Err(format!("no ear among {remaining} vertices"));
+                }
+                only_flattening = false;
+                misses = 0;
             }
             v = q;
         }
@@ -184,7 +314,7 @@ fn clip(polygon: &Polygon, cycle: &[usize]) -> Result<Vec<[usize; 3]>, String> {
             return Err("the last three vertices do not make a triangle".to_string());
         }
     }
-    Ok(triangles)
+    Ok((triangles, dropped))
 }
 
 /// Whether the segment between stored vertices `i` and `j` is a chord of the walks (see the
@@ -286,6 +416,17 @@ fn lines_through(polygon: &Polygon, i: usize) -> Vec<u16> {
 /// each point strictly inside it, the copy there whose closed angle holds the triangle, with its
 /// neighbours along the side (as [`super::t_junctions`], one copy per point).
 pub(crate) fn t_junctions(polygon: &Polygon, triangles: &[[usize; 3]]) -> Vec<[usize; 3]> {
+    let all: Vec<usize> = (0..polygon.len()).collect();
+    junctions_among(polygon, triangles, &all)
+}
+
+/// [`t_junctions`] with only the stored vertices `candidates` considered: O(T c) for T triangles
+/// and c candidates.
+fn junctions_among(
+    polygon: &Polygon,
+    triangles: &[[usize; 3]],
+    candidates: &[usize],
+) -> Vec<[usize; 3]> {
     let wedge = |v: usize, t: Point| {
         in_closed_wedge(
             polygon.point(polygon.prev(v)),
@@ -299,7 +440,9 @@ pub(crate) fn t_junctions(polygon: &Polygon, triangles: &[[usize; 3]]) -> Vec<[u
         for k in 0..3 {
             let (s, e, apex) = (t[k], t[(k + 1) % 3], t[(k + 2) % 3]);
             let (ps, pe, pa) = (polygon.point(s), polygon.point(e), polygon.point(apex));
-            let mut inside: Vec<usize> = (0..polygon.len())
+            let mut inside: Vec<usize> = candidates
+                .iter()
+                .copied()
                 .filter(|&v| {
                     let q = polygon.point(v);
                     strictly_between(ps, q, pe) && wedge(v, ps) && wedge(v, pe) && wedge(v, pa)
