@@ -30,7 +30,7 @@
 //! sweep do not yet run on walks.
 
 use super::asano::solve_walk;
-use crate::geom::kernel::{cross, dot, in_closed_wedge, properly_cross, strictly_between, Point};
+use crate::geom::kernel::{cross, dot, in_closed_wedge, properly_cross, strictly_between, Coord};
 use crate::geom::polygon::Polygon;
 use std::collections::HashMap;
 
@@ -44,7 +44,7 @@ pub const WALK_DP_LIMIT: usize = 300;
 /// Whether `t` lies strictly inside the angle at `w` from `next` counter-clockwise to `prev`
 /// (closed angle minus the direction of `prev`: the ear's side `p q` may not run back along the
 /// edge into `p`).
-fn strictly_inside(prev: Point, w: Point, next: Point, t: Point) -> bool {
+fn strictly_inside<P: Coord>(prev: P, w: P, next: P, t: P) -> bool {
     in_closed_wedge(prev, w, next, t)
         && !(cross(w, prev, t) == 0 && dot(w, prev, t) > 0)
         && !(cross(w, next, t) == 0 && dot(w, next, t) > 0)
@@ -55,7 +55,7 @@ fn strictly_inside(prev: Point, w: Point, next: Point, t: Point) -> bool {
 /// # Errors
 /// `Err(what)` if no ear or bridge is found, which the theory excludes (a broken invariant,
 /// reported rather than a wrong answer).
-pub fn plain(polygon: &Polygon) -> Result<Vec<[usize; 3]>, String> {
+pub fn plain<P: Coord>(polygon: &Polygon<P>) -> Result<Vec<[usize; 3]>, String> {
     let pt = |i: usize| polygon.point(i);
     let walks: Vec<Vec<usize>> = (0..=polygon.holes())
         .map(|w| polygon.ring_range(w).collect())
@@ -66,16 +66,13 @@ pub fn plain(polygon: &Polygon) -> Result<Vec<[usize; 3]>, String> {
     holes.sort_by_key(|h| std::cmp::Reverse(h.iter().map(|&i| pt(i)).max()));
     for k in 0..holes.len() {
         let hole = &holes[k];
-        let top = hole.iter().map(|&i| pt(i)).max().unwrap_or_default();
+        let top = hole
+            .iter()
+            .map(|&i| pt(i))
+            .max()
+            .unwrap_or_else(|| pt(outer[0]));
         let mut candidates: Vec<usize> = (0..outer.len()).collect();
-        let dist = |i: usize| {
-            let (dx, dy) = (
-                i128::from(pt(i).x) - i128::from(top.x),
-                i128::from(pt(i).y) - i128::from(top.y),
-            );
-            dx * dx + dy * dy
-        };
-        candidates.sort_by_key(|&o| dist(outer[o]));
+        candidates.sort_by(|&o, &q| P::cmp_dist(top, pt(outer[o]), pt(outer[q])));
         let m = hole.len();
         let rest: Vec<&Vec<usize>> = holes[k + 1..].iter().collect();
         let mut bridge = None;
@@ -120,10 +117,10 @@ pub fn plain(polygon: &Polygon) -> Result<Vec<[usize; 3]>, String> {
 
 /// Whether the open segment `a b` contains no vertex of `cycles` and crosses none of their
 /// edges properly.
-fn clear<'a>(
-    polygon: &Polygon,
-    a: Point,
-    b: Point,
+fn clear<'a, P: Coord>(
+    polygon: &Polygon<P>,
+    a: P,
+    b: P,
     cycles: impl Iterator<Item = &'a Vec<usize>>,
 ) -> bool {
     cycles.into_iter().all(|c| {
@@ -135,7 +132,7 @@ fn clear<'a>(
 }
 
 /// Ear clipping of one weakly simple cycle of stored vertices (see the module documentation).
-fn clip(polygon: &Polygon, cycle: &[usize]) -> Result<Vec<[usize; 3]>, String> {
+fn clip<P: Coord>(polygon: &Polygon<P>, cycle: &[usize]) -> Result<Vec<[usize; 3]>, String> {
     let n = cycle.len();
     let pt = |k: usize| polygon.point(cycle[k]);
     let mut next: Vec<usize> = (0..n).map(|k| (k + 1) % n).collect();
@@ -189,12 +186,12 @@ fn clip(polygon: &Polygon, cycle: &[usize]) -> Result<Vec<[usize; 3]>, String> {
 
 /// Whether the segment between stored vertices `i` and `j` is a chord of the walks (see the
 /// module documentation; it may run along edges and pass vertices).
-pub(crate) fn is_chord(polygon: &Polygon, i: usize, j: usize) -> bool {
+pub(crate) fn is_chord<P: Coord>(polygon: &Polygon<P>, i: usize, j: usize) -> bool {
     let (a, b) = (polygon.point(i), polygon.point(j));
     if a == b {
         return false;
     }
-    let wedge = |v: usize, t: Point| {
+    let wedge = |v: usize, t: P| {
         in_closed_wedge(
             polygon.point(polygon.prev(v)),
             polygon.point(v),
@@ -205,7 +202,7 @@ pub(crate) fn is_chord(polygon: &Polygon, i: usize, j: usize) -> bool {
     if !wedge(i, b) || !wedge(j, a) {
         return false;
     }
-    let mut passed: HashMap<Point, bool> = HashMap::new();
+    let mut passed: HashMap<P, bool> = HashMap::new();
     for v in 0..polygon.len() {
         let (u, w) = (polygon.point(v), polygon.point(polygon.next(v)));
         if properly_cross(a, b, u, w) {
@@ -222,7 +219,7 @@ pub(crate) fn is_chord(polygon: &Polygon, i: usize, j: usize) -> bool {
 /// The exact minimum triangulation of a polygon whose rings all join the outer ring (one walk,
 /// at most [`WALK_DP_LIMIT`] stored vertices): the nondegenerate triangles and the degenerate
 /// ones (as [`super::Triangulation`] has them), or `None` beyond the limit or with hole walks.
-pub fn minimum(polygon: &Polygon) -> Option<(Triangles, Triangles)> {
+pub fn minimum<P: Coord>(polygon: &Polygon<P>) -> Option<(Triangles, Triangles)> {
     let n = polygon.len();
     if polygon.holes() > 0 || n > WALK_DP_LIMIT {
         return None;
@@ -252,25 +249,26 @@ pub fn minimum(polygon: &Polygon) -> Option<(Triangles, Triangles)> {
 /// Line numbers through stored vertex `i` (as `solve_walk` wants them: equal for `q` and `r`
 /// exactly when `i`, `q`, `r` are collinear; vertices at `i`'s own point get numbers of their
 /// own).
-fn lines_through(polygon: &Polygon, i: usize) -> Vec<u16> {
+fn lines_through<P: Coord>(polygon: &Polygon<P>, i: usize) -> Vec<u16> {
     let n = polygon.len();
     let c = polygon.point(i);
     // Each direction turned into the upper half-plane, so opposite directions are one line.
     let key = |q: usize| {
         let p = polygon.point(q);
-        let (dx, dy) = (p.x - c.x, p.y - c.y);
-        if dy < 0 || (dy == 0 && dx < 0) {
-            Point::new(c.x - dx, c.y - dy)
+        let v = P::vector(c, p);
+        let below = P::cmp_y(p, c).then(P::cmp_x(p, c)).is_lt();
+        if below {
+            P::reversed(v)
         } else {
-            p
+            v
         }
     };
     let mut others: Vec<usize> = (0..n).filter(|&q| polygon.point(q) != c).collect();
-    others.sort_by(|&q, &r| 0.cmp(&cross(c, key(q), key(r))));
+    others.sort_by(|&q, &r| 0.cmp(&P::vector_cross(key(q), key(r)).signum()));
     let mut out = vec![0u16; n];
     let mut line = 0u16;
     for (k, &q) in others.iter().enumerate() {
-        if k > 0 && cross(c, key(others[k - 1]), key(q)) != 0 {
+        if k > 0 && P::vector_cross(key(others[k - 1]), key(q)) != 0 {
             line += 1;
         }
         out[q] = line;
@@ -285,8 +283,11 @@ fn lines_through(polygon: &Polygon, i: usize) -> Vec<u16> {
 /// The degenerate triangles a set of triangles of the walks uses: for each triangle side and
 /// each point strictly inside it, the copy there whose closed angle holds the triangle, with its
 /// neighbours along the side (as [`super::t_junctions`], one copy per point).
-pub(crate) fn t_junctions(polygon: &Polygon, triangles: &[[usize; 3]]) -> Vec<[usize; 3]> {
-    let wedge = |v: usize, t: Point| {
+pub(crate) fn t_junctions<P: Coord>(
+    polygon: &Polygon<P>,
+    triangles: &[[usize; 3]],
+) -> Vec<[usize; 3]> {
+    let wedge = |v: usize, t: P| {
         in_closed_wedge(
             polygon.point(polygon.prev(v)),
             polygon.point(v),
@@ -308,7 +309,7 @@ pub(crate) fn t_junctions(polygon: &Polygon, triangles: &[[usize; 3]]) -> Vec<[u
             if inside.is_empty() {
                 continue;
             }
-            inside.sort_by_key(|&v| dot(ps, polygon.point(v), polygon.point(v)));
+            inside.sort_by(|&u, &v| P::cmp_dist(ps, polygon.point(u), polygon.point(v)));
             inside.dedup_by_key(|v| polygon.point(*v));
             super::push_chain(&mut out, s, inside, e);
         }

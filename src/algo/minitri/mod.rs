@@ -30,6 +30,7 @@ pub mod small;
 mod staircase;
 
 use super::{Algorithm, TriangulateError, Triangulation};
+use crate::geom::kernel::Coord;
 use crate::geom::polygon::Polygon;
 use std::time::{Duration, Instant};
 
@@ -41,7 +42,7 @@ pub const DEFAULT_TIME_LIMIT: Duration = Duration::from_secs(10);
 ///
 /// # Errors
 /// Those of [`triangulate_within`].
-pub fn triangulate(polygon: &Polygon) -> Result<Triangulation, TriangulateError> {
+pub fn triangulate<P: Coord>(polygon: &Polygon<P>) -> Result<Triangulation, TriangulateError> {
     triangulate_within(polygon, Instant::now().checked_add(DEFAULT_TIME_LIMIT))
 }
 
@@ -51,8 +52,8 @@ pub fn triangulate(polygon: &Polygon) -> Result<Triangulation, TriangulateError>
 /// # Errors
 /// Without holes, none for valid polygons; with holes, those of [`triangulate_general`] (not
 /// seen in the tests).
-pub fn triangulate_within(
-    polygon: &Polygon,
+pub fn triangulate_within<P: Coord>(
+    polygon: &Polygon<P>,
     deadline: Option<Instant>,
 ) -> Result<Triangulation, TriangulateError> {
     if polygon.touches() > 0 {
@@ -99,8 +100,8 @@ pub fn triangulate_within(
 /// # Errors
 /// [`TriangulateError::MinitriCutFailed`] if a self-check of the cut step fails (see [`cut`];
 /// not seen in the tests).
-pub fn triangulate_general(
-    polygon: &Polygon,
+pub fn triangulate_general<P: Coord>(
+    polygon: &Polygon<P>,
     deadline: Option<Instant>,
 ) -> Result<Triangulation, TriangulateError> {
     let (mdts, base) = degenerate::minimally_degenerate_and_mesh(polygon);
@@ -126,7 +127,7 @@ pub fn triangulate_general(
 /// `ceil((n - f) / 3)` (every vertex but a flat one is a corner of a triangle). No subtraction
 /// can wrap: `d_upper` is at most the number of distinct middle vertices (each component's bound
 /// is capped by its middles), which is below `n`, and the subtraction saturates all the same.
-fn lower_bound(polygon: &Polygon, d_upper: usize) -> usize {
+fn lower_bound<P: Coord>(polygon: &Polygon<P>, d_upper: usize) -> usize {
     let (corners, plain) = polygon.minimum_bounds();
     plain.saturating_sub(d_upper).max(corners)
 }
