@@ -7,9 +7,15 @@
 //!   `property.rs`) and on the same polygons moved to grids that force the wide kernel: shifted
 //!   by `1e-20` (signs from the floating-point filter), and scaled by `10^-200` and shifted by
 //!   `10^-220` (beyond the filter's range: every sign exact in big integers).
+//! - rings that touch (OGC touches, `src/geom/touch.rs`) and `--repair` (`src/geom/repair.rs`)
+//!   on the wide kernel: a touching polygon and a repairable one written with full-precision
+//!   doubles, accepted (repaired) and triangulated; and random touching or invalid polygons (the
+//!   generator of `touching.rs`) giving the same validation, repairs and counts on the wide grids
+//!   as on their integer grid.
 
 use crate::property::{config, general, rectilinear, without_flat};
 use minitri::algo::{asano, ear, minitri as chen_chang};
+use minitri::geom::repair::RepairKind;
 use minitri::{verify, Algorithm, AnyPolygon, Decimal, Format, Options, RawPolygon};
 use proptest::prelude::*;
 
@@ -156,4 +162,229 @@ proptest! {
     ) {
         same_counts_on_wide_grids(&rectilinear(start, &ops))?;
     }
+}
+
+/// One polygon's outcomes as text, one each piece, of `minitri::process` on WKT `text`.
+fn outcomes(text: &str, algorithm: Algorithm, repair: bool) -> Vec<minitri::Outcome> {
+    let options = Options {
+        algorithm,
+        verify: true,
+        repair,
+        ..Options::default()
+    };
+    minitri::process("wide", text, Format::Wkt, &options)
+}
+
+#[test]
+fn touching_rings_of_full_precision_doubles_are_accepted_and_triangulated() {
+    // Hole 1 touches the outer ring's left edge at (-179.99999999999997, 1.2345678901234567e-5)
+    // (a vertex of the hole strictly inside the edge) and hole 2 at the vertex
+    // (-90.12345678901234, 30.000000000000004) they share: two touches, one boundary walk.
+    let text = "POLYGON ((-179.99999999999997 -85.05112877980659, \
+        179.99999999999997 -85.05112877980659, 179.99999999999997 85.05112877980659, \
+        -179.99999999999997 85.05112877980659, -179.99999999999997 -85.05112877980659), \
+        (-179.99999999999997 0.000012345678901234567, -90.12345678901234 30.000000000000004, \
+        -90.12345678901234 -29.999999999999996, -179.99999999999997 0.000012345678901234567), \
+        (-90.12345678901234 30.000000000000004, 0.1 45.00000000000001, \
+        0.30000000000000004 10.5, -90.12345678901234 30.000000000000004))";
+    let mut minimum = None;
+    for algorithm in [Algorithm::Minitri, Algorithm::Asano, Algorithm::Ear] {
+        let o = &outcomes(text, algorithm, false)[0];
+        let polygon = o
+            .polygon
+            .as_ref()
+            .expect("valid: the rings touch as OGC allows");
+        assert!(polygon.is_wide(), "the grid does not fit 2^62 units");
+        assert_eq!((polygon.touches(), polygon.holes()), (2, 0));
+        // 4 + 3 + 3 vertices, and hole 1's vertex on the outer edge also in that edge.
+        assert_eq!(polygon.len(), 11);
+        let solved = o.result.as_ref().expect("triangulated");
+        let v = solved.verification.as_ref().expect("verified");
+        assert!(v.ok, "{algorithm}: {v:?}");
+        let t = &solved.triangulation;
+        assert_eq!(t.triangles.len() + t.degenerate.len(), 11 - 2);
+        if algorithm.is_minimum() {
+            assert!(
+                t.optimal,
+                "{algorithm}: one walk of 11 is within the walk DP"
+            );
+            let count = t.triangles.len();
+            assert_eq!(*minimum.get_or_insert(count), count, "{algorithm}");
+        }
+    }
+    // The JSON carries the touches, as on the fast kernel.
+    let json = minitri::io::write::json::render(&outcomes(text, Algorithm::Minitri, false)[0])
+        .expect("a solved outcome");
+    assert!(json.contains("\"touches\": 2"), "{json}");
+}
+
+#[test]
+fn a_repairable_polygon_of_full_precision_doubles_is_repaired_and_triangulated() {
+    // A figure eight through (1.2345678901234567e-5, 0.30000000000000004), with a spike at
+    // (179.99999999999997, -85.05112877980659) (the boundary runs there and back along y =
+    // -85.05112877980659): rejected as it is; --repair removes the spike and splits the ring
+    // into two triangles.
+    let centre = "0.000012345678901234567 0.30000000000000004";
+    let text = format!(
+        "POLYGON ((-179.99999999999997 -85.05112877980659, \
+        179.99999999999997 -85.05112877980659, 90.00000000000001 -85.05112877980659, \
+        {centre}, 179.99999999999997 85.05112877980659, -179.99999999999997 85.05112877980659, \
+        {centre}, -179.99999999999997 -85.05112877980659))"
+    );
+    let as_is = &outcomes(&text, Algorithm::Minitri, false)[0];
+    assert!(as_is.polygon.is_none());
+    let message = match &as_is.result {
+        Err(e) => e.messages().join("; "),
+        Ok(_) => panic!("a spike and a self-touching ring are invalid"),
+    };
+    assert!(message.contains("spike"), "{message}");
+    for algorithm in [Algorithm::Minitri, Algorithm::Asano, Algorithm::Ear] {
+        let pieces = outcomes(&text, algorithm, true);
+        assert_eq!(
+            pieces.len(),
+            2,
+            "{algorithm}: a figure eight gives two polygons"
+        );
+        for (k, o) in pieces.iter().enumerate() {
+            assert_eq!(o.piece, Some(k));
+            let polygon = o.polygon.as_ref().expect("each piece valid");
+            assert!(polygon.is_wide());
+            assert_eq!(polygon.len(), 3);
+            let solved = o.result.as_ref().expect("triangulated");
+            assert!(solved.verification.as_ref().is_some_and(|v| v.ok));
+            assert_eq!(solved.triangulation.triangles.len(), 1);
+            let kinds: Vec<RepairKind> = o
+                .repaired
+                .as_ref()
+                .expect("--repair")
+                .iter()
+                .map(|r| r.kind)
+                .collect();
+            assert_eq!(
+                kinds,
+                [RepairKind::Spike, RepairKind::SplitRing],
+                "{:?}",
+                o.repaired
+            );
+        }
+        let spike = &pieces[0].repaired.as_ref().expect("--repair")[0].message;
+        assert!(
+            spike.contains("spike at vertex 1 (179.99999999999997, -85.05112877980659) removed"),
+            "{spike}"
+        );
+    }
+}
+
+/// What validation and `--repair` make of `raw`, in terms that do not depend on the grid: for
+/// each outcome (piece), the repairs' kinds, the kinds of the problems or the polygon's
+/// vertices, holes and touches and the counts of every algorithm given (each output verified).
+fn summary(raw: &RawPolygon, repair: bool, algorithms: &[Algorithm], wide: bool) -> Vec<String> {
+    let mut out = Vec::new();
+    for algorithm in algorithms {
+        let options = Options {
+            algorithm: *algorithm,
+            verify: true,
+            repair,
+            ..Options::default()
+        };
+        for o in minitri::pipeline::process_raw("wide", 0, raw.clone(), &options) {
+            let repairs: Vec<RepairKind> = o.repaired.iter().flatten().map(|r| r.kind).collect();
+            let line = match (&o.result, &o.polygon) {
+                (Err(minitri::Error::Invalid(errors)), _) => format!(
+                    "{repairs:?} invalid {:?}",
+                    errors
+                        .iter()
+                        .map(std::mem::discriminant)
+                        .collect::<Vec<_>>()
+                ),
+                (Err(e), _) => format!("{repairs:?} {algorithm} failed: {e}"),
+                (Ok(solved), Some(p)) => {
+                    assert_eq!(p.is_wide(), wide, "the kernel its coordinates need");
+                    let v = solved.verification.as_ref().expect("verified");
+                    assert!(v.ok, "{algorithm}: {v:?}");
+                    let t = &solved.triangulation;
+                    format!(
+                        "{repairs:?} n {} holes {} touches {} {algorithm} {} + {} optimal {}",
+                        p.len(),
+                        p.holes(),
+                        p.touches(),
+                        t.triangles.len(),
+                        t.degenerate.len(),
+                        t.optimal
+                    )
+                }
+                (Ok(_), None) => unreachable!("a solved outcome has its polygon"),
+            };
+            out.push(line);
+        }
+    }
+    out
+}
+
+#[test]
+fn touching_rings_and_repairs_give_the_same_outcomes_on_wide_grids() {
+    // The touching-ring generator of touching.rs (coordinates 0..=6; touches common, invalid
+    // polygons common): validation, every algorithm and --repair on the grid as is (fast) and
+    // moved to grids that force the wide kernel must agree in everything but the coordinates.
+    let mut rnd = crate::util::xorshift(0x71de_70c4);
+    let (mut invalid, mut repaired, mut valid, mut touching) = (0, 0, 0, 0);
+    let algorithms = [Algorithm::Minitri, Algorithm::Asano, Algorithm::Ear];
+    let mut tries = 0;
+    while (invalid < 600 || touching < 100) && tries < 200_000 {
+        tries += 1;
+        let Some(rings) = crate::touching::random_rings(&mut rnd) else {
+            continue;
+        };
+        let fast = crate::touching::raw(&rings);
+        let moved = |f: &dyn Fn(i64) -> String| RawPolygon {
+            rings: rings
+                .iter()
+                .map(|r| {
+                    r.iter()
+                        .map(|&(x, y)| {
+                            [
+                                Decimal::parse(&f(x)).unwrap(),
+                                Decimal::parse(&f(y)).unwrap(),
+                            ]
+                        })
+                        .collect()
+                })
+                .collect(),
+        };
+        let shifted = moved(&|v| format!("{v}.00000000000000000001"));
+        let tiny = moved(&|v| format!("{v}.00000000000000000001e-200"));
+        let Ok((p, _)) = AnyPolygon::from_raw(&fast) else {
+            if invalid >= 600 {
+                continue;
+            }
+            // Invalid: compare what --repair makes of it.
+            let want = summary(&fast, true, &algorithms[..1], false);
+            if want.iter().any(|l| !l.contains("invalid")) {
+                repaired += 1;
+            }
+            for wide in [&shifted, &tiny] {
+                assert!(AnyPolygon::from_raw(wide).is_err(), "{rings:?}");
+                assert_eq!(
+                    summary(wide, true, &algorithms[..1], true),
+                    want,
+                    "{rings:?}"
+                );
+            }
+            invalid += 1;
+            continue;
+        };
+        assert!(!p.is_wide());
+        touching += usize::from(p.touches() > 0);
+        let want = summary(&fast, false, &algorithms, false);
+        for wide in [&shifted, &tiny] {
+            let (w, _) = AnyPolygon::from_raw(wide).expect("valid on every grid");
+            assert!(w.is_wide(), "{rings:?}");
+            assert_eq!(summary(wide, false, &algorithms, true), want, "{rings:?}");
+        }
+        valid += 1;
+    }
+    assert!(
+        invalid == 600 && repaired > 150 && touching >= 100,
+        "{invalid} {repaired} {valid} {touching}"
+    );
 }
