@@ -38,7 +38,6 @@ def run(path, repair):
 def reason(message):
     """The error's kind, in a few words, from its message."""
     kinds = [
-        ("coordinates too large", "coordinates too large"),
         ("the rings touch", "rings touch at a vertex"),
         ("rings touch", "rings touch (vertex on an edge)"),
         ("the ring touches itself", "ring touches itself"),

@@ -9,9 +9,10 @@
 //!   duplicates dropped, as minitri's reader does).
 //! - Not timed: reading the files. minitri starts from its reader's exact decimals, earcut from
 //!   the parsed `f64` pairs.
-//! - minitri rejects 47 of the 59 (rings sharing a vertex, touching or overlapping, spikes,
-//!   rings of one or two distinct points, coordinates too large for exact arithmetic;
-//!   `fixtures/earcut/expected.tsv` lists why), and a rejected fixture costs only its
+//! - minitri rejected 47 of the 59 when docs/benchmarks.md's figures were taken (rings sharing
+//!   a vertex, touching or overlapping, spikes, rings of one or two distinct points, coordinates
+//!   beyond the fast kernel's grid, which `Polygon::from_raw` still refuses;
+//!   `fixtures/earcut/expected.tsv` lists today's outcomes), and a rejected fixture costs only its
 //!   validation, while earcut triangulates it. So there are two
 //!   groups: `earcut_fixtures_all` (all 59) and `earcut_fixtures_accepted` (the 12 minitri
 //!   triangulates: the same work for both, apples to apples).

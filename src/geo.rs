@@ -26,7 +26,7 @@
 
 use crate::algo::Triangulation;
 use crate::geom::decimal::{Decimal, NumberError};
-use crate::geom::polygon::{Polygon, Ring, Warning};
+use crate::geom::polygon::{AnyPolygon, Polygon, Ring, Warning};
 use crate::io::read::{ParseError, RawPolygon};
 use crate::pipeline::Error;
 use geo_types::{Coord, CoordNum, LineString, MultiPolygon, Triangle};
@@ -102,9 +102,10 @@ fn raw<T: ExactCoord>(polygon: &geo_types::Polygon<T>, index: usize) -> Result<R
     Ok(RawPolygon { rings })
 }
 
-/// Validates a polygon (duplicate consecutive vertices are dropped silently).
-fn valid(raw: &RawPolygon) -> Result<Polygon, Error> {
-    Polygon::from_raw_all_errors(raw)
+/// Validates a polygon on the kernel its coordinates need (duplicate consecutive vertices are
+/// dropped silently).
+fn valid(raw: &RawPolygon) -> Result<AnyPolygon, Error> {
+    AnyPolygon::from_raw_all_errors(raw)
         .map(|(polygon, _warnings)| polygon)
         .map_err(Error::Invalid)
 }
@@ -148,13 +149,30 @@ impl<T: ExactCoord> TryFrom<&geo_types::Polygon<T>> for RawPolygon {
 impl<T: ExactCoord> TryFrom<&geo_types::Polygon<T>> for Polygon {
     type Error = Error;
 
-    /// The validated polygon (consecutive duplicate vertices are dropped, as
+    /// The validated polygon on the fast kernel (consecutive duplicate vertices are dropped, as
     /// [`Polygon::from_raw`] does, without a warning: [`polygon_with_warnings`] returns them).
     ///
     /// # Errors
     /// [`Error::Parse`] for a NaN or infinite coordinate, [`Error::Invalid`] with every problem
-    /// of an invalid polygon.
+    /// of an invalid polygon, or with [`crate::InvalidPolygon::CoordinatesTooLarge`] when its
+    /// coordinates need the wide kernel: [`AnyPolygon`] takes every polygon.
     fn try_from(polygon: &geo_types::Polygon<T>) -> Result<Polygon, Error> {
+        Polygon::from_raw_all_errors(&raw(polygon, 0)?)
+            .map(|(polygon, _warnings)| polygon)
+            .map_err(Error::Invalid)
+    }
+}
+
+impl<T: ExactCoord> TryFrom<&geo_types::Polygon<T>> for AnyPolygon {
+    type Error = Error;
+
+    /// The validated polygon on the kernel its coordinates need: any coordinates, e.g. `f64`s
+    /// of full precision (consecutive duplicate vertices are dropped without a warning).
+    ///
+    /// # Errors
+    /// [`Error::Parse`] for a NaN or infinite coordinate, [`Error::Invalid`] with every problem
+    /// of an invalid polygon.
+    fn try_from(polygon: &geo_types::Polygon<T>) -> Result<AnyPolygon, Error> {
         valid(&raw(polygon, 0)?)
     }
 }
@@ -167,10 +185,10 @@ pub fn raw_polygons<T: ExactCoord>(multi: &MultiPolygon<T>) -> Result<Vec<RawPol
     multi.iter().enumerate().map(|(i, p)| raw(p, i)).collect()
 }
 
-/// Every polygon of a multipolygon, validated, in order: one bad polygon does not stop the
-/// others. Each error is [`Error::Parse`] for a NaN or infinite coordinate or [`Error::Invalid`]
-/// with every problem of an invalid polygon.
-pub fn polygons<T: ExactCoord>(multi: &MultiPolygon<T>) -> Vec<Result<Polygon, Error>> {
+/// Every polygon of a multipolygon, validated on the kernel its coordinates need, in order: one
+/// bad polygon does not stop the others. Each error is [`Error::Parse`] for a NaN or infinite
+/// coordinate or [`Error::Invalid`] with every problem of an invalid polygon.
+pub fn polygons<T: ExactCoord>(multi: &MultiPolygon<T>) -> Vec<Result<AnyPolygon, Error>> {
     multi
         .iter()
         .enumerate()
@@ -179,14 +197,14 @@ pub fn polygons<T: ExactCoord>(multi: &MultiPolygon<T>) -> Vec<Result<Polygon, E
 }
 
 /// Each stored vertex as `f64` coordinates: the input decimal, correctly rounded.
-fn corners(polygon: &Polygon) -> Vec<Coord<f64>> {
+fn corners<P: crate::geom::kernel::Coord>(polygon: &Polygon<P>) -> Vec<Coord<f64>> {
     let grid = polygon.grid();
     polygon
         .points()
         .iter()
         .map(|&p| {
             // The exact decimal text parses to the nearest f64; it is always a valid literal.
-            let [x, y] = [grid.format(0, p.x), grid.format(1, p.y)].map(|text| {
+            let [x, y] = [p.format(grid, 0), p.format(grid, 1)].map(|text| {
                 text.parse::<f64>()
                     .unwrap_or_else(|_| Decimal::parse(&text).map_or(f64::NAN, |d| d.to_f64()))
             });
@@ -196,7 +214,10 @@ fn corners(polygon: &Polygon) -> Vec<Coord<f64>> {
 }
 
 /// The triples of `list` as geo-types triangles; triples with an index out of range are skipped.
-fn to_triangles(polygon: &Polygon, list: &[[usize; 3]]) -> Vec<Triangle<f64>> {
+fn to_triangles<P: crate::geom::kernel::Coord>(
+    polygon: &Polygon<P>,
+    list: &[[usize; 3]],
+) -> Vec<Triangle<f64>> {
     let at = corners(polygon);
     list.iter()
         .filter_map(|&[a, b, c]| Some(Triangle::new(*at.get(a)?, *at.get(b)?, *at.get(c)?)))
@@ -205,21 +226,42 @@ fn to_triangles(polygon: &Polygon, list: &[[usize; 3]]) -> Vec<Triangle<f64>> {
 
 /// The triangles of `t`, counter-clockwise, with the input coordinates (see the module
 /// documentation for their exactness).
-pub fn triangles(polygon: &Polygon, t: &Triangulation) -> Vec<Triangle<f64>> {
+pub fn triangles<P: crate::geom::kernel::Coord>(
+    polygon: &Polygon<P>,
+    t: &Triangulation,
+) -> Vec<Triangle<f64>> {
     to_triangles(polygon, &t.triangles)
 }
 
 /// The degenerate triangles `[a, b, c]` of `t` (zero area: `b` lies between `a` and `c`, a
 /// T-junction), in that order of corners.
-pub fn degenerate(polygon: &Polygon, t: &Triangulation) -> Vec<Triangle<f64>> {
+pub fn degenerate<P: crate::geom::kernel::Coord>(
+    polygon: &Polygon<P>,
+    t: &Triangulation,
+) -> Vec<Triangle<f64>> {
     to_triangles(polygon, &t.degenerate)
 }
 
 /// The triangles of `t` as one multipolygon of closed counter-clockwise rings, e.g. for WKT or
 /// GeoJSON output.
-pub fn multi_polygon(polygon: &Polygon, t: &Triangulation) -> MultiPolygon<f64> {
+pub fn multi_polygon<P: crate::geom::kernel::Coord>(
+    polygon: &Polygon<P>,
+    t: &Triangulation,
+) -> MultiPolygon<f64> {
     triangles(polygon, t)
         .into_iter()
         .map(|triangle| triangle.to_polygon())
         .collect()
+}
+
+impl AnyPolygon {
+    /// The triangles of `t` (made for this polygon) with the input coordinates, as [`triangles`].
+    pub fn geo_triangles(&self, t: &Triangulation) -> Vec<Triangle<f64>> {
+        crate::with_polygon!(self, p => triangles(p, t))
+    }
+
+    /// The triangles of `t` as one multipolygon, as [`multi_polygon`].
+    pub fn geo_multi_polygon(&self, t: &Triangulation) -> MultiPolygon<f64> {
+        crate::with_polygon!(self, p => multi_polygon(p, t))
+    }
 }

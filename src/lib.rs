@@ -67,6 +67,19 @@
 /// Implements `PartialEq`, `Eq` and `PartialOrd` from a type's hand-written `Ord::cmp`, for the
 /// sweep-status keys whose order is geometric (`chords`, `validate`, `monotone`).
 macro_rules! order_from_cmp {
+    ($t:ident<$p:ident>) => {
+        impl<$p: crate::geom::kernel::Coord> PartialEq for $t<$p> {
+            fn eq(&self, other: &Self) -> bool {
+                self.cmp(other) == std::cmp::Ordering::Equal
+            }
+        }
+        impl<$p: crate::geom::kernel::Coord> Eq for $t<$p> {}
+        impl<$p: crate::geom::kernel::Coord> PartialOrd for $t<$p> {
+            fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
+                Some(self.cmp(other))
+            }
+        }
+    };
     ($t:ty) => {
         impl PartialEq for $t {
             fn eq(&self, other: &Self) -> bool {
@@ -97,8 +110,10 @@ pub use algo::{
     Algorithm, Pseudotriangle, Pseudotriangulation, Stopped, TriangulateError, Triangulation,
 };
 pub use geom::decimal::{Decimal, NumberError};
-pub use geom::polygon::{Polygon, Ring, Warning};
+pub use geom::kernel::{Coord, Point};
+pub use geom::polygon::{AnyPolygon, Polygon, Ring, Warning};
 pub use geom::validate::InvalidPolygon;
+pub use geom::wide::WidePoint;
 pub use io::read::{Format, ParseError, RawPolygon};
 pub use pipeline::{
     process, pseudotriangulate, solve, triangulate, triangulate_with, Error, Options, Outcome,

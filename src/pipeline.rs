@@ -10,7 +10,8 @@ use crate::algo::{
     Triangulation,
 };
 use crate::feature::Identity;
-use crate::geom::polygon::{Polygon, Warning};
+use crate::geom::kernel::Coord;
+use crate::geom::polygon::{AnyPolygon, Polygon, Warning};
 use crate::geom::repair::{self, Repair};
 use crate::geom::validate::InvalidPolygon;
 use crate::io::read::{self, Format, ParseError, RawPolygon};
@@ -133,8 +134,8 @@ pub struct Outcome {
     /// With `--repair`, when the polygon was split into several: this piece's position among
     /// them (from 0).
     pub piece: Option<usize>,
-    /// The validated polygon, when it is valid.
-    pub polygon: Option<Polygon>,
+    /// The validated polygon, when it is valid (on the kernel chosen for it).
+    pub polygon: Option<AnyPolygon>,
     /// The triangulation, or what went wrong.
     pub result: Result<Solved, Error>,
     /// What the tool changed in the input (dropped duplicate vertices).
@@ -229,8 +230,8 @@ impl fmt::Display for Outcome {
 /// assert_eq!((t.triangles.len(), t.degenerate.len()), (2, 1));
 /// # Ok::<(), minitri::Error>(())
 /// ```
-pub fn triangulate(
-    polygon: &Polygon,
+pub fn triangulate<P: Coord>(
+    polygon: &Polygon<P>,
     algorithm: Algorithm,
 ) -> Result<Triangulation, TriangulateError> {
     triangulate_with(polygon, algorithm, &Options::default())
@@ -264,8 +265,8 @@ pub fn triangulate(
 /// );
 /// # Ok::<(), minitri::Error>(())
 /// ```
-pub fn triangulate_with(
-    polygon: &Polygon,
+pub fn triangulate_with<P: Coord>(
+    polygon: &Polygon<P>,
     algorithm: Algorithm,
     options: &Options,
 ) -> Result<Triangulation, TriangulateError> {
@@ -284,6 +285,24 @@ pub fn triangulate_with(
                 .and_then(|limit| std::time::Instant::now().checked_add(limit));
             minitri::triangulate_within(polygon, deadline)
         }
+    }
+}
+
+impl AnyPolygon {
+    /// Triangulates the polygon, on whichever kernel holds it, as [`triangulate`] does.
+    ///
+    /// # Errors
+    /// [`TriangulateError`] when the algorithm does not apply (holes, size).
+    pub fn triangulate(&self, algorithm: Algorithm) -> Result<Triangulation, TriangulateError> {
+        crate::with_polygon!(self, p => triangulate(p, algorithm))
+    }
+
+    /// Triangulates as `options` say, verifying if asked, as [`solve`] does.
+    ///
+    /// # Errors
+    /// [`Error::Triangulate`] when the chosen algorithm does not apply.
+    pub fn solve(&self, options: &Options) -> Result<Solved, Error> {
+        crate::with_polygon!(self, p => solve(p, options))
     }
 }
 
@@ -312,8 +331,8 @@ pub fn triangulate_with(
 /// assert!(minitri::pseudotriangulate(&polygon, Algorithm::Minitri).is_err());
 /// # Ok::<(), minitri::Error>(())
 /// ```
-pub fn pseudotriangulate(
-    polygon: &Polygon,
+pub fn pseudotriangulate<P: Coord>(
+    polygon: &Polygon<P>,
     algorithm: Algorithm,
 ) -> Result<Pseudotriangulation, TriangulateError> {
     match algorithm {
@@ -348,7 +367,7 @@ pub const CORRUPT_WITH_EAR: &str = "ear";
 ///
 /// # Errors
 /// [`Error::Triangulate`] when the chosen algorithm does not apply.
-pub fn solve(polygon: &Polygon, options: &Options) -> Result<Solved, Error> {
+pub fn solve<P: Coord>(polygon: &Polygon<P>, options: &Options) -> Result<Solved, Error> {
     if options.algorithm.is_pseudo() {
         return solve_pseudo(polygon, options);
     }
@@ -381,7 +400,7 @@ pub fn solve(polygon: &Polygon, options: &Options) -> Result<Solved, Error> {
 }
 
 /// `pseudo` (minimal, inside the plain triangulation) or `pseudo-hull` (minimum, of the hull).
-fn solve_pseudo(polygon: &Polygon, options: &Options) -> Result<Solved, Error> {
+fn solve_pseudo<P: Coord>(polygon: &Polygon<P>, options: &Options) -> Result<Solved, Error> {
     let triangulation = ear::triangulate(polygon)?;
     let mut result = if options.algorithm == Algorithm::PseudoHull {
         pseudo_hull::pseudotriangulate(polygon)?
@@ -412,7 +431,11 @@ fn solve_pseudo(polygon: &Polygon, options: &Options) -> Result<Solved, Error> {
 }
 
 /// Checks `main` and every other exact algorithm's output independently, and their agreement.
-fn verify_all(polygon: &Polygon, main: &Triangulation, options: &Options) -> Verification {
+fn verify_all<P: Coord>(
+    polygon: &Polygon<P>,
+    main: &Triangulation,
+    options: &Options,
+) -> Verification {
     let mut outputs = vec![main.clone()];
     let mut skipped = Vec::new();
     for other in [Algorithm::Minitri, Algorithm::Asano] {
@@ -523,7 +546,7 @@ pub fn process_raw(source: &str, index: usize, raw: RawPolygon, options: &Option
                     Err(errors) => one.result = Err(Error::Invalid(errors)),
                     Ok((polygon, more)) => {
                         warnings.extend(more);
-                        one.result = solve(&polygon, options);
+                        one.result = polygon.solve(options);
                         one.polygon = Some(polygon);
                     }
                 }
@@ -533,13 +556,13 @@ pub fn process_raw(source: &str, index: usize, raw: RawPolygon, options: &Option
             .collect();
     }
     let mut outcome = outcome;
-    let validated = Polygon::from_raw_all_errors(&raw);
+    let validated = AnyPolygon::from_raw_all_errors(&raw);
     drop(raw);
     match validated {
         Err(errors) => outcome.result = Err(Error::Invalid(errors)),
         Ok((polygon, warnings)) => {
             outcome.warnings = warnings;
-            outcome.result = solve(&polygon, options);
+            outcome.result = polygon.solve(options);
             outcome.polygon = Some(polygon);
         }
     }

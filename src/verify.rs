@@ -68,7 +68,8 @@
 //! times edges.
 
 use crate::algo::{Algorithm, Triangulation};
-use crate::geom::kernel::{cross, line_through, strictly_between, Line, Point, WideSum};
+use crate::geom::kernel::Coord;
+use crate::geom::kernel::{cross, line_through, strictly_between, Area, Point};
 use crate::geom::polygon::Polygon;
 use std::cmp::Ordering;
 
@@ -110,7 +111,7 @@ impl Faults {
 
 /// Checks, exactly, that `t` is a valid triangulation of `polygon` (see the module documentation
 /// for what is checked and why it suffices).
-pub fn check(polygon: &Polygon, t: &Triangulation) -> Check {
+pub fn check<P: Coord>(polygon: &Polygon<P>, t: &Triangulation) -> Check {
     let mut problems = Problems::default();
     check_count(polygon, t, &mut problems);
     check_area(polygon, t, &mut problems);
@@ -186,14 +187,14 @@ fn plural(count: usize, word: &str) -> String {
 }
 
 /// The corners of `tri` when its indices are in range and distinct.
-fn corners(polygon: &Polygon, tri: [usize; 3]) -> Option<[Point; 3]> {
+fn corners<P: Coord>(polygon: &Polygon<P>, tri: [usize; 3]) -> Option<[P; 3]> {
     let [a, b, c] = tri;
     let in_range = tri.iter().all(|&i| i < polygon.len());
     (in_range && a != b && b != c && a != c).then(|| tri.map(|i| polygon.point(i)))
 }
 
 /// `what k [ids]` with input vertex numbers, or the raw stored indices if any is out of range.
-fn name(polygon: &Polygon, what: &str, k: usize, tri: [usize; 3]) -> String {
+fn name<P: Coord>(polygon: &Polygon<P>, what: &str, k: usize, tri: [usize; 3]) -> String {
     if tri.iter().all(|&i| i < polygon.len()) {
         let [a, b, c] = tri.map(|i| polygon.id(i));
         format!("{what} {k} [{a}, {b}, {c}]")
@@ -204,7 +205,12 @@ fn name(polygon: &Polygon, what: &str, k: usize, tri: [usize; 3]) -> String {
 }
 
 /// Problems with the indices of `tri`, if any (check 1).
-fn index_problem(polygon: &Polygon, what: &str, k: usize, tri: [usize; 3]) -> Option<String> {
+fn index_problem<P: Coord>(
+    polygon: &Polygon<P>,
+    what: &str,
+    k: usize,
+    tri: [usize; 3],
+) -> Option<String> {
     let n = polygon.len();
     if let Some(&bad) = tri.iter().find(|&&i| i >= n) {
         let name = name(polygon, what, k, tri);
@@ -221,7 +227,7 @@ fn index_problem(polygon: &Polygon, what: &str, k: usize, tri: [usize; 3]) -> Op
 }
 
 /// Check 5: the number of triangles.
-fn check_count(polygon: &Polygon, t: &Triangulation, problems: &mut Problems) {
+fn check_count<P: Coord>(polygon: &Polygon<P>, t: &Triangulation, problems: &mut Problems) {
     let (n, w, d) = (polygon.len(), polygon.holes(), t.degenerate.len());
     let expected = n as i128 + 2 * w as i128 - d as i128 - 2;
     if t.triangles.len() as i128 != expected {
@@ -236,11 +242,11 @@ fn check_count(polygon: &Polygon, t: &Triangulation, problems: &mut Problems) {
 }
 
 /// Check 4: the total area (triangles with unusable indices count as zero).
-fn check_area(polygon: &Polygon, t: &Triangulation, problems: &mut Problems) {
-    let mut total = WideSum::default();
+fn check_area<P: Coord>(polygon: &Polygon<P>, t: &Triangulation, problems: &mut Problems) {
+    let mut total = Area::default();
     for &tri in &t.triangles {
         if let Some([a, b, c]) = corners(polygon, tri) {
-            total.add(cross(a, b, c));
+            total.add(a, b, c);
         }
     }
     let want = polygon.twice_area();
@@ -248,22 +254,15 @@ fn check_area(polygon: &Polygon, t: &Triangulation, problems: &mut Problems) {
         problems.add(|| {
             format!(
                 "the triangles' total twice-area is {} but the polygon's is {} (in units of the exact grid)",
-                show(total),
-                show(want)
+                total,
+                want
             )
         });
     }
 }
 
-fn show(sum: WideSum) -> String {
-    match sum.value() {
-        Some(v) => v.to_string(),
-        None => format!("about {:e}", sum.to_f64()),
-    }
-}
-
 /// Checks 1 and 2 for every triangle.
-fn check_triangles(polygon: &Polygon, t: &Triangulation, problems: &mut Problems) {
+fn check_triangles<P: Coord>(polygon: &Polygon<P>, t: &Triangulation, problems: &mut Problems) {
     for (k, &tri) in t.triangles.iter().enumerate() {
         if let Some(problem) = index_problem(polygon, "triangle", k, tri) {
             problems.add(|| problem);
@@ -283,14 +282,14 @@ fn check_triangles(polygon: &Polygon, t: &Triangulation, problems: &mut Problems
 
 /// One end of a weighted segment on a line: the running weight changes by `delta` at `at`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
-struct Event {
-    line: Line,
-    at: Point,
+struct Event<P: Coord> {
+    line: P::Line,
+    at: P,
     delta: i64,
 }
 
 /// Check 3: the boundary chain of the triangles minus that of the polygon is zero.
-fn check_chain(polygon: &Polygon, t: &Triangulation, problems: &mut Problems) {
+fn check_chain<P: Coord>(polygon: &Polygon<P>, t: &Triangulation, problems: &mut Problems) {
     // Every segment with weight +1: triangle sides as they run, polygon edges reversed (-1).
     let mut sides: Vec<[usize; 2]> = Vec::with_capacity(3 * t.triangles.len() + polygon.len());
     for &tri in &t.triangles {
@@ -305,7 +304,11 @@ fn check_chain(polygon: &Polygon, t: &Triangulation, problems: &mut Problems) {
 
 /// The chain of `sides` (each `[from, to]` with weight +1) is zero: on every line, the weights of
 /// the segments on it cancel on every stretch (the core of check 3, shared with [`pseudo`]).
-fn check_sides_cancel(polygon: &Polygon, mut sides: Vec<[usize; 2]>, problems: &mut Problems) {
+fn check_sides_cancel<P: Coord>(
+    polygon: &Polygon<P>,
+    mut sides: Vec<[usize; 2]>,
+    problems: &mut Problems,
+) {
     // Cancel segments with the same two end vertices (most of them in a valid triangulation).
     let pair = |&[u, v]: &[usize; 2]| (u.min(v), u.max(v));
     sides.sort_unstable_by_key(pair);
@@ -343,7 +346,10 @@ fn check_sides_cancel(polygon: &Polygon, mut sides: Vec<[usize; 2]>, problems: &
                 if sum != 0 {
                     problems.add(|| uncancelled(polygon, start, at, sum));
                     let stretch = if sum > 0 { [start, at] } else { [at, start] };
-                    problems.faults.stretches.push(stretch);
+                    problems
+                        .faults
+                        .stretches
+                        .push(stretch.map(|p| polygon.drawing_point(p)));
                 }
                 sum = new_sum;
                 start = at;
@@ -353,7 +359,7 @@ fn check_sides_cancel(polygon: &Polygon, mut sides: Vec<[usize; 2]>, problems: &
 }
 
 /// Describes the stretch `from -> to` (in line order) whose chain weight is `w != 0`.
-fn uncancelled(polygon: &Polygon, from: Point, to: Point, w: i64) -> String {
+fn uncancelled<P: Coord>(polygon: &Polygon<P>, from: P, to: P, w: i64) -> String {
     let (from, to) = if w > 0 { (from, to) } else { (to, from) };
     let grid = polygon.grid();
     format!(
@@ -367,15 +373,15 @@ fn uncancelled(polygon: &Polygon, from: Point, to: Point, w: i64) -> String {
 }
 
 /// A listed degenerate triangle to find on a triangle side: the segment `lo..=hi` on `line`.
-struct Query {
-    line: Line,
-    lo: Point,
-    hi: Point,
+struct Query<P: Coord> {
+    line: P::Line,
+    lo: P,
+    hi: P,
     k: usize,
 }
 
 /// Check 6: the degenerate triangles.
-fn check_degenerate(polygon: &Polygon, t: &Triangulation, problems: &mut Problems) {
+fn check_degenerate<P: Coord>(polygon: &Polygon<P>, t: &Triangulation, problems: &mut Problems) {
     let mut queries = Vec::new();
     let mut middles = Vec::new();
     for (k, &deg) in t.degenerate.iter().enumerate() {
@@ -431,10 +437,10 @@ fn check_degenerate(polygon: &Polygon, t: &Triangulation, problems: &mut Problem
         return;
     }
     // The triangle sides on the lines of the queries, sorted by line and lower end.
-    let mut lines: Vec<Line> = queries.iter().map(|q| q.line).collect();
+    let mut lines: Vec<P::Line> = queries.iter().map(|q| q.line).collect();
     lines.sort_unstable();
     lines.dedup();
-    let mut sides: Vec<(Line, Point, Point)> = Vec::new();
+    let mut sides: Vec<(P::Line, P, P)> = Vec::new();
     for &tri in &t.triangles {
         if let Some([a, b, c]) = corners(polygon, tri) {
             for (p, q) in [(a, b), (b, c), (c, a)] {
@@ -450,7 +456,7 @@ fn check_degenerate(polygon: &Polygon, t: &Triangulation, problems: &mut Problem
     let mut reach = Vec::with_capacity(sides.len());
     for (i, side) in sides.iter().enumerate() {
         let before = (i > 0 && sides[i - 1].0 == side.0).then(|| reach[i - 1]);
-        reach.push(before.map_or(side.2, |r: Point| r.max(side.2)));
+        reach.push(before.map_or(side.2, |r: P| r.max(side.2)));
     }
     for query in &queries {
         // The last side on the query's line whose lower end is at or before the query's.

@@ -37,7 +37,7 @@ fn polygons(path: &str) -> HashMap<u64, Polygon> {
     };
     minitri::process(path, &text, format, &options)
         .into_iter()
-        .filter_map(|o| Some((o.index? as u64, o.polygon?)))
+        .filter_map(|o| Some((o.index? as u64, o.polygon?.fast()?.clone())))
         .collect()
 }
 

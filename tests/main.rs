@@ -14,3 +14,4 @@ mod pseudo;
 mod svg;
 mod touching;
 mod util;
+mod wide;

@@ -19,9 +19,9 @@ use minitri::geom::kernel::{cross, dot, segment_contact, Point, SegmentContact};
 use minitri::{verify, Decimal, Polygon, RawPolygon};
 use std::collections::{BTreeMap, BTreeSet};
 
-type Rings = Vec<Vec<(i64, i64)>>;
+pub(crate) type Rings = Vec<Vec<(i64, i64)>>;
 
-fn raw(rings: &Rings) -> RawPolygon {
+pub(crate) fn raw(rings: &Rings) -> RawPolygon {
     let d = |v: i64| Decimal::parse(&v.to_string()).unwrap();
     RawPolygon {
         rings: rings
@@ -297,7 +297,7 @@ fn exhaustive_minimum(rings: &Rings) -> usize {
 /// A random polygon on the grid 0..=6: a grown outer ring and 1 to 3 random triangles or
 /// quadrilaterals as holes, their corners often taken from the other rings' vertices or the grid
 /// points on their edges, so that touches are common. Not necessarily valid.
-fn random_rings(rnd: &mut impl FnMut(i64) -> i64) -> Option<Rings> {
+pub(crate) fn random_rings(rnd: &mut impl FnMut(i64) -> i64) -> Option<Rings> {
     let g = |rnd: &mut dyn FnMut(i64) -> i64| (rnd(7), rnd(7));
     let base = [g(rnd), g(rnd), g(rnd)];
     let ops: Vec<(usize, i64, i64)> = (0..rnd(4))

@@ -10,7 +10,7 @@ use minitri::algo::{asano, ear, minitri as chen_chang};
 use minitri::io::read::RawPolygon;
 use minitri::io::write::{svg::Style, OutputFormat};
 use minitri::pipeline::{self, Options, Outcome};
-use minitri::{verify, Algorithm, Decimal, Polygon, Triangulation};
+use minitri::{verify, Algorithm, AnyPolygon, Coord, Decimal, Polygon, Triangulation};
 
 /// The largest polygon (vertices over all rings) sent on to the algorithms: the exact
 /// algorithms are exponential (holes) or cubic, and a fuzz execution must take milliseconds.
@@ -96,7 +96,7 @@ pub fn check_polygon(polygon: &Polygon) {
 ///
 /// # Panics
 /// When it does not: that is a finding.
-pub fn check_ear(polygon: &Polygon) {
+pub fn check_ear<P: Coord>(polygon: &Polygon<P>) {
     let ear = ear::triangulate(polygon).expect("ear triangulates every valid polygon");
     let report = verify::check(polygon, &ear);
     assert!(
@@ -128,7 +128,8 @@ pub fn check_polygons(raws: &[RawPolygon]) {
     };
     let mut outcomes = Vec::new();
     for (index, raw) in raws.iter().enumerate() {
-        match Polygon::from_raw_all_errors(raw) {
+        // Either kernel: full-precision or huge coordinates take the wide one.
+        match AnyPolygon::from_raw_all_errors(raw) {
             Err(errors) => {
                 assert!(!errors.is_empty(), "invalid without a reason");
                 for e in &errors {
@@ -154,7 +155,7 @@ pub fn check_polygons(raws: &[RawPolygon]) {
                 }
             }
             Ok((polygon, _warnings)) if is_small(raw) => {
-                check_ear(&polygon);
+                minitri::with_polygon!(&polygon, p => check_ear(p));
                 let outcome =
                     pipeline::process_raw("fuzz", index, raw.clone(), &options).swap_remove(0);
                 let solved = outcome.result.as_ref().expect("a valid polygon is solved");

@@ -8,7 +8,7 @@
 
 use minitri::io::read::{self, geojson_stream, Format};
 use minitri::pipeline::{self, Error, Options, Outcome};
-use minitri::{Algorithm, ParseError, Polygon, Triangulation};
+use minitri::{Algorithm, Coord, ParseError, Polygon, Triangulation};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyBytes;
@@ -136,11 +136,13 @@ fn solve(input: &Input<'_>, options: &Options, json: bool) -> Item {
         match (&outcome.result, &outcome.polygon) {
             (Ok(solved), Some(polygon)) => {
                 let t = &solved.triangulation;
-                add(&mut item, polygon, t);
-                match floats {
-                    Some(floats) => triangles.extend(input_triangles(polygon, t, floats)),
-                    None => triangles.extend(minitri::geo::multi_polygon(polygon, t)),
-                }
+                minitri::with_polygon!(polygon, p => {
+                    add(&mut item, p, t);
+                    match floats {
+                        Some(floats) => triangles.extend(input_triangles(p, t, floats)),
+                        None => triangles.extend(minitri::geo::multi_polygon(p, t)),
+                    }
+                });
                 if json {
                     item.parts.extend(minitri::io::write::json::render(outcome));
                 }
@@ -173,8 +175,8 @@ fn solve(input: &Input<'_>, options: &Options, json: bool) -> Item {
 /// The triangles of `t` with corners taken from the input floats (`floats[k]` is input vertex
 /// `k`): the same corners as [`minitri::geo::multi_polygon`] gives for float input (the shortest
 /// decimal of a float rounds back to it), without formatting and parsing each one.
-fn input_triangles(
-    polygon: &Polygon,
+fn input_triangles<P: Coord>(
+    polygon: &Polygon<P>,
     t: &Triangulation,
     floats: &[[f64; 2]],
 ) -> Vec<geo_types::Polygon<f64>> {
@@ -188,7 +190,7 @@ fn input_triangles(
 }
 
 /// Adds one solved polygon to the totals.
-fn add(item: &mut Item, polygon: &Polygon, t: &Triangulation) {
+fn add<P: Coord>(item: &mut Item, polygon: &Polygon<P>, t: &Triangulation) {
     item.triangle_count += t.triangles.len();
     item.degenerate_count += t.degenerate.len();
     item.optimal &= t.optimal;

@@ -34,7 +34,8 @@
 
 use super::chords::ChordTable;
 use super::{Algorithm, TriangulateError, Triangulation};
-use crate::geom::kernel::{cross, Point};
+use crate::geom::kernel::cross;
+use crate::geom::kernel::Coord;
 use crate::geom::polygon::Polygon;
 
 /// The default largest number of vertices the DP accepts (at most about 6 s and 75 MB at 3000).
@@ -69,7 +70,10 @@ pub fn estimate(n: usize) -> (String, String) {
 /// table's range); for polygons with holes, those of [`super::asano_holes::triangulate`]
 /// ([`TriangulateError::TooManyHoles`] above 2 holes, [`TriangulateError::TooLargeWithHoles`]
 /// above its size limits).
-pub fn triangulate(polygon: &Polygon, limit: usize) -> Result<Triangulation, TriangulateError> {
+pub fn triangulate<P: Coord>(
+    polygon: &Polygon<P>,
+    limit: usize,
+) -> Result<Triangulation, TriangulateError> {
     let n = polygon.len();
     if polygon.touches() > 0 {
         return super::touching(polygon, Algorithm::Asano);
@@ -129,9 +133,9 @@ pub(crate) struct WalkTriangulation {
 /// own point must get a number no other position on a line through `p` gets).
 ///
 /// Returns `None` when the walk has no triangulation (cannot happen for a valid walk).
-pub(crate) fn solve_walk<'a>(
+pub(crate) fn solve_walk<'a, P: Coord>(
     m: usize,
-    point: impl Fn(usize) -> Point,
+    point: impl Fn(usize) -> P,
     is_chord: impl Fn(usize, usize) -> bool,
     lines_through: impl Fn(usize) -> &'a [u16],
 ) -> Option<WalkTriangulation> {

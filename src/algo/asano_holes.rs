@@ -58,7 +58,8 @@
 use super::asano::solve_walk;
 use super::chords::ChordTable;
 use super::{Algorithm, TriangulateError, Triangulation};
-use crate::geom::kernel::{in_closed_wedge, properly_cross, strictly_between, Point};
+use crate::geom::kernel::Coord;
+use crate::geom::kernel::{in_closed_wedge, properly_cross, strictly_between};
 use crate::geom::polygon::Polygon;
 use std::collections::BTreeMap;
 
@@ -133,7 +134,10 @@ pub fn estimate(n: usize, holes: usize) -> String {
 /// # Ok(())
 /// # }
 /// ```
-pub fn triangulate(polygon: &Polygon, dp_limit: usize) -> Result<Triangulation, TriangulateError> {
+pub fn triangulate<P: Coord>(
+    polygon: &Polygon<P>,
+    dp_limit: usize,
+) -> Result<Triangulation, TriangulateError> {
     let holes = polygon.holes();
     if holes == 0 || holes > MAX_HOLES {
         return Err(TriangulateError::TooManyHoles {
@@ -223,15 +227,15 @@ fn merge(target: &[usize], q: usize, hole: &[usize], a: usize) -> Vec<usize> {
 }
 
 /// What all cuts share: the polygon, its chord table, and its elementary chords.
-struct Cutter<'a> {
-    polygon: &'a Polygon,
+struct Cutter<'a, P: Coord> {
+    polygon: &'a Polygon<P>,
     chords: ChordTable,
     /// `elementary[u * n + v]`: no vertex lies strictly inside segment `u v`.
     elementary: Vec<bool>,
 }
 
-impl<'a> Cutter<'a> {
-    fn new(polygon: &'a Polygon) -> Cutter<'a> {
+impl<'a, P: Coord> Cutter<'a, P> {
+    fn new(polygon: &'a Polygon<P>) -> Cutter<'a, P> {
         let n = polygon.len();
         let chords = ChordTable::new(polygon);
         let mut elementary = vec![false; n * n];
@@ -251,13 +255,13 @@ impl<'a> Cutter<'a> {
         }
     }
 
-    fn point(&self, v: usize) -> Point {
+    fn point(&self, v: usize) -> P {
         self.polygon.point(v)
     }
 
     /// Whether the direction from walk position `p` towards `target` lies in the closed wedge of
     /// that occurrence (between the walk's previous and next points).
-    fn in_wedge(&self, walk: &[usize], p: usize, target: Point) -> bool {
+    fn in_wedge(&self, walk: &[usize], p: usize, target: P) -> bool {
         let m = walk.len();
         in_closed_wedge(
             self.point(walk[(p + m - 1) % m]),
@@ -351,14 +355,14 @@ impl<'a> Cutter<'a> {
 
 /// One cut walk: the polygon's vertices in walk order, the slits cut, and the vertices the walk
 /// visits more than once with their positions.
-struct Cut<'a, 'b> {
-    cutter: &'b Cutter<'a>,
+struct Cut<'a, 'b, P: Coord> {
+    cutter: &'b Cutter<'a, P>,
     walk: &'b [usize],
     slits: &'b [(usize, usize)],
     repeated: Vec<(usize, Vec<usize>)>,
 }
 
-impl Cut<'_, '_> {
+impl<P: Coord> Cut<'_, '_, P> {
     /// Whether the segment between walk positions `p` and `q` is a chord of the cut walk: a
     /// chord of the polygon, crossing no slit, inside the wedge of each end's occurrence; at any
     /// point visited twice that it passes through, inside one occurrence's wedge; and along any

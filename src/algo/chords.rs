@@ -22,7 +22,8 @@
 //!
 //! Complexity: O(n log n) per vertex, O(n^2 log n) time in all; n^2 bits plus 2 n^2 bytes.
 
-use crate::geom::kernel::{cmp_angle, cross, dot, in_closed_wedge, Point};
+use crate::geom::kernel::Coord;
+use crate::geom::kernel::{cmp_angle, cross, in_closed_wedge};
 use crate::geom::polygon::Polygon;
 use std::cmp::Ordering;
 use std::collections::BTreeSet;
@@ -41,7 +42,7 @@ impl ChordTable {
     ///
     /// # Panics
     /// Above 65,536 vertices (line numbers are `u16`); the DP refuses far smaller inputs.
-    pub fn new(polygon: &Polygon) -> ChordTable {
+    pub fn new<P: Coord>(polygon: &Polygon<P>) -> ChordTable {
         let n = polygon.len();
         assert!(
             n <= 1 << 16,
@@ -93,15 +94,15 @@ impl ChordTable {
 /// An edge cut by the ray from `v`, oriented so that `v` lies on its left (`a -> b` turns
 /// counter-clockwise around `v`).
 #[derive(Clone, Copy, Debug)]
-struct Cut {
-    a: Point,
-    b: Point,
+struct Cut<P> {
+    a: P,
+    b: P,
     edge: usize,
 }
 
-order_from_cmp!(Cut);
+order_from_cmp!(Cut<P>);
 
-impl Ord for Cut {
+impl<P: Coord> Ord for Cut<P> {
     /// Nearer to `v` along the common ray is Less. `f` lies wholly on `v`'s side of `e`'s line:
     /// `f` is nearer; wholly beyond: farther; otherwise `f` straddles `e`'s line, so (as edges do
     /// not cross) `e` lies wholly on one side of `f`'s line, which decides.
@@ -131,12 +132,9 @@ impl Ord for Cut {
 /// (from the positive x axis, counter-clockwise). Directions in the upper half `[0, pi)` get new
 /// numbers in order; each direction in the lower half takes the number of its opposite direction
 /// if there is one (found by a merge, both halves being sorted), else a new one.
-fn number_lines(polygon: &Polygon, v: usize, order: &[usize], out: &mut [u16]) {
+fn number_lines<P: Coord>(polygon: &Polygon<P>, v: usize, order: &[usize], out: &mut [u16]) {
     let c = polygon.point(v);
-    let upper = |u: usize| {
-        let p = polygon.point(u);
-        p.y > c.y || (p.y == c.y && p.x > c.x)
-    };
+    let upper = |u: usize| crate::geom::kernel::above(c, polygon.point(u));
     let split = order.partition_point(|&u| upper(u));
     let (mut next_id, mut last): (u16, Option<usize>) = (0, None);
     for &u in &order[..split] {
@@ -170,7 +168,11 @@ fn number_lines(polygon: &Polygon, v: usize, order: &[usize], out: &mut [u16]) {
 
 /// Fills `out` with the vertices `u` such that `v u` is a chord; returns all other vertices
 /// sorted by angle around `v`, then by distance.
-pub(crate) fn visible_from(polygon: &Polygon, v: usize, out: &mut Vec<usize>) -> Vec<usize> {
+pub(crate) fn visible_from<P: Coord>(
+    polygon: &Polygon<P>,
+    v: usize,
+    out: &mut Vec<usize>,
+) -> Vec<usize> {
     out.clear();
     let c = polygon.point(v);
     let (vp, vn) = (
@@ -178,13 +180,13 @@ pub(crate) fn visible_from(polygon: &Polygon, v: usize, out: &mut Vec<usize>) ->
         polygon.point(polygon.next(v)),
     );
     let mut order: Vec<usize> = (0..polygon.len()).filter(|&u| u != v).collect();
-    let dist = |u: usize| dot(c, polygon.point(u), polygon.point(u));
     order.sort_unstable_by(|&a, &b| {
-        cmp_angle(c, polygon.point(a), polygon.point(b)).then_with(|| dist(a).cmp(&dist(b)))
+        let (pa, pb) = (polygon.point(a), polygon.point(b));
+        cmp_angle(c, pa, pb).then_with(|| P::cmp_dist(c, pa, pb))
     });
     // The edge leaving vertex e, oriented counter-clockwise around v; None if it touches v or
     // lies on a line through v (it can then cut no ray from v in its interior).
-    let cut = |e: usize| -> Option<Cut> {
+    let cut = |e: usize| -> Option<Cut<P>> {
         let f = polygon.next(e);
         if e == v || f == v {
             return None;
@@ -204,7 +206,7 @@ pub(crate) fn visible_from(polygon: &Polygon, v: usize, out: &mut Vec<usize>) ->
             Ordering::Equal => None,
         }
     };
-    let mut status: BTreeSet<Cut> = (0..polygon.len())
+    let mut status: BTreeSet<Cut<P>> = (0..polygon.len())
         .filter_map(cut)
         .filter(|k| cmp_angle(c, k.a, k.b) == Ordering::Greater) // wraps past the +x axis
         .collect();
@@ -263,10 +265,10 @@ pub(crate) fn visible_from(polygon: &Polygon, v: usize, out: &mut Vec<usize>) ->
 
 /// The chord test straight from the definition, in O(n) per pair (the sweep's test oracle).
 #[cfg(test)]
-pub(crate) fn is_chord_naive(polygon: &Polygon, v: usize, u: usize) -> bool {
+pub(crate) fn is_chord_naive<P: Coord>(polygon: &Polygon<P>, v: usize, u: usize) -> bool {
     use crate::geom::kernel::{properly_cross, strictly_between};
     let (a, b) = (polygon.point(v), polygon.point(u));
-    let wedge = |w: usize, target: Point| {
+    let wedge = |w: usize, target: P| {
         in_closed_wedge(
             polygon.point(polygon.prev(w)),
             polygon.point(w),

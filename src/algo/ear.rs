@@ -25,7 +25,8 @@
 //! its result; it handles no holes, so holes never reach it.
 
 use super::{Algorithm, TriangulateError, Triangulation};
-use crate::geom::kernel::{cross, Point};
+use crate::geom::kernel::cross;
+use crate::geom::kernel::Coord;
 use crate::geom::polygon::Polygon;
 
 /// Triangulates a polygon with w holes (possibly none) into n + 2w - 2 nondegenerate
@@ -53,7 +54,7 @@ use crate::geom::polygon::Polygon;
 /// assert_eq!(t.triangles.len(), 8); // n + 2w - 2 = 8 + 2 - 2
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-pub fn triangulate(polygon: &Polygon) -> Result<Triangulation, TriangulateError> {
+pub fn triangulate<P: Coord>(polygon: &Polygon<P>) -> Result<Triangulation, TriangulateError> {
     if polygon.touches() > 0 {
         return super::touching(polygon, Algorithm::Ear);
     }
@@ -84,7 +85,7 @@ pub(crate) const CLIP_UP_TO: usize = 32;
 /// # Panics
 /// With more than [`MAX_CLIP`] points, or if no ear is left (not a simple counter-clockwise
 /// polygon).
-pub(crate) fn clip(pts: &[Point]) -> Vec<[usize; 3]> {
+pub(crate) fn clip<P: Coord>(pts: &[P]) -> Vec<[usize; 3]> {
     let n = pts.len();
     assert!(
         n <= MAX_CLIP,
@@ -130,7 +131,7 @@ pub(crate) fn clip(pts: &[Point]) -> Vec<[usize; 3]> {
 
 /// Whether `v` (between `p` and `q`) is an ear: a strict left turn whose closed triangle holds
 /// no other vertex of `remaining` (a bit set).
-fn is_ear(pts: &[Point], remaining: u64, p: usize, v: usize, q: usize) -> bool {
+fn is_ear<P: Coord>(pts: &[P], remaining: u64, p: usize, v: usize, q: usize) -> bool {
     let (a, b, c) = (pts[p], pts[v], pts[q]);
     if cross(a, b, c) <= 0 {
         return false;
@@ -149,6 +150,7 @@ fn is_ear(pts: &[Point], remaining: u64, p: usize, v: usize, q: usize) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geom::kernel::Point;
     use crate::test_support::{polygon, U_SHAPE};
 
     fn check(ring: &[(i64, i64)]) {

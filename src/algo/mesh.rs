@@ -39,6 +39,7 @@
 //! at its first vertex, O(k) to walk it, then the flips above.
 
 use crate::algo::number_hash::NumberMap;
+use crate::geom::kernel::Coord;
 use crate::geom::kernel::{cross, dot, incircle_approx, Point};
 use std::collections::VecDeque;
 
@@ -129,8 +130,8 @@ type Halves = NumberMap<u64, Half>;
 /// finished (a pseudotriangle already reported).
 const DONE: u8 = 8;
 
-pub(crate) struct Mesh<'a> {
-    pts: &'a [Point],
+pub(crate) struct Mesh<'a, P: Coord = Point> {
+    pts: &'a [P],
     tv: Vec<[u32; 3]>,
     tn: Vec<[u32; 3]>,
     flags: Vec<u8>,
@@ -142,14 +143,10 @@ pub(crate) struct Mesh<'a> {
     pub(crate) fixed_edges: usize,
 }
 
-impl<'a> Mesh<'a> {
+impl<'a, P: Coord> Mesh<'a, P> {
     /// The mesh of `triangles` (indices into `pts`, as the module's input contract says), with
     /// the undirected edges `fixed` fixed (each an edge of some triangle).
-    pub(crate) fn new(
-        pts: &'a [Point],
-        triangles: &[[usize; 3]],
-        fixed: &[(usize, usize)],
-    ) -> Self {
+    pub(crate) fn new(pts: &'a [P], triangles: &[[usize; 3]], fixed: &[(usize, usize)]) -> Self {
         let m = triangles.len();
         let mut mesh = Mesh {
             pts,
@@ -190,11 +187,11 @@ impl<'a> Mesh<'a> {
         self.tv[h.t as usize][(h.k as usize + 1) % 3] as usize
     }
 
-    pub(crate) fn point(&self, v: usize) -> Point {
+    pub(crate) fn point(&self, v: usize) -> P {
         self.pts[v]
     }
 
-    pub(crate) fn points(&self) -> &'a [Point] {
+    pub(crate) fn points(&self) -> &'a [P] {
         self.pts
     }
 

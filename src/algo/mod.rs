@@ -23,6 +23,8 @@ pub mod pseudo;
 pub mod pseudo_hull;
 pub mod walks;
 
+use crate::geom::kernel::Coord;
+use std::cmp::Ordering;
 use std::fmt;
 
 /// Which algorithm made (or should make) a triangulation.
@@ -83,26 +85,26 @@ impl Triangulation {
     /// assert!(t.triangles.iter().flatten().all(|&i| i < 4)); // stored: 0..4
     /// # Ok::<(), minitri::Error>(())
     /// ```
-    pub fn input_triangles(&self, polygon: &crate::Polygon) -> Vec<[usize; 3]> {
+    pub fn input_triangles<P: Coord>(&self, polygon: &crate::Polygon<P>) -> Vec<[usize; 3]> {
         input_numbers(polygon, &self.triangles)
     }
 
     /// The degenerate triangles `[a, b, c]` in input vertex numbers, as
     /// [`Triangulation::input_triangles`].
-    pub fn input_degenerate(&self, polygon: &crate::Polygon) -> Vec<[usize; 3]> {
+    pub fn input_degenerate<P: Coord>(&self, polygon: &crate::Polygon<P>) -> Vec<[usize; 3]> {
         input_numbers(polygon, &self.degenerate)
     }
 }
 
 /// Triples of stored indices as input vertex numbers.
-fn input_numbers(polygon: &crate::Polygon, triples: &[[usize; 3]]) -> Vec<[usize; 3]> {
+fn input_numbers<P: Coord>(polygon: &crate::Polygon<P>, triples: &[[usize; 3]]) -> Vec<[usize; 3]> {
     triples.iter().map(|t| t.map(|i| polygon.id(i))).collect()
 }
 
 impl Pseudotriangulation {
     /// The faces in INPUT vertex numbers (`cycle`, `corners`), as
     /// [`Triangulation::input_triangles`].
-    pub fn input_faces(&self, polygon: &crate::Polygon) -> Vec<Pseudotriangle> {
+    pub fn input_faces<P: Coord>(&self, polygon: &crate::Polygon<P>) -> Vec<Pseudotriangle> {
         self.faces
             .iter()
             .map(|f| Pseudotriangle {
@@ -202,7 +204,7 @@ pub struct Pseudotriangle {
 impl Pseudotriangle {
     /// The face of a counter-clockwise cycle of `points` indices, its corners found by exact
     /// orientation, the cycle turned to start at its first corner.
-    pub(crate) fn from_cycle(points: &[crate::geom::kernel::Point], mut cycle: Vec<usize>) -> Self {
+    pub(crate) fn from_cycle<P: Coord>(points: &[P], mut cycle: Vec<usize>) -> Self {
         let k = cycle.len();
         let is_corner = |i: usize| {
             let [u, v, w] = [(i + k - 1) % k, i, (i + 1) % k].map(|j| points[cycle[j]]);
@@ -255,8 +257,11 @@ impl HullCounts {
 /// all occur in one triangulation.
 ///
 /// Complexity: O(T n) (a scan of all vertices per side); for the O(n^3) DP that is negligible.
-pub(crate) fn t_junctions(polygon: &crate::Polygon, triangles: &[[usize; 3]]) -> Vec<[usize; 3]> {
-    use crate::geom::kernel::{dot, strictly_between};
+pub(crate) fn t_junctions<P: Coord>(
+    polygon: &crate::Polygon<P>,
+    triangles: &[[usize; 3]],
+) -> Vec<[usize; 3]> {
+    use crate::geom::kernel::strictly_between;
     let mut out = Vec::new();
     for t in triangles {
         for k in 0..3 {
@@ -268,7 +273,7 @@ pub(crate) fn t_junctions(polygon: &crate::Polygon, triangles: &[[usize; 3]]) ->
             if inside.is_empty() {
                 continue;
             }
-            inside.sort_by_key(|&v| dot(ps, polygon.point(v), polygon.point(v)));
+            inside.sort_by(|&u, &v| P::cmp_dist(ps, polygon.point(u), polygon.point(v)));
             push_chain(&mut out, s, inside, e);
         }
     }
@@ -288,7 +293,7 @@ pub(crate) fn push_chain(out: &mut Vec<[usize; 3]>, s: usize, inside: Vec<usize>
 /// A plain triangulation of one counter-clockwise simple polygon given as its cycle of points
 /// (flat vertices allowed): `len - 2` positive triangles as indices into `pts`. Ear clipping for
 /// small polygons, where it is quickest, monotone pieces (O(n log n)) otherwise.
-pub(crate) fn plain(pts: &[crate::geom::kernel::Point]) -> Vec<[usize; 3]> {
+pub(crate) fn plain<P: Coord>(pts: &[P]) -> Vec<[usize; 3]> {
     if pts.len() <= ear::CLIP_UP_TO {
         ear::clip(pts)
     } else {
@@ -304,10 +309,7 @@ pub(crate) fn plain(pts: &[crate::geom::kernel::Point]) -> Vec<[usize; 3]> {
 /// # Panics
 /// As [`monotone::triangulate_rings`], if `ring_starts` does not describe rings of at least 3
 /// points.
-pub(crate) fn plain_rings(
-    pts: &[crate::geom::kernel::Point],
-    ring_starts: &[usize],
-) -> Vec<[usize; 3]> {
+pub(crate) fn plain_rings<P: Coord>(pts: &[P], ring_starts: &[usize]) -> Vec<[usize; 3]> {
     if ring_starts.len() == 1 {
         plain(pts)
     } else {
@@ -317,7 +319,7 @@ pub(crate) fn plain_rings(
 
 /// A plain triangulation of a valid polygon, holes included: `n + 2w - 2` positive triangles as
 /// stored vertex indices ([`plain_rings`] on its rings).
-pub(crate) fn plain_polygon(polygon: &crate::Polygon) -> Vec<[usize; 3]> {
+pub(crate) fn plain_polygon<P: Coord>(polygon: &crate::Polygon<P>) -> Vec<[usize; 3]> {
     plain_rings(polygon.points(), polygon.ring_starts())
 }
 
@@ -334,27 +336,33 @@ pub(crate) fn plain_polygon(polygon: &crate::Polygon) -> Vec<[usize; 3]> {
 /// (40,000 flips there). A corridor crossing the sweep elsewhere in the same polygon is still
 /// slow, never wrong. A polygon about as wide as tall keeps the usual sweep, which needs no turned
 /// copy of its points (16 bytes per vertex at the peak).
-pub(crate) fn plain_polygon_for_walking(polygon: &crate::Polygon) -> Vec<[usize; 3]> {
-    use crate::geom::kernel::{Point, MAX_COORD};
+pub(crate) fn plain_polygon_for_walking<P: Coord>(polygon: &crate::Polygon<P>) -> Vec<[usize; 3]> {
     let pts = polygon.points();
     if pts.len() <= ear::CLIP_UP_TO {
         return plain_polygon(polygon);
     }
-    let (mut lo, mut hi) = (pts[0], pts[0]);
-    for p in pts {
-        (lo.x, lo.y) = (lo.x.min(p.x), lo.y.min(p.y));
-        (hi.x, hi.y) = (hi.x.max(p.x), hi.y.max(p.y));
+    // The points of least and greatest x, then y.
+    let mut ends = [pts[0]; 4];
+    for &p in pts {
+        for (k, end) in ends.iter_mut().enumerate() {
+            let order = if k < 2 {
+                P::cmp_x(p, *end)
+            } else {
+                P::cmp_y(p, *end)
+            };
+            if order == [Ordering::Less, Ordering::Greater][k % 2] {
+                *end = p;
+            }
+        }
     }
-    if i128::from(hi.x - lo.x) <= 2 * i128::from(hi.y - lo.y) {
+    let (width, height) = (
+        ends[1].offset_f64(ends[0])[0],
+        ends[3].offset_f64(ends[2])[1],
+    );
+    if width <= 2.0 * height {
         return plain_polygon(polygon);
     }
-    let turned: Vec<Point> = pts
-        .iter()
-        .map(|p| Point {
-            x: MAX_COORD - p.y,
-            y: p.x,
-        })
-        .collect();
+    let turned: Vec<P> = pts.iter().map(|p| p.quarter_turn()).collect();
     plain_rings(&turned, polygon.ring_starts())
 }
 
@@ -364,8 +372,8 @@ pub(crate) fn plain_polygon_for_walking(polygon: &crate::Polygon) -> Vec<[usize;
 /// ([`walks::flattened`], T-junctions, at most the plain count), with the lower bound
 /// `ceil((n - f)/3)` and `optimal` only when the count reaches it; for `ear` (and on a failed
 /// self-check) the plain triangulation.
-pub(crate) fn touching(
-    polygon: &crate::Polygon,
+pub(crate) fn touching<P: Coord>(
+    polygon: &crate::Polygon<P>,
     algorithm: Algorithm,
 ) -> Result<Triangulation, TriangulateError> {
     if algorithm.is_minimum() {

@@ -196,7 +196,8 @@
 //! sorted adjacency lists instead of a DCEL; the stack algorithm emits triangles and waits on
 //! collinear triples as on reflex ones.
 
-use crate::geom::kernel::{cross, dot, Point};
+use crate::geom::kernel::Coord;
+use crate::geom::kernel::{cross, dot};
 use crate::geom::status::{Handle, Status};
 use std::cmp::Ordering;
 
@@ -204,7 +205,7 @@ use std::cmp::Ordering;
 /// allowed, no two points equal): exactly `len - 2` counter-clockwise triangles of positive area,
 /// as indices into `pts` (none for fewer than 3 points). The case without holes of
 /// [`triangulate_rings`].
-pub(crate) fn triangulate_cycle(pts: &[Point]) -> Vec<[usize; 3]> {
+pub(crate) fn triangulate_cycle<P: Coord>(pts: &[P]) -> Vec<[usize; 3]> {
     if pts.len() < 3 {
         return Vec::new();
     }
@@ -223,7 +224,7 @@ pub(crate) fn triangulate_cycle(pts: &[Point]) -> Vec<[usize; 3]> {
 /// increase by at least 3 from one ring start to the next and to `pts.len()`), and, as a broken
 /// invariant, on input outside the module's contract (crossing or touching rings, equal points,
 /// spikes, wrong orientations) when it is detected.
-pub(crate) fn triangulate_rings(pts: &[Point], ring_starts: &[usize]) -> Vec<[usize; 3]> {
+pub(crate) fn triangulate_rings<P: Coord>(pts: &[P], ring_starts: &[usize]) -> Vec<[usize; 3]> {
     let n = pts.len();
     let links = Links::new(n, ring_starts);
     let holes = ring_starts.len() - 1;
@@ -282,8 +283,26 @@ impl Links {
 /// The sweep key of a point: lexicographic `(y, x)`, the height order of the module
 /// documentation.
 #[inline]
-fn height(p: Point) -> (i64, i64) {
-    (p.y, p.x)
+fn height<P: Coord>(p: P) -> Height<P> {
+    Height(p)
+}
+
+/// A point in the height order: `(y, x)` lexicographic.
+#[derive(Clone, Copy, PartialEq, Eq)]
+struct Height<P>(P);
+
+impl<P: Coord> Ord for Height<P> {
+    #[inline]
+    fn cmp(&self, other: &Self) -> Ordering {
+        P::cmp_y(self.0, other.0).then_with(|| P::cmp_x(self.0, other.0))
+    }
+}
+
+impl<P: Coord> PartialOrd for Height<P> {
+    #[inline]
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
 }
 
 /// The kind of a vertex in the sweep (see the classification table of the module documentation).
@@ -305,7 +324,7 @@ enum Kind {
 
 impl Kind {
     /// The kind of vertex `v` with previous neighbour `p` and next neighbour `n`.
-    fn of(p: Point, v: Point, n: Point) -> Kind {
+    fn of<P: Coord>(p: P, v: P, n: P) -> Kind {
         let hv = height(v);
         let convex = cross(p, v, n) > 0; // never 0 at a local extremum: that would be a spike
         match (height(p) > hv, height(n) > hv) {
@@ -322,18 +341,18 @@ impl Kind {
 /// An edge in the sweep status, or a probe for a point (`lo == hi`, `edge == PROBE`): `lo` below
 /// `hi` in the height order; `edge` is the index of the edge's first vertex along the cycle.
 #[derive(Clone, Copy, Debug)]
-struct Cut {
-    lo: Point,
-    hi: Point,
+struct Cut<P: Coord> {
+    lo: P,
+    hi: P,
     edge: usize,
 }
 
 /// The `edge` of a probe.
 const PROBE: usize = usize::MAX;
 
-impl Cut {
+impl<P: Coord> Cut<P> {
     /// The cut of edge `edge` from `a` to `b`.
-    fn new(a: Point, b: Point, edge: usize) -> Cut {
+    fn new(a: P, b: P, edge: usize) -> Cut<P> {
         if height(a) < height(b) {
             Cut { lo: a, hi: b, edge }
         } else {
@@ -342,7 +361,7 @@ impl Cut {
     }
 
     /// A probe at `v`.
-    fn probe(v: Point) -> Cut {
+    fn probe(v: P) -> Cut<P> {
         Cut {
             lo: v,
             hi: v,
@@ -351,9 +370,9 @@ impl Cut {
     }
 }
 
-order_from_cmp!(Cut);
+order_from_cmp!(Cut<P>);
 
-impl Ord for Cut {
+impl<P: Coord> Ord for Cut<P> {
     /// West (`Less`) to east at the current sweep position, for disjoint edges both cut by the
     /// sweep line, or an edge and a probe at a point strictly inside its height span and not on it
     /// (the only pairs a set ever compares, see the module documentation): test the later-starting
@@ -382,11 +401,11 @@ impl Ord for Cut {
 }
 
 /// The state of the monotone-decomposition sweep.
-struct Sweep<'a> {
-    pts: &'a [Point],
+struct Sweep<'a, P: Coord> {
+    pts: &'a [P],
     links: &'a Links,
     kind: Vec<Kind>,
-    status: Status<Cut>,
+    status: Status<Cut<P>>,
     /// The status handle of every edge `e` in the status.
     handle: Vec<Option<Handle>>,
     /// `helper[e]` for every edge `e` in the status.
@@ -394,10 +413,10 @@ struct Sweep<'a> {
     diagonals: Vec<[usize; 2]>,
 }
 
-impl<'a> Sweep<'a> {
+impl<'a, P: Coord> Sweep<'a, P> {
     /// The diagonals splitting the polygon into monotone pieces (proper, pairwise
     /// non-crossing, none repeated).
-    fn run(pts: &'a [Point], links: &'a Links) -> Vec<[usize; 2]> {
+    fn run(pts: &'a [P], links: &'a Links) -> Vec<[usize; 2]> {
         let n = pts.len();
         let kind = (0..n)
             .map(|v| Kind::of(pts[links.prev[v]], pts[v], pts[links.next[v]]))
@@ -420,7 +439,7 @@ impl<'a> Sweep<'a> {
         sweep.diagonals
     }
 
-    fn cut(&self, e: usize) -> Cut {
+    fn cut(&self, e: usize) -> Cut<P> {
         Cut::new(self.pts[e], self.pts[self.links.next[e]], e)
     }
 
@@ -495,7 +514,11 @@ impl<'a> Sweep<'a> {
 /// The pieces cut out of the polygon by `diagonals` (proper, pairwise non-crossing, connecting
 /// the rings without cut vertex, see "Holes" in the module documentation): all their vertex
 /// cycles, counter-clockwise, concatenated, and the start of each (plus the end).
-fn pieces(pts: &[Point], links: &Links, diagonals: &[[usize; 2]]) -> (Vec<usize>, Vec<usize>) {
+fn pieces<P: Coord>(
+    pts: &[P],
+    links: &Links,
+    diagonals: &[[usize; 2]],
+) -> (Vec<usize>, Vec<usize>) {
     let n = pts.len();
     let next = |i: usize| links.next[i];
     let prev = |i: usize| links.prev[i];
@@ -578,8 +601,8 @@ fn pieces(pts: &[Point], links: &Links, diagonals: &[[usize; 2]]) -> (Vec<usize>
 
 /// Counter-clockwise order of the directions from `w` to `a` and to `b`, measured from the
 /// direction of `reference` (exact: the half-plane first, then the turn). Directions must differ.
-fn around(w: Point, reference: Point, a: Point, b: Point) -> Ordering {
-    let half = |q: Point| {
+fn around<P: Coord>(w: P, reference: P, a: P, b: P) -> Ordering {
+    let half = |q: P| {
         let c = cross(w, reference, q);
         usize::from(!(c > 0 || (c == 0 && dot(w, reference, q) > 0)))
     };
@@ -605,8 +628,8 @@ struct Work {
 /// Triangulates a monotone piece (a counter-clockwise cycle of indices into `pts`, monotone in
 /// the height order, flat vertices allowed) into `cycle.len() - 2` positive triangles, appended to
 /// `out` (the stack algorithm; see the module documentation for the proof).
-fn triangulate_monotone(
-    pts: &[Point],
+fn triangulate_monotone<P: Coord>(
+    pts: &[P],
     cycle: &[usize],
     work: &mut Work,
     out: &mut Vec<[usize; 3]>,
@@ -676,7 +699,13 @@ fn triangulate_monotone(
 
 /// The fan from `u` (below the whole stack, on the other chain or the bottom) over the stack
 /// chain, whose vertices `s_1..` lie on `chain`.
-fn fan(pts: &[Point], stack: &[(usize, Chain)], u: usize, chain: Chain, out: &mut Vec<[usize; 3]>) {
+fn fan<P: Coord>(
+    pts: &[P],
+    stack: &[(usize, Chain)],
+    u: usize,
+    chain: Chain,
+    out: &mut Vec<[usize; 3]>,
+) {
     for w in stack.windows(2) {
         let (a, b) = (w[0].0, w[1].0);
         let t = match chain {

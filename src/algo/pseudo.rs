@@ -42,7 +42,8 @@
 //! sorts), one work list, one face scan. With the triangulation, O(n log n) in all.
 
 use super::{Pseudotriangle, Pseudotriangulation};
-use crate::geom::kernel::{cross, Point};
+use crate::geom::kernel::cross;
+use crate::geom::kernel::Coord;
 use crate::geom::polygon::Polygon;
 
 /// No twin: a polygon edge (its other side is outside the polygon).
@@ -65,7 +66,7 @@ const NONE: usize = usize::MAX;
 /// assert_eq!(p.faces.len(), 2); // a square has four corners: one diagonal must stay
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-pub fn minimal(polygon: &Polygon, triangles: &[[usize; 3]]) -> Pseudotriangulation {
+pub fn minimal<P: Coord>(polygon: &Polygon<P>, triangles: &[[usize; 3]]) -> Pseudotriangulation {
     let mut mesh = Mesh::new(polygon, triangles);
     mesh.remove_edges();
     mesh.remove_triangles();
@@ -74,8 +75,8 @@ pub fn minimal(polygon: &Polygon, triangles: &[[usize; 3]]) -> Pseudotriangulati
 
 /// The faces as half-edges: half-edge `3k + i` of triangle `k` runs from its corner `i` to corner
 /// `i + 1`, with its face on the left; `next`/`prev` walk a face counter-clockwise.
-struct Mesh<'a> {
-    points: &'a [Point],
+struct Mesh<'a, P: Coord> {
+    points: &'a [P],
     origin: Vec<usize>,
     next: Vec<usize>,
     prev: Vec<usize>,
@@ -84,8 +85,8 @@ struct Mesh<'a> {
     removed: Vec<bool>,
 }
 
-impl<'a> Mesh<'a> {
-    fn new(polygon: &'a Polygon, triangles: &[[usize; 3]]) -> Mesh<'a> {
+impl<'a, P: Coord> Mesh<'a, P> {
+    fn new(polygon: &'a Polygon<P>, triangles: &[[usize; 3]]) -> Mesh<'a, P> {
         let h = 3 * triangles.len();
         let origin: Vec<usize> = triangles.iter().flatten().copied().collect();
         let next: Vec<usize> = (0..h).map(|e| e - e % 3 + (e + 1) % 3).collect();

@@ -88,7 +88,8 @@ mod funnel;
 use super::mesh::{Broken, Half, Mesh};
 use super::TriangulateError;
 use super::{plain, plain_polygon, HullCounts, Pseudotriangle, Pseudotriangulation};
-use crate::geom::kernel::{cmp_angle, cross, Point};
+use crate::geom::kernel::Coord;
+use crate::geom::kernel::{cmp_angle, cross};
 use crate::geom::polygon::Polygon;
 use std::collections::HashSet;
 
@@ -111,7 +112,9 @@ use std::collections::HashSet;
 /// assert_eq!(p.faces.len(), 2); // n - 2: the polygon and the pocket under vertex (2, 1)
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-pub fn pseudotriangulate(polygon: &Polygon) -> Result<Pseudotriangulation, TriangulateError> {
+pub fn pseudotriangulate<P: Coord>(
+    polygon: &Polygon<P>,
+) -> Result<Pseudotriangulation, TriangulateError> {
     if polygon.touches() > 0 {
         return Err(TriangulateError::Touching {
             algorithm: super::Algorithm::PseudoHull,
@@ -148,8 +151,8 @@ pub fn pseudotriangulate(polygon: &Polygon) -> Result<Pseudotriangulation, Trian
 
 /// Steps 1 and 2: the fixed edge count reached (none if the start failed) and the faces, or
 /// [`Broken`] if a self-check failed.
-fn construct(
-    polygon: &Polygon,
+fn construct<P: Coord>(
+    polygon: &Polygon<P>,
     hull: &[usize],
 ) -> (Option<usize>, Result<Vec<Vec<usize>>, Broken>) {
     let n = polygon.len();
@@ -180,7 +183,10 @@ fn construct(
 
 /// Step 1: the triangulated hull with L and the hull edges fixed, a half-edge `(u, v)` of the
 /// outer boundary of each face (the face on its left), and a bound on any walk.
-fn setup<'a>(polygon: &'a Polygon, hull: &[usize]) -> (Mesh<'a>, Vec<(usize, usize)>, usize) {
+fn setup<'a, P: Coord>(
+    polygon: &'a Polygon<P>,
+    hull: &[usize],
+) -> (Mesh<'a, P>, Vec<(usize, usize)>, usize) {
     let n = polygon.len();
     let points = polygon.points();
     let mut triangles = plain_polygon(polygon);
@@ -188,7 +194,7 @@ fn setup<'a>(polygon: &'a Polygon, hull: &[usize]) -> (Mesh<'a>, Vec<(usize, usi
     // Where to start: a half-edge of each first face's outer boundary, the face on its left.
     let mut work: Vec<(usize, usize)> = vec![(0, polygon.next(0))];
     let add_cycle = |cycle: &[usize], triangles: &mut Vec<[usize; 3]>| {
-        let pts: Vec<Point> = cycle.iter().map(|&v| points[v]).collect();
+        let pts: Vec<P> = cycle.iter().map(|&v| points[v]).collect();
         triangles.extend(plain(&pts).into_iter().map(|t| t.map(|i| cycle[i])));
     };
     for r in 1..polygon.ring_starts().len() {
@@ -222,21 +228,21 @@ fn setup<'a>(polygon: &'a Polygon, hull: &[usize]) -> (Mesh<'a>, Vec<(usize, usi
 
 /// Whether the boundary turns at a corner (an angle below pi in the face on the left) between
 /// `into` and `out`, two consecutive fixed half-edges of a face boundary.
-fn corner(mesh: &Mesh, into: Half, out: Half) -> bool {
+fn corner<P: Coord>(mesh: &Mesh<P>, into: Half, out: Half) -> bool {
     let p = |v: usize| mesh.point(v);
     cross(p(mesh.origin(out)), p(mesh.dest(out)), p(mesh.origin(into))) > 0
 }
 
 /// One step of Theorem 6's proof on the face on the left of the fixed half-edge `h` (an edge of
 /// its outer boundary B): corners x1, x2, x3, the taut string S, R cut off and reported.
-fn step(
-    mesh: &mut Mesh,
+fn step<P: Coord>(
+    mesh: &mut Mesh<P>,
     h: Half,
     guard: usize,
     faces: &mut Vec<Vec<usize>>,
     work: &mut Vec<(usize, usize)>,
 ) -> Result<(), Broken> {
-    let next = |mesh: &Mesh, g: Half| mesh.next_boundary(g, |_, _| {});
+    let next = |mesh: &Mesh<P>, g: Half| mesh.next_boundary(g, |_, _| {});
     // x2: the first corner from h on.
     let mut into = h;
     let mut out = next(mesh, into);
@@ -321,7 +327,7 @@ fn step(
 
 /// Walks the face on the left of `h`, marks it finished and returns its cycle, checked to be a
 /// pseudotriangle: distinct vertices, exactly three corners.
-fn finish(mesh: &mut Mesh, h: Half, guard: usize) -> Result<Vec<usize>, Broken> {
+fn finish<P: Coord>(mesh: &mut Mesh<P>, h: Half, guard: usize) -> Result<Vec<usize>, Broken> {
     let mut cycle = Vec::new();
     let mut corners = 0;
     let mut g = h;
@@ -346,7 +352,7 @@ fn finish(mesh: &mut Mesh, h: Half, guard: usize) -> Result<Vec<usize>, Broken> 
 }
 
 /// The counts of Corollary 1: r and N over the segments of L and the hull edges.
-fn hull_counts(polygon: &Polygon, hull: &[usize]) -> HullCounts {
+fn hull_counts<P: Coord>(polygon: &Polygon<P>, hull: &[usize]) -> HullCounts {
     let n = polygon.len();
     let points = polygon.points();
     let mut around: Vec<Vec<usize>> = (0..n)
@@ -378,7 +384,7 @@ fn hull_counts(polygon: &Polygon, hull: &[usize]) -> HullCounts {
 
 /// The convex hull's boundary, counter-clockwise, with every point on it (collinear ones too):
 /// Andrew's monotone chain, popping only strict right turns.
-fn hull_cycle(points: &[Point]) -> Vec<usize> {
+fn hull_cycle<P: Coord>(points: &[P]) -> Vec<usize> {
     let mut order: Vec<usize> = (0..points.len()).collect();
     order.sort_unstable_by_key(|&i| points[i]);
     let chain = |order: &mut dyn Iterator<Item = usize>| {

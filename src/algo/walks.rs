@@ -52,7 +52,7 @@
 //! sweep do not yet run on walks.
 
 use super::asano::solve_walk;
-use crate::geom::kernel::{cross, dot, in_closed_wedge, properly_cross, strictly_between, Point};
+use crate::geom::kernel::{cross, dot, in_closed_wedge, properly_cross, strictly_between, Coord};
 use crate::geom::polygon::Polygon;
 use std::collections::HashMap;
 
@@ -70,7 +70,7 @@ pub const BOTH_ORDERS_UP_TO: usize = 2000;
 /// Whether `t` lies strictly inside the angle at `w` from `next` counter-clockwise to `prev`
 /// (closed angle minus the direction of `prev`: the ear's side `p q` may not run back along the
 /// edge into `p`).
-fn strictly_inside(prev: Point, w: Point, next: Point, t: Point) -> bool {
+fn strictly_inside<P: Coord>(prev: P, w: P, next: P, t: P) -> bool {
     in_closed_wedge(prev, w, next, t)
         && !(cross(w, prev, t) == 0 && dot(w, prev, t) > 0)
         && !(cross(w, next, t) == 0 && dot(w, next, t) > 0)
@@ -81,7 +81,7 @@ fn strictly_inside(prev: Point, w: Point, next: Point, t: Point) -> bool {
 /// # Errors
 /// `Err(what)` if no ear or bridge is found, which the theory excludes (a broken invariant,
 /// reported rather than a wrong answer).
-pub fn plain(polygon: &Polygon) -> Result<Vec<[usize; 3]>, String> {
+pub fn plain<P: Coord>(polygon: &Polygon<P>) -> Result<Vec<[usize; 3]>, String> {
     let cycle = bridged(polygon)?;
     clip(polygon, &cycle, false, false).map(|(triangles, _)| triangles)
 }
@@ -93,7 +93,7 @@ pub fn plain(polygon: &Polygon) -> Result<Vec<[usize; 3]>, String> {
 /// # Errors
 /// `Err(what)` as [`plain`], or when the degenerate triangles read off the result do not
 /// account for the triangles saved (a broken invariant; the caller falls back to [`plain`]).
-pub fn flattened(polygon: &Polygon) -> Result<(Triangles, Triangles), String> {
+pub fn flattened<P: Coord>(polygon: &Polygon<P>) -> Result<(Triangles, Triangles), String> {
     let cycle = bridged(polygon)?;
     let greedy = flattened_clip(polygon, &cycle, true);
     if cycle.len() > BOTH_ORDERS_UP_TO {
@@ -108,8 +108,8 @@ pub fn flattened(polygon: &Polygon) -> Result<(Triangles, Triangles), String> {
 
 /// [`clip`] with flat positions dropped, in the greedy order or the plain one, and the
 /// degenerate triangles read off its triangles (one per dropped position, else `Err`).
-fn flattened_clip(
-    polygon: &Polygon,
+fn flattened_clip<P: Coord>(
+    polygon: &Polygon<P>,
     cycle: &[usize],
     greedy: bool,
 ) -> Result<(Triangles, Triangles), String> {
@@ -130,7 +130,7 @@ fn flattened_clip(
 
 /// The outer walk with every hole walk joined to it by a bridge (see the module documentation),
 /// as a cycle of stored vertices (a bridge's ends appear twice).
-fn bridged(polygon: &Polygon) -> Result<Vec<usize>, String> {
+fn bridged<P: Coord>(polygon: &Polygon<P>) -> Result<Vec<usize>, String> {
     let pt = |i: usize| polygon.point(i);
     let walks: Vec<Vec<usize>> = (0..=polygon.holes())
         .map(|w| polygon.ring_range(w).collect())
@@ -141,16 +141,13 @@ fn bridged(polygon: &Polygon) -> Result<Vec<usize>, String> {
     holes.sort_by_key(|h| std::cmp::Reverse(h.iter().map(|&i| pt(i)).max()));
     for k in 0..holes.len() {
         let hole = &holes[k];
-        let top = hole.iter().map(|&i| pt(i)).max().unwrap_or_default();
+        let top = hole
+            .iter()
+            .map(|&i| pt(i))
+            .max()
+            .unwrap_or_else(|| pt(outer[0]));
         let mut candidates: Vec<usize> = (0..outer.len()).collect();
-        let dist = |i: usize| {
-            let (dx, dy) = (
-                i128::from(pt(i).x) - i128::from(top.x),
-                i128::from(pt(i).y) - i128::from(top.y),
-            );
-            dx * dx + dy * dy
-        };
-        candidates.sort_by_key(|&o| dist(outer[o]));
+        candidates.sort_by(|&o, &q| P::cmp_dist(top, pt(outer[o]), pt(outer[q])));
         let m = hole.len();
         let rest: Vec<&Vec<usize>> = holes[k + 1..].iter().collect();
         let mut bridge = None;
@@ -195,10 +192,10 @@ fn bridged(polygon: &Polygon) -> Result<Vec<usize>, String> {
 
 /// Whether the open segment `a b` contains no vertex of `cycles` and crosses none of their
 /// edges properly.
-fn clear<'a>(
-    polygon: &Polygon,
-    a: Point,
-    b: Point,
+fn clear<'a, P: Coord>(
+    polygon: &Polygon<P>,
+    a: P,
+    b: P,
     cycles: impl Iterator<Item = &'a Vec<usize>>,
 ) -> bool {
     cycles.into_iter().all(|c| {
@@ -215,8 +212,8 @@ fn clear<'a>(
 /// With `flatten`, every position strictly between its two cycle neighbours is dropped from the
 /// cycle, first and whenever clipping an ear makes one so; a vertex of the cycle lying strictly
 /// inside a side `p v` or `v q` of an ear then does not block it (see the module documentation).
-fn clip(
-    polygon: &Polygon,
+fn clip<P: Coord>(
+    polygon: &Polygon<P>,
     cycle: &[usize],
     flatten: bool,
     greedy: bool,
@@ -319,12 +316,12 @@ fn clip(
 
 /// Whether the segment between stored vertices `i` and `j` is a chord of the walks (see the
 /// module documentation; it may run along edges and pass vertices).
-pub(crate) fn is_chord(polygon: &Polygon, i: usize, j: usize) -> bool {
+pub(crate) fn is_chord<P: Coord>(polygon: &Polygon<P>, i: usize, j: usize) -> bool {
     let (a, b) = (polygon.point(i), polygon.point(j));
     if a == b {
         return false;
     }
-    let wedge = |v: usize, t: Point| {
+    let wedge = |v: usize, t: P| {
         in_closed_wedge(
             polygon.point(polygon.prev(v)),
             polygon.point(v),
@@ -335,7 +332,7 @@ pub(crate) fn is_chord(polygon: &Polygon, i: usize, j: usize) -> bool {
     if !wedge(i, b) || !wedge(j, a) {
         return false;
     }
-    let mut passed: HashMap<Point, bool> = HashMap::new();
+    let mut passed: HashMap<P, bool> = HashMap::new();
     for v in 0..polygon.len() {
         let (u, w) = (polygon.point(v), polygon.point(polygon.next(v)));
         if properly_cross(a, b, u, w) {
@@ -352,7 +349,7 @@ pub(crate) fn is_chord(polygon: &Polygon, i: usize, j: usize) -> bool {
 /// The exact minimum triangulation of a polygon whose rings all join the outer ring (one walk,
 /// at most [`WALK_DP_LIMIT`] stored vertices): the nondegenerate triangles and the degenerate
 /// ones (as [`super::Triangulation`] has them), or `None` beyond the limit or with hole walks.
-pub fn minimum(polygon: &Polygon) -> Option<(Triangles, Triangles)> {
+pub fn minimum<P: Coord>(polygon: &Polygon<P>) -> Option<(Triangles, Triangles)> {
     let n = polygon.len();
     if polygon.holes() > 0 || n > WALK_DP_LIMIT {
         return None;
@@ -382,25 +379,26 @@ pub fn minimum(polygon: &Polygon) -> Option<(Triangles, Triangles)> {
 /// Line numbers through stored vertex `i` (as `solve_walk` wants them: equal for `q` and `r`
 /// exactly when `i`, `q`, `r` are collinear; vertices at `i`'s own point get numbers of their
 /// own).
-fn lines_through(polygon: &Polygon, i: usize) -> Vec<u16> {
+fn lines_through<P: Coord>(polygon: &Polygon<P>, i: usize) -> Vec<u16> {
     let n = polygon.len();
     let c = polygon.point(i);
     // Each direction turned into the upper half-plane, so opposite directions are one line.
     let key = |q: usize| {
         let p = polygon.point(q);
-        let (dx, dy) = (p.x - c.x, p.y - c.y);
-        if dy < 0 || (dy == 0 && dx < 0) {
-            Point::new(c.x - dx, c.y - dy)
+        let v = P::vector(c, p);
+        let below = P::cmp_y(p, c).then(P::cmp_x(p, c)).is_lt();
+        if below {
+            P::reversed(v)
         } else {
-            p
+            v
         }
     };
     let mut others: Vec<usize> = (0..n).filter(|&q| polygon.point(q) != c).collect();
-    others.sort_by(|&q, &r| 0.cmp(&cross(c, key(q), key(r))));
+    others.sort_by(|&q, &r| 0.cmp(&P::vector_cross(key(q), key(r)).signum()));
     let mut out = vec![0u16; n];
     let mut line = 0u16;
     for (k, &q) in others.iter().enumerate() {
-        if k > 0 && cross(c, key(others[k - 1]), key(q)) != 0 {
+        if k > 0 && P::vector_cross(key(others[k - 1]), key(q)) != 0 {
             line += 1;
         }
         out[q] = line;
@@ -415,19 +413,22 @@ fn lines_through(polygon: &Polygon, i: usize) -> Vec<u16> {
 /// The degenerate triangles a set of triangles of the walks uses: for each triangle side and
 /// each point strictly inside it, the copy there whose closed angle holds the triangle, with its
 /// neighbours along the side (as [`super::t_junctions`], one copy per point).
-pub(crate) fn t_junctions(polygon: &Polygon, triangles: &[[usize; 3]]) -> Vec<[usize; 3]> {
+pub(crate) fn t_junctions<P: Coord>(
+    polygon: &Polygon<P>,
+    triangles: &[[usize; 3]],
+) -> Vec<[usize; 3]> {
     let all: Vec<usize> = (0..polygon.len()).collect();
     junctions_among(polygon, triangles, &all)
 }
 
 /// [`t_junctions`] with only the stored vertices `candidates` considered: O(T c) for T triangles
 /// and c candidates.
-fn junctions_among(
-    polygon: &Polygon,
+fn junctions_among<P: Coord>(
+    polygon: &Polygon<P>,
     triangles: &[[usize; 3]],
     candidates: &[usize],
 ) -> Vec<[usize; 3]> {
-    let wedge = |v: usize, t: Point| {
+    let wedge = |v: usize, t: P| {
         in_closed_wedge(
             polygon.point(polygon.prev(v)),
             polygon.point(v),
@@ -451,7 +452,7 @@ fn junctions_among(
             if inside.is_empty() {
                 continue;
             }
-            inside.sort_by_key(|&v| dot(ps, polygon.point(v), polygon.point(v)));
+            inside.sort_by(|&u, &v| P::cmp_dist(ps, polygon.point(u), polygon.point(v)));
             inside.dedup_by_key(|v| polygon.point(*v));
             super::push_chain(&mut out, s, inside, e);
         }

@@ -7,6 +7,7 @@
 //! Complexity: linear in the length of the literal, constant extra memory; a literal with too
 //! many significant digits is rejected at the first digit too many.
 
+use std::cmp::Ordering;
 use std::fmt;
 
 /// Most significant digits a coordinate may carry (what fits a `u128`).
@@ -206,6 +207,19 @@ impl Decimal {
         }
     }
 
+    /// The sign and the digits: the value is `±mantissa × 10^exponent` (`true`: negative).
+    pub(crate) fn parts(&self) -> (bool, u128) {
+        (self.negative, self.mantissa)
+    }
+
+    /// The opposite number, exactly.
+    pub(crate) fn negated(self) -> Decimal {
+        Decimal {
+            negative: !self.negative && self.mantissa != 0,
+            ..self
+        }
+    }
+
     /// The nearest `f64` (for drawing only, never for decisions).
     pub fn to_f64(&self) -> f64 {
         // Formatting then parsing gives the correctly rounded value.
@@ -256,6 +270,45 @@ impl Decimal {
             mantissa,
             exponent,
         }
+    }
+}
+
+impl Ord for Decimal {
+    /// The order of the values, exactly.
+    fn cmp(&self, other: &Decimal) -> Ordering {
+        let sign = |d: &Decimal| match (d.mantissa, d.negative) {
+            (0, _) => 0,
+            (_, true) => -1,
+            (_, false) => 1,
+        };
+        let by_sign = sign(self).cmp(&sign(other));
+        if by_sign != Ordering::Equal || sign(self) == 0 {
+            return by_sign;
+        }
+        // Same sign, both non-zero: compare the magnitudes by their leading power of ten, then
+        // digit by digit (aligned, both then have the same number of digits, at most 38).
+        let power = |d: &Decimal| i64::from(d.exponent) + i64::from(d.mantissa.ilog10());
+        let magnitude = power(self).cmp(&power(other)).then_with(|| {
+            let (a, b) = (self.mantissa, other.mantissa);
+            if self.exponent >= other.exponent {
+                let shift = (self.exponent - other.exponent) as u32;
+                (a * 10u128.pow(shift)).cmp(&b)
+            } else {
+                let shift = (other.exponent - self.exponent) as u32;
+                a.cmp(&(b * 10u128.pow(shift)))
+            }
+        });
+        if self.negative {
+            magnitude.reverse()
+        } else {
+            magnitude
+        }
+    }
+}
+
+impl PartialOrd for Decimal {
+    fn partial_cmp(&self, other: &Decimal) -> Option<Ordering> {
+        Some(self.cmp(other))
     }
 }
 

@@ -6,3 +6,4 @@ pub mod repair;
 pub mod status;
 pub(crate) mod touch;
 pub mod validate;
+pub mod wide;

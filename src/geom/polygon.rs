@@ -1,19 +1,22 @@
 //! The polygon type: exact grid coordinates, the spec's vertex numbering, normalised winding.
 //!
 //! Input contract: a [`RawPolygon`] (exact decimals, rings without closing vertex).
-//! Output guarantee ([`Polygon::from_raw`]): every coordinate is put on one integer grid per
+//! Output guarantee ([`AnyPolygon::from_raw`]): when every coordinate fits one integer grid per
 //! polygon (multiplied by `10^scale`, `scale` the most decimal places used, then translated so the
-//! minimum is 0), exactly; the grid range is at most [`MAX_COORD`], so every kernel predicate is
-//! exact (otherwise [`InvalidPolygon::CoordinatesTooLarge`]). Exact consecutive duplicate vertices
+//! minimum is 0) within [`MAX_COORD`], a fast [`Polygon`] of grid [`Point`]s; otherwise a
+//! `Polygon<WidePoint>` on the input decimals themselves ([`crate::geom::wide`]); every kernel
+//! predicate is exact either way. Exact consecutive duplicate vertices
 //! are dropped with a [`Warning`]; kept vertices keep their input number (`id`). The outer ring is
 //! stored counter-clockwise and every hole clockwise, so the interior is always on the left of
 //! `i -> next(i)`. The polygon is then validated ([`crate::geom::validate`]).
 //! Complexity: O(n log n) (the validation sweep dominates).
 
 use super::decimal::Decimal;
-use super::kernel::{cross, Point, WideSum, MAX_COORD};
+use super::kernel::{cross, Area, Coord, Point, MAX_COORD};
 use super::validate::{self, InvalidPolygon};
+use super::wide::WidePoint;
 use crate::io::read::RawPolygon;
+use std::borrow::Cow;
 use std::fmt;
 use std::ops::Range;
 
@@ -85,13 +88,26 @@ impl Grid {
         }
     }
 
-    /// A grid point as `(x, y)` in input coordinates, exactly.
-    pub fn format_point(&self, p: Point) -> String {
-        format!("({}, {})", self.format(0, p.x), self.format(1, p.y))
+    /// A point as `(x, y)` in input coordinates, exactly.
+    pub fn format_point<P: Coord>(&self, p: P) -> String {
+        format!("({}, {})", p.format(self, 0), p.format(self, 1))
     }
 
-    /// The input coordinates of a grid point, rounded to `f64` (for drawing only).
-    pub fn to_f64(&self, p: Point) -> [f64; 2] {
+    /// The grid of a wide polygon: its points carry their input coordinates themselves.
+    pub(crate) fn identity() -> Grid {
+        Grid {
+            scale: 0,
+            origin: [0; 2],
+        }
+    }
+
+    /// The input coordinates of a point, rounded to `f64` (for drawing only).
+    pub fn to_f64<P: Coord>(&self, p: P) -> [f64; 2] {
+        p.to_f64(self)
+    }
+
+    /// The input coordinates of a grid point, rounded to `f64`.
+    pub(crate) fn grid_to_f64(&self, p: Point) -> [f64; 2] {
         let unit = 10f64.powi(self.scale as i32);
         [
             (i128::from(p.x) + self.origin[0]) as f64 / unit,
@@ -100,7 +116,8 @@ impl Grid {
     }
 }
 
-/// A valid polygon with holes on an exact integer grid.
+/// A valid polygon with holes, its points of one exact kernel: the fast grid [`Point`]s (the
+/// default) or [`WidePoint`]s.
 ///
 /// Invariants (established by [`Polygon::from_raw`], checked by `check_invariants` in tests):
 /// - vertices are stored ring after ring; ring 0 is the outer ring, counter-clockwise; rings
@@ -111,8 +128,8 @@ impl Grid {
 /// - `ids[i]` is the input vertex number of stored vertex `i` (spec numbering), strictly
 ///   increasing within the input order of each ring (reversed rings run backwards).
 #[derive(Clone, Debug)]
-pub struct Polygon {
-    points: Vec<Point>,
+pub struct Polygon<P = Point> {
+    points: Vec<P>,
     ids: Vec<usize>,
     ring_starts: Vec<usize>,
     ring_of: Vec<u32>,
@@ -125,11 +142,158 @@ pub struct Polygon {
     touches: usize,
 }
 
-impl Polygon {
-    /// Builds and validates a polygon from the reader's output.
+/// A valid polygon of either kernel, as [`AnyPolygon::from_raw`] chose it.
+#[derive(Clone, Debug)]
+pub enum AnyPolygon {
+    /// Its grid fits the fast kernel (`2^62` units).
+    Fast(Polygon),
+    /// Any other polygon: the wide kernel.
+    Wide(Polygon<WidePoint>),
+}
+
+/// Runs `$body` with `$p` bound to the polygon of either kernel (one generic body, both kernels).
+#[macro_export]
+#[doc(hidden)]
+macro_rules! with_polygon {
+    ($any:expr, $p:ident => $body:expr) => {
+        match $any {
+            $crate::geom::polygon::AnyPolygon::Fast($p) => $body,
+            $crate::geom::polygon::AnyPolygon::Wide($p) => $body,
+        }
+    };
+}
+
+impl AnyPolygon {
+    /// Builds and validates a polygon from the reader's output, on the fast kernel when its grid
+    /// fits, else on the wide one: any coordinates the readers accept.
     ///
     /// # Errors
-    /// [`InvalidPolygon`]: the first problem found (see [`Polygon::from_raw_all_errors`]).
+    /// [`InvalidPolygon`]: the first problem found (see [`AnyPolygon::from_raw_all_errors`]).
+    pub fn from_raw(raw: &RawPolygon) -> Result<(AnyPolygon, Vec<Warning>), InvalidPolygon> {
+        AnyPolygon::from_raw_all_errors(raw).map_err(|mut errors| errors.swap_remove(0))
+    }
+
+    /// Like [`AnyPolygon::from_raw`], but returns every problem found (at least one on error).
+    ///
+    /// # Errors
+    /// A non-empty list of [`InvalidPolygon`]s.
+    pub fn from_raw_all_errors(
+        raw: &RawPolygon,
+    ) -> Result<(AnyPolygon, Vec<Warning>), Vec<InvalidPolygon>> {
+        match Polygon::from_raw_all_errors(raw) {
+            Err(errors) if matches!(errors[..], [InvalidPolygon::CoordinatesTooLarge { .. }]) => {
+                let (polygon, warnings) = Polygon::from_raw_wide(raw)?;
+                Ok((AnyPolygon::Wide(polygon), warnings))
+            }
+            other => other.map(|(polygon, warnings)| (AnyPolygon::Fast(polygon), warnings)),
+        }
+    }
+
+    /// The fast polygon, if it is one.
+    pub fn fast(&self) -> Option<&Polygon> {
+        match self {
+            AnyPolygon::Fast(p) => Some(p),
+            AnyPolygon::Wide(_) => None,
+        }
+    }
+
+    /// Whether the wide kernel holds it.
+    pub fn is_wide(&self) -> bool {
+        matches!(self, AnyPolygon::Wide(_))
+    }
+
+    /// Number of vertices kept (n, over all rings).
+    pub fn len(&self) -> usize {
+        with_polygon!(self, p => p.len())
+    }
+
+    /// Whether there are no vertices (never true for a valid polygon).
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Number of holes (w).
+    pub fn holes(&self) -> usize {
+        with_polygon!(self, p => p.holes())
+    }
+
+    /// The number of touches between rings ([`Polygon::touches`]).
+    pub fn touches(&self) -> usize {
+        with_polygon!(self, p => p.touches())
+    }
+
+    /// The input vertex number of stored vertex `i`.
+    pub fn id(&self, i: usize) -> usize {
+        with_polygon!(self, p => p.id(i))
+    }
+
+    /// Vertex `i` as `(x, y)` in input coordinates, exactly.
+    pub fn format_vertex(&self, i: usize) -> String {
+        with_polygon!(self, p => p.format_vertex(i))
+    }
+
+    /// Vertex `i`'s coordinates `[x, y]` in input coordinates, exactly, as text.
+    pub fn coordinates(&self, i: usize) -> [String; 2] {
+        with_polygon!(self, p => {
+            let q = p.point(i);
+            [q.format(p.grid(), 0), q.format(p.grid(), 1)]
+        })
+    }
+
+    /// Vertex `i`'s input coordinates rounded to `f64` (for drawing only).
+    pub fn vertex_f64(&self, i: usize) -> [f64; 2] {
+        with_polygon!(self, p => p.point(i).to_f64(p.grid()))
+    }
+}
+
+impl AnyPolygon {
+    /// The polygon for drawing only: a fast polygon itself; a wide one as a fast polygon of the
+    /// same rings and numbers whose points are [`Polygon::drawing_point`]s (approximate, maybe
+    /// not even valid: never for a decision).
+    pub fn for_drawing(&self) -> Cow<'_, Polygon> {
+        match self {
+            AnyPolygon::Fast(p) => Cow::Borrowed(p),
+            AnyPolygon::Wide(p) => {
+                let (origin, scale) = p.drawing_frame();
+                let points = p
+                    .points
+                    .iter()
+                    .map(|&q| q.drawing_point(origin, scale))
+                    .collect();
+                Cow::Owned(Polygon {
+                    points,
+                    ids: p.ids.clone(),
+                    ring_starts: p.ring_starts.clone(),
+                    ring_of: p.ring_of.clone(),
+                    input_vertices: p.input_vertices,
+                    grid: p.grid,
+                    source_ring: p.source_ring.clone(),
+                    touches: p.touches,
+                })
+            }
+        }
+    }
+}
+
+impl From<Polygon> for AnyPolygon {
+    fn from(polygon: Polygon) -> AnyPolygon {
+        AnyPolygon::Fast(polygon)
+    }
+}
+
+impl From<Polygon<WidePoint>> for AnyPolygon {
+    fn from(polygon: Polygon<WidePoint>) -> AnyPolygon {
+        AnyPolygon::Wide(polygon)
+    }
+}
+
+impl Polygon {
+    /// Builds and validates a polygon on the fast kernel from the reader's output.
+    ///
+    /// # Errors
+    /// [`InvalidPolygon`]: the first problem found (see [`Polygon::from_raw_all_errors`]);
+    /// [`InvalidPolygon::CoordinatesTooLarge`] when the grid does not fit the fast kernel
+    /// ([`AnyPolygon::from_raw`] then takes the wide one).
     pub fn from_raw(raw: &RawPolygon) -> Result<(Polygon, Vec<Warning>), InvalidPolygon> {
         Polygon::from_raw_all_errors(raw).map_err(|mut errors| errors.swap_remove(0))
     }
@@ -145,9 +309,56 @@ impl Polygon {
         Ok((polygon.validated()?, warnings))
     }
 
+    /// Grid conversion, numbering, duplicate removal and winding, without the sweep.
+    pub(crate) fn build(raw: &RawPolygon) -> Result<(Polygon, Vec<Warning>), InvalidPolygon> {
+        if raw.rings.is_empty() {
+            return Err(InvalidPolygon::TooFewVertices {
+                ring: Ring::Outer,
+                distinct: 0,
+            });
+        }
+        let (points, grid) = to_grid(raw)?;
+        Polygon::assemble(raw, points, grid)
+    }
+}
+
+impl Polygon<WidePoint> {
+    /// Builds and validates a polygon on the wide kernel (any coordinates the readers accept),
+    /// every problem found.
+    ///
+    /// # Errors
+    /// A non-empty list of [`InvalidPolygon`]s.
+    pub fn from_raw_wide(
+        raw: &RawPolygon,
+    ) -> Result<(Polygon<WidePoint>, Vec<Warning>), Vec<InvalidPolygon>> {
+        let (polygon, warnings) = Polygon::build_wide(raw).map_err(|e| vec![e])?;
+        Ok((polygon.validated()?, warnings))
+    }
+
+    /// As [`Polygon::build`], on the wide kernel.
+    pub(crate) fn build_wide(
+        raw: &RawPolygon,
+    ) -> Result<(Polygon<WidePoint>, Vec<Warning>), InvalidPolygon> {
+        if raw.rings.is_empty() {
+            return Err(InvalidPolygon::TooFewVertices {
+                ring: Ring::Outer,
+                distinct: 0,
+            });
+        }
+        let points = raw
+            .rings
+            .iter()
+            .flatten()
+            .map(|[x, y]| WidePoint::new(*x, *y))
+            .collect();
+        Polygon::assemble(raw, points, Grid::identity())
+    }
+}
+
+impl<P: Coord> Polygon<P> {
     /// The polygon validated: as it is when no rings touch, else relinked into the boundary
     /// walks of its touching rings ([`crate::geom::touch`]).
-    pub(crate) fn validated(self) -> Result<Polygon, Vec<InvalidPolygon>> {
+    pub(crate) fn validated(self) -> Result<Polygon<P>, Vec<InvalidPolygon>> {
         let contacts = validate::touching(&self)?;
         if !contacts.any() {
             return Ok(self);
@@ -157,7 +368,7 @@ impl Polygon {
 
     /// A polygon without rings yet, with room for `vertices` vertices in `rings` rings (rings are
     /// pushed by the caller, who closes `ring_starts`).
-    fn empty(vertices: usize, rings: usize, input_vertices: usize, grid: Grid) -> Polygon {
+    fn empty(vertices: usize, rings: usize, input_vertices: usize, grid: Grid) -> Polygon<P> {
         Polygon {
             points: Vec::with_capacity(vertices),
             ids: Vec::with_capacity(vertices),
@@ -172,7 +383,7 @@ impl Polygon {
 
     /// The same polygon with other rings (points and input numbers, outer ring first); the
     /// rings' winding is kept as given.
-    pub(super) fn with_rings(&self, rings: &[Vec<(Point, usize)>]) -> Polygon {
+    pub(super) fn with_rings(&self, rings: &[Vec<(P, usize)>]) -> Polygon<P> {
         let total = rings.iter().map(Vec::len).sum();
         let mut p = Polygon::empty(total, rings.len(), self.input_vertices, self.grid);
         for (r, ring) in rings.iter().enumerate() {
@@ -189,7 +400,7 @@ impl Polygon {
 
     /// The boundary walks of touching rings: stored vertices `order` (walk after walk, each
     /// starting at `starts[w]`), each keeping its point, input number and input ring.
-    pub(super) fn relinked(&self, order: &[usize], starts: &[usize], touches: usize) -> Polygon {
+    pub(super) fn relinked(&self, order: &[usize], starts: &[usize], touches: usize) -> Polygon<P> {
         let mut ring_of = vec![0u32; order.len()];
         for (w, &start) in starts.iter().enumerate() {
             let end = starts.get(w + 1).copied().unwrap_or(order.len());
@@ -222,7 +433,7 @@ impl Polygon {
 
     /// One ring of grid points as they are (no validation, no winding change; ids 0, 1, ..), for
     /// checking a cycle with [`crate::geom::validate::errors`] (`verify::pseudo`'s faces).
-    pub(crate) fn ring_of_points(points: Vec<Point>, grid: Grid) -> Polygon {
+    pub(crate) fn ring_of_points(points: Vec<P>, grid: Grid) -> Polygon<P> {
         let k = points.len();
         Polygon {
             points,
@@ -236,22 +447,19 @@ impl Polygon {
         }
     }
 
-    /// Grid conversion, numbering, duplicate removal and winding, without the sweep.
-    pub(crate) fn build(raw: &RawPolygon) -> Result<(Polygon, Vec<Warning>), InvalidPolygon> {
-        if raw.rings.is_empty() {
-            return Err(InvalidPolygon::TooFewVertices {
-                ring: Ring::Outer,
-                distinct: 0,
-            });
-        }
-        let grid_values = to_grid(raw)?;
-        let grid = grid_values.1;
+    /// Numbering, duplicate removal and winding of `points` (every vertex of `raw`, in order),
+    /// without the sweep.
+    fn assemble(
+        raw: &RawPolygon,
+        points: Vec<P>,
+        grid: Grid,
+    ) -> Result<(Polygon<P>, Vec<Warning>), InvalidPolygon> {
         // Room for every vertex read (duplicates dropped below only leave a little unused), so
         // that the largest arrays never grow by doubling.
         let total: usize = raw.rings.iter().map(Vec::len).sum();
         let mut polygon = Polygon::empty(total, raw.rings.len(), 0, grid);
         let mut warnings = Vec::new();
-        let mut values = grid_values.0.into_iter();
+        let mut values = points.into_iter();
         for (r, input_ring) in raw.rings.iter().enumerate() {
             let first_id = polygon.input_vertices;
             polygon.input_vertices += input_ring.len();
@@ -270,10 +478,10 @@ impl Polygon {
     /// input vertex number; `input_vertices` numbers used by the input): what
     /// [`crate::geom::repair`] made of the input's rings.
     pub(crate) fn from_grid_rings(
-        rings: Vec<Vec<(Point, usize)>>,
+        rings: Vec<Vec<(P, usize)>>,
         grid: Grid,
         input_vertices: usize,
-    ) -> Result<(Polygon, Vec<Warning>), InvalidPolygon> {
+    ) -> Result<(Polygon<P>, Vec<Warning>), InvalidPolygon> {
         let total = rings.iter().map(Vec::len).sum();
         let mut polygon = Polygon::empty(total, rings.len(), input_vertices, grid);
         let mut warnings = Vec::new();
@@ -289,13 +497,13 @@ impl Polygon {
     fn push_ring(
         &mut self,
         r: usize,
-        input_ring: impl Iterator<Item = (Point, usize)>,
+        input_ring: impl Iterator<Item = (P, usize)>,
         warnings: &mut Vec<Warning>,
     ) -> Result<(), InvalidPolygon> {
         let ring = Ring::from_index(r);
         let grid = self.grid;
         let start = self.points.len();
-        let mut kept: Vec<(Point, usize)> = Vec::with_capacity(input_ring.size_hint().0);
+        let mut kept: Vec<(P, usize)> = Vec::with_capacity(input_ring.size_hint().0);
         for (point, id) in input_ring {
             if let Some(&(last, last_id)) = kept.last() {
                 if last == point {
@@ -317,9 +525,9 @@ impl Polygon {
                 distinct: kept.len(),
             });
         }
-        let mut area = WideSum::default();
+        let mut area = Area::default();
         for i in 0..kept.len() {
-            area.add(cross(kept[0].0, kept[i].0, kept[(i + 1) % kept.len()].0));
+            area.add(kept[0].0, kept[i].0, kept[(i + 1) % kept.len()].0);
         }
         let want = if r == 0 { 1 } else { -1 };
         let collinear = kept
@@ -364,12 +572,12 @@ impl Polygon {
 
     /// The grid point of stored vertex `i`.
     #[inline]
-    pub fn point(&self, i: usize) -> Point {
+    pub fn point(&self, i: usize) -> P {
         self.points[i]
     }
 
     /// All grid points, ring after ring.
-    pub fn points(&self) -> &[Point] {
+    pub fn points(&self) -> &[P] {
         &self.points
     }
 
@@ -437,6 +645,42 @@ impl Polygon {
         self.grid.format_point(self.points[i])
     }
 
+    /// Point `p` (of this polygon) on a grid for drawing only: a fast polygon's grid point
+    /// itself; for a wide polygon, its offset from the bounding box's lower left corner scaled so
+    /// that the larger side spans `2^40` units (SVG panels and the checker's faults).
+    pub fn drawing_point(&self, p: P) -> Point {
+        let (origin, scale) = self.drawing_frame();
+        p.drawing_point(origin, scale)
+    }
+
+    /// The lower left corner of the bounding box and the scale of [`Polygon::drawing_point`].
+    fn drawing_frame(&self) -> (P, f64) {
+        let first = self.points[0];
+        let (mut lo, mut hi) = ([first; 2], [first; 2]);
+        for &q in &self.points {
+            for axis in 0..2 {
+                let cmp = if axis == 0 { P::cmp_x } else { P::cmp_y };
+                if cmp(q, lo[axis]).is_lt() {
+                    lo[axis] = q;
+                }
+                if cmp(q, hi[axis]).is_gt() {
+                    hi[axis] = q;
+                }
+            }
+        }
+        let (lo, hi) = (P::corner(lo[0], lo[1]), P::corner(hi[0], hi[1]));
+        let [w, h] = hi.offset_f64(lo);
+        let span = w.max(h);
+        (
+            lo,
+            if span > 0.0 {
+                2f64.powi(40) / span
+            } else {
+                1.0
+            },
+        )
+    }
+
     /// Number of flat vertices (collinear with both neighbours, between them).
     pub fn flat_vertices(&self) -> usize {
         (0..self.len())
@@ -464,14 +708,10 @@ impl Polygon {
     }
 
     /// Twice the area, exactly.
-    pub fn twice_area(&self) -> WideSum {
-        let mut sum = WideSum::default();
+    pub fn twice_area(&self) -> Area<P> {
+        let mut sum = Area::default();
         for i in 0..self.len() {
-            sum.add(cross(
-                Point::default(),
-                self.points[i],
-                self.points[self.next(i)],
-            ));
+            sum.add(self.points[0], self.points[i], self.points[self.next(i)]);
         }
         sum
     }
@@ -485,22 +725,28 @@ impl Polygon {
         for r in 0..self.ring_starts.len() - 1 {
             let range = self.ring_range(r);
             assert!(range.len() >= 3);
-            let mut area = WideSum::default();
+            let mut area = Area::default();
             for i in range.clone() {
                 assert_eq!(self.ring_index(i), r);
                 assert_eq!(self.prev(self.next(i)), i);
-                area.add(cross(
-                    Point::default(),
+                area.add(
+                    self.points[range.start],
                     self.points[i],
                     self.points[self.next(i)],
-                ));
+                );
             }
             assert_eq!(area.signum(), if r == 0 { 1 } else { -1 });
         }
     }
 }
 
-pub(crate) fn dropped(ring: Ring, id: usize, same_as: usize, grid: &Grid, p: Point) -> Warning {
+pub(crate) fn dropped<P: Coord>(
+    ring: Ring,
+    id: usize,
+    same_as: usize,
+    grid: &Grid,
+    p: P,
+) -> Warning {
     Warning(format!(
         "{ring}: vertex {id} {} repeats vertex {same_as} and was dropped",
         grid.format_point(p)
@@ -705,6 +951,23 @@ mod tests {
         ]]))
         .unwrap_err();
         assert!(e.to_string().contains("too large"), "{e}");
+        // The wide kernel takes them.
+        for rings in [
+            &[&[("0", "0"), ("1e19", "0"), ("0", "0.1")][..]][..],
+            &[&[("0", "0"), ("1e-30", "0"), ("1e10", "1")][..]][..],
+            &[&[("0", "0"), ("1", "0"), ("1", "1e400")][..]][..],
+        ] {
+            let (p, _) = AnyPolygon::from_raw(&raw_decimal(rings)).unwrap();
+            assert!(p.is_wide());
+            assert_eq!(p.len(), 3);
+        }
+        let (p, _) = AnyPolygon::from_raw(&raw_decimal(&[&[
+            ("0", "0"),
+            ("1e-30", "0"),
+            ("1e10", "1"),
+        ]]))
+        .unwrap();
+        assert_eq!(p.format_vertex(1), "(0.000000000000000000000000000001, 0)");
         // The largest span that fits is accepted.
         assert!(Polygon::from_raw(&raw_decimal(&[&[
             ("0", "0"),

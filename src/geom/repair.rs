@@ -1,7 +1,8 @@
 //! `--repair`: the usual defects of real polygons mended without new points, before validation.
 //!
-//! Input contract: the rings of one input polygon on its exact grid ([`crate::geom::polygon`]'s
-//! `to_grid`), each vertex with its input number; ring 0 the outer ring. Output guarantee
+//! Input contract: the rings of one input polygon as points of either exact kernel (on its grid
+//! ([`crate::geom::polygon`]'s `to_grid`) when it fits the fast kernel, else the input decimals
+//! themselves, [`crate::geom::wide`]), each vertex with its input number; ring 0 the outer ring. Output guarantee
 //! ([`repair`]): one or more pieces, each an outer ring (counter-clockwise) and its holes
 //! (clockwise) made only of input vertices at their input coordinates, whose union is the region
 //! the input describes (the points covered an odd number of times by the rings' loops, as OGC
@@ -30,16 +31,17 @@
 //! edges and points); step 3 costs O(k n) for a ring split into k loops, and placing h holes
 //! into s > 1 outer rings O(h n).
 
-use super::kernel::{cmp_angle_from, cross, line_through, on_segment, Point, WideSum};
-use super::polygon::{dropped, to_grid, Grid, Polygon, Ring, Warning};
+use super::kernel::{cmp_angle_from, cross, line_through, on_segment, Area, Coord, Point};
+use super::polygon::{dropped, to_grid, AnyPolygon, Grid, Polygon, Ring, Warning};
 use super::validate::{folds_back, InvalidPolygon};
+use super::wide::WidePoint;
 use crate::io::read::RawPolygon;
 use serde::Serialize;
 use std::collections::HashMap;
 use std::fmt;
 
-/// A vertex: its grid point and its input number.
-pub(crate) type Vertex = (Point, usize);
+/// A vertex: its point (of either kernel) and its input number.
+pub(crate) type Vertex<P = Point> = (P, usize);
 
 /// What a repair did.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -72,16 +74,26 @@ impl fmt::Display for Repair {
 
 /// The repaired input: its pieces (rings of vertices, outer ring first), what was repaired,
 /// and the repeated points dropped.
-#[derive(Clone, Debug, Default)]
-pub(crate) struct Repaired {
-    pub pieces: Vec<Vec<Vec<Vertex>>>,
+#[derive(Clone, Debug)]
+pub(crate) struct Repaired<P = Point> {
+    pub pieces: Vec<Vec<Vec<Vertex<P>>>>,
     pub repairs: Vec<Repair>,
     pub warnings: Vec<Warning>,
 }
 
-/// A piece of a repaired polygon: valid (with the warnings of building it), or every problem
-/// validation found.
-pub type Piece = Result<(Polygon, Vec<Warning>), Vec<InvalidPolygon>>;
+impl<P> Default for Repaired<P> {
+    fn default() -> Self {
+        Repaired {
+            pieces: Vec::new(),
+            repairs: Vec::new(),
+            warnings: Vec::new(),
+        }
+    }
+}
+
+/// A piece of a repaired polygon: valid (with the warnings of building it; on the kernel the
+/// input's coordinates needed), or every problem validation found.
+pub type Piece = Result<(AnyPolygon, Vec<Warning>), Vec<InvalidPolygon>>;
 
 /// One input polygon after `--repair`: each piece, valid or with its problems; what was
 /// repaired; the repeated points dropped.
@@ -96,11 +108,12 @@ pub struct Pieces {
     pub warnings: Vec<Warning>,
 }
 
-/// Repairs one polygon as read, then builds and validates each piece.
+/// Repairs one polygon as read, then builds and validates each piece; on the fast kernel when
+/// the polygon's grid fits it, else on the wide one (any coordinates the readers accept).
 ///
 /// # Errors
-/// What cannot be repaired into anything: coordinates too large, an outer ring of fewer than 3
-/// distinct points or of zero area.
+/// What cannot be repaired into anything: an outer ring of fewer than 3 distinct points or of
+/// zero area.
 pub fn repair_raw(raw: &RawPolygon) -> Result<Pieces, InvalidPolygon> {
     if raw.rings.is_empty() {
         return Err(InvalidPolygon::TooFewVertices {
@@ -108,9 +121,32 @@ pub fn repair_raw(raw: &RawPolygon) -> Result<Pieces, InvalidPolygon> {
             distinct: 0,
         });
     }
-    let (points, grid) = to_grid(raw)?;
+    match to_grid(raw) {
+        Ok((points, grid)) => repair_points(raw, points, grid),
+        Err(InvalidPolygon::CoordinatesTooLarge { .. }) => {
+            let points = raw
+                .rings
+                .iter()
+                .flatten()
+                .map(|[x, y]| WidePoint::new(*x, *y))
+                .collect();
+            repair_points(raw, points, Grid::identity())
+        }
+        Err(e) => Err(e),
+    }
+}
+
+/// [`repair_raw`] on `points` (every vertex of `raw`, in order) of one kernel.
+fn repair_points<P: Coord>(
+    raw: &RawPolygon,
+    points: Vec<P>,
+    grid: Grid,
+) -> Result<Pieces, InvalidPolygon>
+where
+    AnyPolygon: From<Polygon<P>>,
+{
     let mut points = points.into_iter().enumerate();
-    let rings: Vec<Vec<Vertex>> = raw
+    let rings: Vec<Vec<Vertex<P>>> = raw
         .rings
         .iter()
         .map(|r| {
@@ -129,7 +165,7 @@ pub fn repair_raw(raw: &RawPolygon) -> Result<Pieces, InvalidPolygon> {
         .map(|rings| {
             let (polygon, warnings) =
                 Polygon::from_grid_rings(rings, grid, input_vertices).map_err(|e| vec![e])?;
-            Ok((polygon.validated()?, warnings))
+            Ok((AnyPolygon::from(polygon.validated()?), warnings))
         })
         .collect();
     Ok(Pieces {
@@ -141,11 +177,11 @@ pub fn repair_raw(raw: &RawPolygon) -> Result<Pieces, InvalidPolygon> {
 
 /// A loop with its role: an outer boundary (counter-clockwise) or a hole (clockwise).
 #[derive(Clone, Debug)]
-struct Loop {
+struct Loop<P> {
     /// The input ring it comes from.
     ring: usize,
     shell: bool,
-    vertices: Vec<Vertex>,
+    vertices: Vec<Vertex<P>>,
 }
 
 /// Repairs the rings of one polygon (see the module documentation).
@@ -154,14 +190,17 @@ struct Loop {
 /// The outer ring's [`InvalidPolygon::TooFewVertices`] or [`InvalidPolygon::ZeroArea`] when it
 /// has fewer than 3 distinct points or no area left once its spikes are gone (nothing to repair
 /// into), or when nothing at all is left.
-pub(crate) fn repair(rings: Vec<Vec<Vertex>>, grid: &Grid) -> Result<Repaired, InvalidPolygon> {
+pub(crate) fn repair<P: Coord>(
+    rings: Vec<Vec<Vertex<P>>>,
+    grid: &Grid,
+) -> Result<Repaired<P>, InvalidPolygon> {
     let mut out = Repaired::default();
     let mut loops = Vec::new();
     for (r, ring) in rings.into_iter().enumerate() {
         let name = Ring::from_index(r);
         // Judged as written first (a ring on one line is all spikes), then once despiked.
-        let degenerate = |ring: &[Vertex]| {
-            let mut points: Vec<Point> = ring.iter().map(|v| v.0).collect();
+        let degenerate = |ring: &[Vertex<P>]| {
+            let mut points: Vec<P> = ring.iter().map(|v| v.0).collect();
             points.dedup();
             while points.len() > 1 && points.first() == points.last() {
                 points.pop();
@@ -222,10 +261,10 @@ pub(crate) fn repair(rings: Vec<Vec<Vertex>>, grid: &Grid) -> Result<Repaired, I
     if shells.is_empty() {
         return Err(InvalidPolygon::ZeroArea { ring: Ring::Outer });
     }
-    let first_id = |l: &Loop| l.vertices.iter().map(|v| v.1).min();
+    let first_id = |l: &Loop<P>| l.vertices.iter().map(|v| v.1).min();
     shells.sort_by_key(first_id);
     holes.sort_by_key(|l| (l.ring, first_id(l)));
-    let mut pieces: Vec<Vec<Vec<Vertex>>> =
+    let mut pieces: Vec<Vec<Vec<Vertex<P>>>> =
         shells.iter().map(|s| vec![s.vertices.clone()]).collect();
     for hole in holes {
         let at = if shells.len() == 1 {
@@ -240,9 +279,14 @@ pub(crate) fn repair(rings: Vec<Vec<Vertex>>, grid: &Grid) -> Result<Repaired, I
 }
 
 /// Ring `r` without repeated consecutive points and without spikes.
-fn despike(r: usize, ring: Vec<Vertex>, grid: &Grid, out: &mut Repaired) -> Vec<Vertex> {
+fn despike<P: Coord>(
+    r: usize,
+    ring: Vec<Vertex<P>>,
+    grid: &Grid,
+    out: &mut Repaired<P>,
+) -> Vec<Vertex<P>> {
     let name = Ring::from_index(r);
-    let spike = |out: &mut Repaired, a: Vertex, b: Vertex, c: Vertex| {
+    let spike = |out: &mut Repaired<P>, a: Vertex<P>, b: Vertex<P>, c: Vertex<P>| {
         out.repairs.push(Repair {
             kind: RepairKind::Spike,
             message: format!(
@@ -256,7 +300,7 @@ fn despike(r: usize, ring: Vec<Vertex>, grid: &Grid, out: &mut Repaired) -> Vec<
             ),
         });
     };
-    let mut kept: Vec<Vertex> = Vec::with_capacity(ring.len());
+    let mut kept: Vec<Vertex<P>> = Vec::with_capacity(ring.len());
     for v in ring {
         if let Some(&last) = kept.last() {
             if last.0 == v.0 {
@@ -311,13 +355,19 @@ fn despike(r: usize, ring: Vec<Vertex>, grid: &Grid, out: &mut Repaired) -> Vec<
 /// Ring `r` (an outer boundary if `outer`, else a hole) split into its loops where it passes a
 /// point twice, each loop with its role and orientation; the loop through the ring's first
 /// vertex first.
-fn split(r: usize, outer: bool, ring: Vec<Vertex>, grid: &Grid, out: &mut Repaired) -> Vec<Loop> {
-    let mut stack: Vec<Vertex> = Vec::with_capacity(ring.len());
-    let mut at: HashMap<Point, usize> = HashMap::new();
-    let mut loops: Vec<Vec<Vertex>> = Vec::new();
+fn split<P: Coord>(
+    r: usize,
+    outer: bool,
+    ring: Vec<Vertex<P>>,
+    grid: &Grid,
+    out: &mut Repaired<P>,
+) -> Vec<Loop<P>> {
+    let mut stack: Vec<Vertex<P>> = Vec::with_capacity(ring.len());
+    let mut at: HashMap<P, usize> = HashMap::new();
+    let mut loops: Vec<Vec<Vertex<P>>> = Vec::new();
     for v in ring {
         if let Some(&k) = at.get(&v.0) {
-            let found: Vec<Vertex> = stack.drain(k..).collect();
+            let found: Vec<Vertex<P>> = stack.drain(k..).collect();
             for u in &found[1..] {
                 at.remove(&u.0);
             }
@@ -368,17 +418,17 @@ fn split(r: usize, outer: bool, ring: Vec<Vertex>, grid: &Grid, out: &mut Repair
 }
 
 /// Twice the signed area of a loop.
-fn area(vertices: &[Vertex]) -> WideSum {
-    let mut sum = WideSum::default();
+fn area<P: Coord>(vertices: &[Vertex<P>]) -> Area<P> {
+    let mut sum = Area::default();
     for (i, v) in vertices.iter().enumerate() {
         let w = vertices[(i + 1) % vertices.len()];
-        sum.add(cross(Point::default(), v.0, w.0));
+        sum.add(vertices[0].0, v.0, w.0);
     }
     sum
 }
 
 /// Turns a loop counter-clockwise (`shell`) or clockwise, keeping its first vertex first.
-fn orient(vertices: &mut [Vertex], shell: bool) {
+fn orient<P: Coord>(vertices: &mut [Vertex<P>], shell: bool) {
     let want = if shell { 1 } else { -1 };
     if area(vertices).signum() == -want {
         vertices[1..].reverse();
@@ -386,18 +436,18 @@ fn orient(vertices: &mut [Vertex], shell: bool) {
 }
 
 /// The winding number of loop `ring` around `p`, or `None` when `p` lies on it.
-fn winding(ring: &[Vertex], p: Point) -> Option<i64> {
+fn winding<P: Coord>(ring: &[Vertex<P>], p: P) -> Option<i64> {
     let mut w = 0;
     for (i, a) in ring.iter().enumerate() {
         let (a, b) = (a.0, ring[(i + 1) % ring.len()].0);
         if on_segment(a, b, p) {
             return None;
         }
-        if a.y <= p.y {
-            if b.y > p.y && cross(a, b, p) > 0 {
+        if P::cmp_y(a, p).is_le() {
+            if P::cmp_y(b, p).is_gt() && cross(a, b, p) > 0 {
                 w += 1;
             }
-        } else if b.y <= p.y && cross(a, b, p) < 0 {
+        } else if P::cmp_y(b, p).is_le() && cross(a, b, p) < 0 {
             w -= 1;
         }
     }
@@ -406,7 +456,7 @@ fn winding(ring: &[Vertex], p: Point) -> Option<i64> {
 
 /// Whether loop `inner` lies inside loop `outer`, judged by its first vertex not on `outer`
 /// (loops that do not cross; if every vertex is on `outer`, by none: false).
-fn inside(inner: &[Vertex], outer: &[Vertex]) -> bool {
+fn inside<P: Coord>(inner: &[Vertex<P>], outer: &[Vertex<P>]) -> bool {
     inner
         .iter()
         .find_map(|v| winding(outer, v.0))
@@ -414,7 +464,7 @@ fn inside(inner: &[Vertex], outer: &[Vertex]) -> bool {
 }
 
 /// The innermost of `shells` around `hole`, if any.
-fn innermost(shells: &[Loop], hole: &[Vertex]) -> Option<usize> {
+fn innermost<P: Coord>(shells: &[Loop<P>], hole: &[Vertex<P>]) -> Option<usize> {
     let around: Vec<usize> = (0..shells.len())
         .filter(|&s| inside(hole, &shells[s].vertices))
         .collect();
@@ -431,10 +481,14 @@ type Shared = ((usize, usize), usize, (usize, usize));
 
 /// Step 4: edges shared in opposite directions removed and the loops concerned traced again;
 /// the outer boundaries and the holes.
-fn merge(loops: Vec<Loop>, grid: &Grid, out: &mut Repaired) -> (Vec<Loop>, Vec<Loop>) {
+fn merge<P: Coord>(
+    loops: Vec<Loop<P>>,
+    grid: &Grid,
+    out: &mut Repaired<P>,
+) -> (Vec<Loop<P>>, Vec<Loop<P>>) {
     let cut = cut_overlaps(&loops);
     // Each directed edge (from, to) of the cut loops: (loop, position of its start).
-    let mut edges: HashMap<(Point, Point), (usize, usize)> = HashMap::new();
+    let mut edges: HashMap<(P, P), (usize, usize)> = HashMap::new();
     for (l, lp) in cut.iter().enumerate() {
         for i in 0..lp.vertices.len() {
             let (a, b) = (lp.vertices[i].0, lp.vertices[(i + 1) % lp.vertices.len()].0);
@@ -512,14 +566,14 @@ fn merge(loops: Vec<Loop>, grid: &Grid, out: &mut Repaired) -> (Vec<Loop>, Vec<L
         }
     }
     // The remaining edges of the touched loops: start vertex, end point, and the ring numbers.
-    let mut rest: Vec<(Vertex, Point, usize)> = Vec::new();
+    let mut rest: Vec<(Vertex<P>, P, usize)> = Vec::new();
     for (l, lp) in cut.iter().enumerate().filter(|(l, _)| touched[*l]) {
         let k = lp.vertices.len();
         for i in (0..k).filter(|&i| !cancelled[l][i]) {
             rest.push((lp.vertices[i], lp.vertices[(i + 1) % k].0, lp.ring));
         }
     }
-    let mut leaving: HashMap<Point, Vec<usize>> = HashMap::new();
+    let mut leaving: HashMap<P, Vec<usize>> = HashMap::new();
     for (e, edge) in rest.iter().enumerate() {
         leaving.entry(edge.0 .0).or_default().push(e);
     }
@@ -559,7 +613,7 @@ fn merge(loops: Vec<Loop>, grid: &Grid, out: &mut Repaired) -> (Vec<Loop>, Vec<L
 /// The loops with every edge cut at the vertices of collinear edges lying strictly inside it (a
 /// vertex of the same point, with that vertex's number), so that a stretch shared by two rings
 /// has the same vertices in both.
-fn cut_overlaps(loops: &[Loop]) -> Vec<Loop> {
+fn cut_overlaps<P: Coord>(loops: &[Loop<P>]) -> Vec<Loop<P>> {
     // Every edge by its supporting line: (line, loop, position of its start).
     let mut by_line = Vec::new();
     for (l, lp) in loops.iter().enumerate() {
@@ -571,9 +625,9 @@ fn cut_overlaps(loops: &[Loop]) -> Vec<Loop> {
     }
     by_line.sort_unstable_by_key(|x| x.0);
     // Cuts of each edge: (loop, position) -> vertices to insert.
-    let mut cuts: HashMap<(usize, usize), Vec<Vertex>> = HashMap::new();
+    let mut cuts: HashMap<(usize, usize), Vec<Vertex<P>>> = HashMap::new();
     for group in by_line.chunk_by(|x, y| x.0 == y.0).filter(|g| g.len() > 1) {
-        let mut points: Vec<Vertex> = group
+        let mut points: Vec<Vertex<P>> = group
             .iter()
             .map(|&(_, l, i)| loops[l].vertices[i])
             .chain(group.iter().map(|&(_, l, i)| {

@@ -30,7 +30,7 @@
 //! Complexity: O(n log n) for steps 1, 2, 3 and 5; step 4 is O(n) per group of touching rings
 //! (bounding boxes skip most rings).
 
-use super::kernel::{cmp_angle, cross, dot, Point};
+use super::kernel::{cmp_angle, cross, Coord};
 use super::polygon::{Polygon, Ring};
 use super::validate::{self, Contacts, InvalidPolygon};
 use std::cmp::Ordering;
@@ -39,7 +39,10 @@ use std::cmp::Ordering;
 ///
 /// # Errors
 /// Every problem at a touch point, or the first cycle of touches, or misplaced rings.
-pub(crate) fn walks(rings: Polygon, contacts: &Contacts) -> Result<Polygon, Vec<InvalidPolygon>> {
+pub(crate) fn walks<P: Coord>(
+    rings: Polygon<P>,
+    contacts: &Contacts,
+) -> Result<Polygon<P>, Vec<InvalidPolygon>> {
     let (p, inserted) = insert_on_edges(&rings, &contacts.on_edge);
     let groups = touch_groups(&p);
     let name = |i: usize| match inserted.iter().find(|&&(v, _)| v == i) {
@@ -97,21 +100,24 @@ type Inserted = (usize, (usize, usize));
 
 /// Step 1: `polygon` with each `(edge, vertex)` of `on_edge` inserted, and the inserted stored
 /// vertices with the input numbers of the edge they split.
-fn insert_on_edges(polygon: &Polygon, on_edge: &[(usize, usize)]) -> (Polygon, Vec<Inserted>) {
+fn insert_on_edges<P: Coord>(
+    polygon: &Polygon<P>,
+    on_edge: &[(usize, usize)],
+) -> (Polygon<P>, Vec<Inserted>) {
     let mut at_edge: Vec<Vec<usize>> = vec![Vec::new(); polygon.len()];
     for &(e, v) in on_edge {
         at_edge[e].push(v);
     }
-    let mut rings: Vec<Vec<(Point, usize)>> = Vec::with_capacity(polygon.holes() + 1);
+    let mut rings: Vec<Vec<(P, usize)>> = Vec::with_capacity(polygon.holes() + 1);
     let mut inserted_at = Vec::new();
     for r in 0..=polygon.holes() {
         let mut ring = Vec::new();
         for e in polygon.ring_range(r) {
             ring.push((polygon.point(e), polygon.id(e)));
-            let (a, b) = (polygon.point(e), polygon.point(polygon.next(e)));
+            let a = polygon.point(e);
             let mut on = at_edge[e].clone();
             // Along the edge from `a`: by distance from `a` (all on the segment).
-            on.sort_by_key(|&v| dot(a, polygon.point(v), b));
+            on.sort_by(|&u, &v| P::cmp_dist(a, polygon.point(u), polygon.point(v)));
             for v in on {
                 inserted_at.push((r, ring.len(), (polygon.id(e), polygon.id(polygon.next(e)))));
                 ring.push((polygon.point(v), polygon.id(v)));
@@ -128,7 +134,7 @@ fn insert_on_edges(polygon: &Polygon, on_edge: &[(usize, usize)]) -> (Polygon, V
 }
 
 /// The stored vertices sharing a point with another, one group per point.
-fn touch_groups(p: &Polygon) -> Vec<Vec<usize>> {
+fn touch_groups<P: Coord>(p: &Polygon<P>) -> Vec<Vec<usize>> {
     let mut order: Vec<usize> = (0..p.len()).collect();
     order.sort_unstable_by_key(|&i| (p.point(i), i));
     order
@@ -140,14 +146,14 @@ fn touch_groups(p: &Polygon) -> Vec<Vec<usize>> {
 
 /// Step 2 at one touch point: `(arriving vertex, vertex whose outgoing edge follows)` for each
 /// vertex of the group, or why the rings may not meet like this.
-fn around(
-    p: &Polygon,
+fn around<P: Coord>(
+    p: &Polygon<P>,
     group: &[usize],
     name: &impl Fn(usize) -> String,
 ) -> Result<Vec<(usize, usize)>, InvalidPolygon> {
     let at = p.point(group[0]);
     // (direction's far point, vertex, is it the outgoing edge)
-    let mut dirs: Vec<(Point, usize, bool)> = group
+    let mut dirs: Vec<(P, usize, bool)> = group
         .iter()
         .flat_map(|&v| {
             [
@@ -194,7 +200,7 @@ fn around(
 
 /// Step 3: the rings joined by touches (`joined[r]`: the representative of ring r's group), or
 /// the first cycle of touches, named.
-fn forest(p: &Polygon, groups: &[Vec<usize>]) -> Result<Vec<usize>, InvalidPolygon> {
+fn forest<P: Coord>(p: &Polygon<P>, groups: &[Vec<usize>]) -> Result<Vec<usize>, InvalidPolygon> {
     let rings = p.holes() + 1;
     let mut root: Vec<usize> = (0..rings).collect();
     fn find(root: &mut [usize], mut r: usize) -> usize {
@@ -268,8 +274,8 @@ fn cycle(adjacent: &[Vec<(usize, usize)>], from: usize, to: usize) -> Vec<(usize
 
 /// Step 4: misplaced rings (holes outside, nested), judged for groups of touching rings by one
 /// free vertex each, for the other rings by the sweep's view below their first vertex.
-fn placement(
-    p: &Polygon,
+fn placement<P: Coord>(
+    p: &Polygon<P>,
     groups: &[Vec<usize>],
     joined: &[usize],
     below: &[Option<(usize, bool)>],
@@ -285,13 +291,19 @@ fn placement(
     }
     let mut errors = Vec::new();
     let parents = validate::parents(below, &touching);
-    let boxes: Vec<[i64; 4]> = (0..rings)
+    // Each ring's bounding box: its vertices of least and greatest x, of least and greatest y.
+    let boxes: Vec<[P; 4]> = (0..rings)
         .map(|r| {
-            p.ring_range(r)
-                .fold([i64::MAX, i64::MIN, i64::MAX, i64::MIN], |b, i| {
-                    let q = p.point(i);
-                    [b[0].min(q.x), b[1].max(q.x), b[2].min(q.y), b[3].max(q.y)]
-                })
+            let first = p.point(p.ring_range(r).start);
+            p.ring_range(r).fold([first; 4], |b, i| {
+                let q = p.point(i);
+                [
+                    std::cmp::min_by(b[0], q, |&u, &v| P::cmp_x(u, v)),
+                    std::cmp::max_by(b[1], q, |&u, &v| P::cmp_x(u, v)),
+                    std::cmp::min_by(b[2], q, |&u, &v| P::cmp_y(u, v)),
+                    std::cmp::max_by(b[3], q, |&u, &v| P::cmp_y(u, v)),
+                ]
+            })
         })
         .collect();
     let mut done = vec![false; rings];
@@ -307,8 +319,11 @@ fn placement(
         let q = p.point(v);
         for s in (0..rings).filter(|&s| joined[s] != group) {
             let b = boxes[s];
-            let inside =
-                b[0] <= q.x && q.x <= b[1] && b[2] <= q.y && q.y <= b[3] && inside_ring(p, s, q);
+            let inside = P::cmp_x(b[0], q).is_le()
+                && P::cmp_x(q, b[1]).is_le()
+                && P::cmp_y(b[2], q).is_le()
+                && P::cmp_y(q, b[3]).is_le()
+                && inside_ring(p, s, q);
             match (s == 0, inside, r == 0) {
                 (true, false, _) => errors.push(InvalidPolygon::HoleOutside { hole: r }),
                 (false, true, true) => errors.push(InvalidPolygon::OuterInsideHole { hole: s }),
@@ -338,11 +353,13 @@ fn placement(
 
 /// Whether `q` (on no edge of ring `r`) lies inside ring `r`: exact crossing count of the ray
 /// to the right.
-fn inside_ring(p: &Polygon, r: usize, q: Point) -> bool {
+fn inside_ring<P: Coord>(p: &Polygon<P>, r: usize, q: P) -> bool {
     let mut inside = false;
     for i in p.ring_range(r) {
         let (a, b) = (p.point(i), p.point(p.next(i)));
-        if (a.y > q.y) != (b.y > q.y) && (cross(a, b, q) > 0) == (b.y > a.y) {
+        if P::cmp_y(a, q).is_gt() != P::cmp_y(b, q).is_gt()
+            && (cross(a, b, q) > 0) == P::cmp_y(b, a).is_gt()
+        {
             inside = !inside;
         }
     }

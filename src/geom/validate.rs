@@ -21,7 +21,7 @@
 //! footprints) are first checked pair by pair, which costs less than the sweep's set there; the
 //! sweep runs only if some pair meets, so the reported contact is the same either way.
 
-use super::kernel::{segment_contact, Point, SegmentContact};
+use super::kernel::{segment_contact, Coord, SegmentContact};
 use super::polygon::{Polygon, Ring};
 use super::status::{Handle, Status};
 use std::cmp::Ordering;
@@ -44,7 +44,9 @@ pub enum InvalidPolygon {
         /// The ring.
         ring: Ring,
     },
-    /// Coordinates whose common decimal grid is too large for exact 128-bit predicates.
+    /// Coordinates whose common decimal grid is too large for the fast kernel's exact 128-bit
+    /// predicates: only from the fast kernel's own constructors (`Polygon::from_raw`);
+    /// `AnyPolygon::from_raw` takes the wide kernel instead.
     #[error("coordinates too large for exact arithmetic: {detail}")]
     CoordinatesTooLarge {
         /// What exceeds the range.
@@ -202,14 +204,14 @@ fn contact_verb(contact: SegmentContact) -> &'static str {
 }
 
 /// The first problem of `polygon`, if any.
-pub fn check(polygon: &Polygon) -> Result<(), InvalidPolygon> {
+pub fn check<P: Coord>(polygon: &Polygon<P>) -> Result<(), InvalidPolygon> {
     errors(polygon).into_iter().next().map_or(Ok(()), Err)
 }
 
 /// Every problem of `polygon` that can be reported reliably: all spikes and repeated vertices;
 /// then, only if there are none, the leftmost contact between edges; then, only if there is none,
 /// every misplaced hole.
-pub fn errors(polygon: &Polygon) -> Vec<InvalidPolygon> {
+pub fn errors<P: Coord>(polygon: &Polygon<P>) -> Vec<InvalidPolygon> {
     errors_with(polygon, true)
 }
 
@@ -218,7 +220,10 @@ pub fn errors(polygon: &Polygon) -> Vec<InvalidPolygon> {
 const SMALL_RING: usize = 32;
 
 /// [`errors`], with the pair-by-pair check of small rings on or off (the tests compare both).
-pub(crate) fn errors_with(polygon: &Polygon, small_rings_by_pairs: bool) -> Vec<InvalidPolygon> {
+pub(crate) fn errors_with<P: Coord>(
+    polygon: &Polygon<P>,
+    small_rings_by_pairs: bool,
+) -> Vec<InvalidPolygon> {
     match scan(polygon, small_rings_by_pairs, false) {
         Ok(_) => Vec::new(),
         Err(errors) => errors,
@@ -249,12 +254,12 @@ impl Contacts {
 /// vertex of one strictly inside an edge of the other. Those contacts are returned (not judged:
 /// [`crate::geom::touch`] checks them at their points and as a whole); every other problem is an
 /// error as in [`errors`]. Misplaced rings are judged here only when nothing touches.
-pub(crate) fn touching(polygon: &Polygon) -> Result<Contacts, Vec<InvalidPolygon>> {
+pub(crate) fn touching<P: Coord>(polygon: &Polygon<P>) -> Result<Contacts, Vec<InvalidPolygon>> {
     scan(polygon, true, true)
 }
 
-fn scan(
-    polygon: &Polygon,
+fn scan<P: Coord>(
+    polygon: &Polygon<P>,
     small_rings_by_pairs: bool,
     allow_touches: bool,
 ) -> Result<Contacts, Vec<InvalidPolygon>> {
@@ -346,29 +351,36 @@ pub(crate) fn parents(below: &[Option<(usize, bool)>], fixed: &[bool]) -> Vec<Op
 }
 
 /// Whether no two non-adjacent edges of `polygon` share a point, testing every pair: O(n^2).
-fn no_two_edges_meet(polygon: &Polygon) -> bool {
+fn no_two_edges_meet<P: Coord>(polygon: &Polygon<P>) -> bool {
     let n = polygon.len();
-    // Each edge with its bounding box, so that most pairs are told apart by comparisons alone.
-    let edges: Vec<(Point, Point, [i64; 4])> = (0..n)
+    // Each edge with its bounding box (the ends of least and greatest x, then y), so that most
+    // pairs are told apart by comparisons alone.
+    let edges: Vec<(P, P, [P; 4])> = (0..n)
         .map(|e| {
             let (a, b) = (polygon.point(e), polygon.point(polygon.next(e)));
-            (
-                a,
-                b,
-                [a.x.min(b.x), a.x.max(b.x), a.y.min(b.y), a.y.max(b.y)],
-            )
+            let (x, y) = (P::cmp_x(a, b).is_le(), P::cmp_y(a, b).is_le());
+            let pick = |first: bool| if first { a } else { b };
+            (a, b, [pick(x), pick(!x), pick(y), pick(!y)])
         })
         .collect();
+    let lt = |axis: usize, u: P, v: P| {
+        let order = if axis == 0 {
+            P::cmp_x(u, v)
+        } else {
+            P::cmp_y(u, v)
+        };
+        order == Ordering::Less
+    };
     (0..n).all(|e| {
         let (a, b, r) = edges[e];
         (e + 1..n)
             .filter(|&f| polygon.next(e) != f && polygon.next(f) != e)
             .all(|f| {
                 let (c, d, s) = edges[f];
-                r[1] < s[0]
-                    || s[1] < r[0]
-                    || r[3] < s[2]
-                    || s[3] < r[2]
+                lt(0, r[1], s[0])
+                    || lt(0, s[1], r[0])
+                    || lt(1, r[3], s[2])
+                    || lt(1, s[3], r[2])
                     || segment_contact(a, b, c, d) == SegmentContact::Disjoint
             })
     })
@@ -376,12 +388,12 @@ fn no_two_edges_meet(polygon: &Polygon) -> bool {
 
 /// Whether the boundary `a -> b -> c` folds back at `b`: `a` and `c` on one line through `b`, on
 /// the same side of it (a spike; `--repair` removes them with the same test).
-pub(crate) fn folds_back(a: Point, b: Point, c: Point) -> bool {
+pub(crate) fn folds_back<P: Coord>(a: P, b: P, c: P) -> bool {
     use super::kernel::{cross, dot};
     cross(a, b, c) == 0 && dot(b, a, c) > 0
 }
 
-fn spikes(polygon: &Polygon) -> Vec<InvalidPolygon> {
+fn spikes<P: Coord>(polygon: &Polygon<P>) -> Vec<InvalidPolygon> {
     (0..polygon.len())
         .filter_map(|i| {
             let (p, w, n) = (polygon.prev(i), i, polygon.next(i));
@@ -400,16 +412,16 @@ fn spikes(polygon: &Polygon) -> Vec<InvalidPolygon> {
 /// An edge in the sweep status: `a < b` lexicographically; `edge` is the index of its first
 /// vertex along the ring (the edge runs `edge -> next(edge)`). A probe for a point has `a == b`.
 #[derive(Clone, Copy, Debug)]
-struct Cut {
-    a: Point,
-    b: Point,
+struct Cut<P> {
+    a: P,
+    b: P,
     edge: usize,
 }
 
 const PROBE: usize = usize::MAX;
 
-impl Cut {
-    fn of(polygon: &Polygon, edge: usize) -> Cut {
+impl<P: Coord> Cut<P> {
+    fn of(polygon: &Polygon<P>, edge: usize) -> Cut<P> {
         let (u, w) = (polygon.point(edge), polygon.point(polygon.next(edge)));
         Cut {
             a: u.min(w),
@@ -419,9 +431,9 @@ impl Cut {
     }
 }
 
-order_from_cmp!(Cut);
+order_from_cmp!(Cut<P>);
 
-impl Ord for Cut {
+impl<P: Coord> Ord for Cut<P> {
     /// Below/above at the current sweep position, for edges cut by the sweep line at the same
     /// time (the only ones a set ever compares): test the later-starting edge's start (or, if it
     /// lies on the other edge's line, its end) against the earlier-starting edge.
@@ -457,15 +469,15 @@ impl Ord for Cut {
 /// vertex (`None`: nothing; else the ring of the edge below and whether that ring encloses the
 /// region above the edge). With `touches`, contacts OGC allows between rings are collected there
 /// instead of being errors.
-fn sweep(
-    polygon: &Polygon,
+fn sweep<P: Coord>(
+    polygon: &Polygon<P>,
     order: &[usize],
     touches: &mut Option<Vec<(usize, usize)>>,
 ) -> Result<Vec<Option<(usize, bool)>>, InvalidPolygon> {
     let rings = polygon.holes() + 1;
     let mut below_of: Vec<Option<(usize, bool)>> = vec![None; rings];
     let mut seen = vec![false; rings];
-    let mut status: Status<Cut> = Status::new();
+    let mut status: Status<Cut<P>> = Status::new();
     // The status handle of each edge present (edges are numbered by their first vertex).
     let mut handle: Vec<Option<Handle>> = vec![None; polygon.len()];
     for &i in order {
@@ -522,8 +534,8 @@ fn sweep(
 /// Whether edges `e` and `f` meet where they must not. With `touches`, a single common point of
 /// edges of different rings that is a vertex of one of them is allowed: recorded there when it
 /// lies strictly inside the other edge (a shared vertex is found by sorting).
-fn test(
-    polygon: &Polygon,
+fn test<P: Coord>(
+    polygon: &Polygon<P>,
     e: usize,
     f: usize,
     touches: &mut Option<Vec<(usize, usize)>>,
@@ -566,8 +578,7 @@ fn test(
             format!("near ({}, {})", ax + t * (bx - ax), ay + t * (by - ay))
         }
         _ => {
-            let on =
-                |v: usize, s: Point, t: Point| super::kernel::on_segment(s, t, polygon.point(v));
+            let on = |v: usize, s: P, t: P| super::kernel::on_segment(s, t, polygon.point(v));
             let v = [c, d]
                 .iter()
                 .zip([f, f1])

@@ -21,11 +21,11 @@
 //! Complexity: O(n).
 
 use crate::algo::Triangulation;
-use crate::geom::kernel::cross;
+use crate::geom::kernel::{cross, Coord};
 use crate::geom::polygon::Polygon;
 
 /// The bounds recounted: `(ceil((n - f) / 3), n + 2w - 2, f)`.
-pub fn recount(polygon: &Polygon) -> (usize, usize, usize) {
+pub fn recount<P: Coord>(polygon: &Polygon<P>) -> (usize, usize, usize) {
     let mut flat = 0;
     let starts = polygon.ring_starts();
     let n = polygon.len();
@@ -44,7 +44,7 @@ pub fn recount(polygon: &Polygon) -> (usize, usize, usize) {
 }
 
 /// The problems with the numbers reported about `t` (none when all are right).
-pub fn problems(polygon: &Polygon, t: &Triangulation) -> Vec<String> {
+pub fn problems<P: Coord>(polygon: &Polygon<P>, t: &Triangulation) -> Vec<String> {
     let mut out = Vec::new();
     let (corners, plain, flat) = recount(polygon);
     if polygon.flat_vertices() != flat {

@@ -33,14 +33,19 @@
 
 use super::{check_sides_cancel, plural, Check, Problems};
 use crate::algo::{Algorithm, Pseudotriangulation};
-use crate::geom::kernel::{cmp_angle, cross, dot, Point, WideSum};
+use crate::geom::kernel::Coord;
+use crate::geom::kernel::{cmp_angle, cross, dot, Area};
 use crate::geom::polygon::Polygon;
 use std::collections::BTreeMap;
 
 /// Checks, exactly, that `p` is a minimal pseudotriangulation of `polygon` (`pseudo`), or a
 /// minimum one of its vertices' convex hull containing its edges (`pseudo-hull`); see the
 /// module documentation.
-pub fn check(polygon: &Polygon, algorithm: Algorithm, p: &Pseudotriangulation) -> Check {
+pub fn check<P: Coord>(
+    polygon: &Polygon<P>,
+    algorithm: Algorithm,
+    p: &Pseudotriangulation,
+) -> Check {
     let mut problems = Problems::default();
     let hull_region = algorithm == Algorithm::PseudoHull;
     let n = polygon.len();
@@ -53,19 +58,19 @@ pub fn check(polygon: &Polygon, algorithm: Algorithm, p: &Pseudotriangulation) -
     // 3: the chain, the area, the polygon edges.
     let hull = hull_cycle(polygon.points());
     let mut sides: Vec<[usize; 2]> = Vec::new();
-    let mut area = WideSum::default();
+    let mut area = Area::default();
     for &k in &good {
         let c = &p.faces[k].cycle;
         for i in 0..c.len() {
             sides.push([c[i], c[(i + 1) % c.len()]]);
-            area.add(cross(
+            area.add(
                 polygon.point(c[0]),
                 polygon.point(c[i]),
                 polygon.point(c[(i + 1) % c.len()]),
-            ));
+            );
         }
     }
-    let mut region = WideSum::default();
+    let mut region = Area::default();
     if hull_region && !is_hull(polygon, &hull) {
         problems.add(|| "the checker's own convex hull is wrong (a checker bug)".to_string());
     }
@@ -73,11 +78,7 @@ pub fn check(polygon: &Polygon, algorithm: Algorithm, p: &Pseudotriangulation) -
         for i in 0..hull.len() {
             let (a, b) = (hull[i], hull[(i + 1) % hull.len()]);
             sides.push([b, a]);
-            region.add(cross(
-                polygon.point(hull[0]),
-                polygon.point(a),
-                polygon.point(b),
-            ));
+            region.add(polygon.point(hull[0]), polygon.point(a), polygon.point(b));
         }
     } else {
         sides.extend((0..n).map(|i| [polygon.next(i), i]));
@@ -214,8 +215,8 @@ pub fn check(polygon: &Polygon, algorithm: Algorithm, p: &Pseudotriangulation) -
 }
 
 /// Checks 1 and 2 for face `k`; whether its indices are usable for the other checks.
-fn face_ok(
-    polygon: &Polygon,
+fn face_ok<P: Coord>(
+    polygon: &Polygon<P>,
     k: usize,
     face: &crate::algo::Pseudotriangle,
     problems: &mut Problems,
@@ -238,9 +239,9 @@ fn face_ok(
     }
     let pt = |i: usize| polygon.point(c[i % c.len()]);
     let m = c.len();
-    let mut area = WideSum::default();
+    let mut area = Area::default();
     for i in 0..m {
-        area.add(cross(pt(0), pt(i), pt(i + 1)));
+        area.add(pt(0), pt(i), pt(i + 1));
     }
     if area.signum() <= 0 {
         problems.add(|| format!("{} is not counter-clockwise", name()));
@@ -276,16 +277,16 @@ fn face_ok(
 /// only at their common end (no fold-back), others not at all. Decided by
 /// [`crate::geom::validate`] on the cycle as one ring (edges pair by pair up to 32 points, the
 /// exact sweep above: O(k log k)).
-fn simple(polygon: &Polygon, pts: Vec<Point>) -> bool {
+fn simple<P: Coord>(polygon: &Polygon<P>, pts: Vec<P>) -> bool {
     let ring = Polygon::ring_of_points(pts, *polygon.grid());
     crate::geom::validate::errors(&ring).is_empty()
 }
 
 /// The convex hull's boundary, counter-clockwise, every point on it included (written again
 /// here, apart from the algorithm's).
-fn hull_cycle(points: &[Point]) -> Vec<usize> {
+fn hull_cycle<P: Coord>(points: &[P]) -> Vec<usize> {
     let mut order: Vec<usize> = (0..points.len()).collect();
-    order.sort_unstable_by_key(|&i| (points[i].x, points[i].y));
+    order.sort_unstable_by_key(|&i| points[i]);
     let mut lower: Vec<usize> = Vec::new();
     let mut upper: Vec<usize> = Vec::new();
     for (list, seq) in [
@@ -313,7 +314,7 @@ fn hull_cycle(points: &[Point]) -> Vec<usize> {
 /// Whether `hull` is the convex hull's boundary with every point on it: every vertex lies on or
 /// to the left of every hull edge, and none strictly inside one (O(n h), a cross-check of the
 /// monotone chain above).
-fn is_hull(polygon: &Polygon, hull: &[usize]) -> bool {
+fn is_hull<P: Coord>(polygon: &Polygon<P>, hull: &[usize]) -> bool {
     let h = hull.len();
     h >= 3
         && (0..h).all(|k| {
@@ -327,7 +328,7 @@ fn is_hull(polygon: &Polygon, hull: &[usize]) -> bool {
 
 /// N: the angles of at least pi between neighbouring segments among the polygon's edges and the
 /// hull's, over all vertices.
-fn big_angles(polygon: &Polygon, hull: &[usize]) -> usize {
+fn big_angles<P: Coord>(polygon: &Polygon<P>, hull: &[usize]) -> usize {
     let n = polygon.len();
     let mut around: Vec<Vec<usize>> = (0..n)
         .map(|i| vec![polygon.next(i), polygon.prev(i)])

@@ -6,6 +6,7 @@
 
 use super::degenerate::Degenerate;
 use super::lists::Lists;
+use crate::geom::kernel::Coord;
 use crate::geom::kernel::{cross, Dir};
 use crate::geom::polygon::Polygon;
 
@@ -35,7 +36,7 @@ impl Chains {
 
 /// Whether `s` and `t` form a 3b pair: they share a side on one line (the middle of each is an
 /// end of the other) and their 180-degree sides lie on the same side of the line.
-pub fn is_3b_pair(polygon: &Polygon, s: &Degenerate, t: &Degenerate) -> bool {
+pub fn is_3b_pair<P: Coord>(polygon: &Polygon<P>, s: &Degenerate, t: &Degenerate) -> bool {
     let ends = |m: &Degenerate, v: usize| m.a == v || m.c == v;
     if !(ends(s, t.b) && ends(t, s.b)) {
         return false;
@@ -54,7 +55,7 @@ pub fn is_3b_pair(polygon: &Polygon, s: &Degenerate, t: &Degenerate) -> bool {
 }
 
 /// Finds the 3b-chains among `mdts`.
-pub fn chains(polygon: &Polygon, mdts: &[Degenerate]) -> Chains {
+pub fn chains<P: Coord>(polygon: &Polygon<P>, mdts: &[Degenerate]) -> Chains {
     // The triangles by middle vertex (adjacency arrays): `by_middle[start[v]..start[v + 1]]`.
     let mut start = vec![0; polygon.len() + 1];
     for m in mdts {

@@ -14,6 +14,7 @@
 
 use super::degenerate::Degenerate;
 use crate::geom::kernel::cmp_angle_from;
+use crate::geom::kernel::Coord;
 use crate::geom::polygon::Polygon;
 
 /// Chords on a circle with positions `0..2K`, one endpoint per position.
@@ -39,7 +40,7 @@ pub fn chords_cross((a, b): (usize, usize), (c, d): (usize, usize)) -> bool {
 }
 
 /// Builds C(P) for the triangles `mdts` of `polygon`.
-pub fn circle(polygon: &Polygon, mdts: &[Degenerate]) -> Circle {
+pub fn circle<P: Coord>(polygon: &Polygon<P>, mdts: &[Degenerate]) -> Circle {
     // (vertex at the endpoint, triangle, middle vertex the chord heads to)
     let mut ends: Vec<(usize, usize, usize)> = Vec::with_capacity(2 * mdts.len());
     for (t, m) in mdts.iter().enumerate() {

@@ -41,22 +41,23 @@
 use super::degenerate::Degenerate;
 use crate::algo::mesh::Mesh;
 use crate::algo::{plain, TriangulateError};
-use crate::geom::kernel::{cross, Point};
+use crate::geom::kernel::cross;
+use crate::geom::kernel::Coord;
 use crate::geom::polygon::Polygon;
 use std::collections::{HashMap, HashSet};
 
 /// The triangulation of step 3 under edits: triangles by index, alive or removed, and the
 /// triangles ever added at each vertex (removed ones included). No neighbour links: a merged
 /// fan leaves a T-junction at its middle vertex, which edge-to-edge meshes cannot hold.
-struct Fans<'a> {
-    polygon: &'a Polygon,
+struct Fans<'a, P: Coord> {
+    polygon: &'a Polygon<P>,
     triangles: Vec<[usize; 3]>,
     alive: Vec<bool>,
     at_vertex: Vec<Vec<usize>>,
 }
 
-impl<'a> Fans<'a> {
-    fn new(polygon: &'a Polygon, triangles: impl Iterator<Item = [usize; 3]>) -> Fans<'a> {
+impl<'a, P: Coord> Fans<'a, P> {
+    fn new(polygon: &'a Polygon<P>, triangles: impl Iterator<Item = [usize; 3]>) -> Fans<'a, P> {
         let mut fans = Fans {
             polygon,
             triangles: Vec::new(),
@@ -69,7 +70,7 @@ impl<'a> Fans<'a> {
         fans
     }
 
-    fn point(&self, v: usize) -> Point {
+    fn point(&self, v: usize) -> P {
         self.polygon.point(v)
     }
 
@@ -124,7 +125,7 @@ impl<'a> Fans<'a> {
         if !fan.is_empty() || link.len() < 3 || !on_line(link[0]) || !on_line(at) {
             return None;
         }
-        let points: Vec<Point> = link.iter().map(|&v| self.point(v)).collect();
+        let points: Vec<P> = link.iter().map(|&v| self.point(v)).collect();
         for t in plain(&points) {
             self.add(t.map(|i| link[i]));
         }
@@ -138,8 +139,8 @@ impl<'a> Fans<'a> {
 /// # Errors
 /// [`TriangulateError::MinitriCutFailed`] if a self-check fails (see the module docs; not seen
 /// in the tests).
-pub fn triangulate_with_cuts(
-    polygon: &Polygon,
+pub fn triangulate_with_cuts<P: Coord>(
+    polygon: &Polygon<P>,
     base: Vec<[usize; 3]>,
     chosen: &[Degenerate],
 ) -> Result<Vec<[usize; 3]>, TriangulateError> {

@@ -36,9 +36,11 @@
 
 use super::expansion::{double_cone, Mesh, Workspace};
 use crate::algo::chords::visible_from;
+use crate::geom::kernel::Coord;
 use crate::geom::kernel::{cmp_angle, cross};
 use crate::geom::polygon::Polygon;
 use rayon::prelude::*;
+use std::any::Any;
 use std::cell::RefCell;
 use std::cmp::Ordering;
 
@@ -70,7 +72,7 @@ pub struct Degenerate {
 }
 
 impl Degenerate {
-    fn new(polygon: &Polygon, a: usize, b: usize, c: usize) -> Degenerate {
+    fn new<P: Coord>(polygon: &Polygon<P>, a: usize, b: usize, c: usize) -> Degenerate {
         let (a, c) = (a.min(c), a.max(c));
         let edge = |u: usize, v: usize| polygon.next(u) == v || polygon.next(v) == u;
         let kind = match (edge(a, b), edge(b, c)) {
@@ -101,7 +103,7 @@ impl Degenerate {
     /// The middle vertex's side of the line that is NOT the 180-degree side, as the sign of
     /// `cross(a, c, x)` for points `x` there: where `b`'s polygon neighbours lie; for a flat `b`
     /// the exterior side (the interior is on the left of `prev -> b -> next`).
-    pub fn non_straight_side(&self, polygon: &Polygon) -> i32 {
+    pub fn non_straight_side<P: Coord>(&self, polygon: &Polygon<P>) -> i32 {
         let (pa, pc) = (polygon.point(self.a), polygon.point(self.c));
         let side = |v: usize| cross(pa, pc, polygon.point(v)).signum() as i32;
         match (side(polygon.prev(self.b)), side(polygon.next(self.b))) {
@@ -116,7 +118,7 @@ impl Degenerate {
 
 /// Whether `b` is reflex (to be searched); a flat `b` adds its one triangle to `out` instead, and
 /// a convex `b` is the middle of nothing (no two opposite directions fit in its angle).
-fn reflex_or_flat(polygon: &Polygon, b: usize, out: &mut Vec<Degenerate>) -> bool {
+fn reflex_or_flat<P: Coord>(polygon: &Polygon<P>, b: usize, out: &mut Vec<Degenerate>) -> bool {
     let (p, q) = (polygon.prev(b), polygon.next(b));
     let turn = cross(polygon.point(p), polygon.point(b), polygon.point(q));
     if turn == 0 {
@@ -138,14 +140,16 @@ const FLIPS_FROM: usize = 48;
 
 /// All minimally degenerate triangles of a polygon (holes allowed), by triangular expansion from
 /// each reflex vertex inside its double cone ([`super::expansion`]) over a plain triangulation.
-pub fn minimally_degenerate(polygon: &Polygon) -> Vec<Degenerate> {
+pub fn minimally_degenerate<P: Coord>(polygon: &Polygon<P>) -> Vec<Degenerate> {
     minimally_degenerate_and_mesh(polygon).0
 }
 
 /// [`minimally_degenerate`], also handing back the plain triangulation it walked (`n + 2w - 2`
 /// positive triangles, every side an edge or a proper diagonal), so that later steps need not
 /// build another one.
-pub fn minimally_degenerate_and_mesh(polygon: &Polygon) -> (Vec<Degenerate>, Vec<[usize; 3]>) {
+pub fn minimally_degenerate_and_mesh<P: Coord>(
+    polygon: &Polygon<P>,
+) -> (Vec<Degenerate>, Vec<[usize; 3]>) {
     let (found, mesh, _) = minimally_degenerate_and_mesh_until(polygon, None);
     (found, mesh)
 }
@@ -154,8 +158,8 @@ pub fn minimally_degenerate_and_mesh(polygon: &Polygon) -> (Vec<Degenerate>, Vec
 /// a subset of the middle vertices; each is minimally degenerate all the same), the mesh, and
 /// whether the search finished (`false`: some were not looked for). The deadline is read before
 /// every 16th middle vertex.
-pub fn minimally_degenerate_and_mesh_until(
-    polygon: &Polygon,
+pub fn minimally_degenerate_and_mesh_until<P: Coord>(
+    polygon: &Polygon<P>,
     deadline: Option<std::time::Instant>,
 ) -> (Vec<Degenerate>, Vec<[usize; 3]>, bool) {
     let mut mesh = Mesh::new(polygon, crate::algo::plain_polygon_for_walking(polygon));
@@ -187,8 +191,8 @@ pub fn minimally_degenerate_and_mesh_until(
 
 /// The triangles found from the vertices of `range`, in vertex order, until `deadline` (then
 /// `cut_short` is set).
-fn search_range(
-    polygon: &Polygon,
+fn search_range<P: Coord>(
+    polygon: &Polygon<P>,
     mesh: &Mesh,
     range: std::ops::Range<usize>,
     deadline: Option<std::time::Instant>,
@@ -198,8 +202,19 @@ fn search_range(
     // One workspace per thread, kept from call to call (a batch of small polygons would
     // otherwise grow its buffers again for every polygon). Nothing in the search calls back
     // into the thread pool, so the borrow never nests.
-    thread_local!(static WORK: RefCell<Workspace> = RefCell::default());
-    WORK.with_borrow_mut(|work| {
+    // (One slot per kernel: a thread-local cannot be generic.)
+    thread_local!(static WORK: RefCell<Vec<Box<dyn Any>>> = RefCell::default());
+    WORK.with_borrow_mut(|slots| {
+        let k = match slots.iter().position(|s| s.is::<Workspace<P>>()) {
+            Some(k) => k,
+            None => {
+                slots.push(Box::new(Workspace::<P>::default()));
+                slots.len() - 1
+            }
+        };
+        let Some(work) = slots[k].downcast_mut::<Workspace<P>>() else {
+            unreachable!("slot {k} holds a workspace of this kernel")
+        };
         let mut out = Vec::new();
         for b in range {
             if let Some(deadline) = deadline.filter(|_| b % 16 == 0) {
@@ -220,11 +235,11 @@ fn search_range(
 const PARALLEL_BLOCK: usize = 256;
 
 /// Adds the minimally degenerate triangles with middle vertex `b` to `out`.
-fn search_from(
-    polygon: &Polygon,
+fn search_from<P: Coord>(
+    polygon: &Polygon<P>,
     mesh: &Mesh,
     b: usize,
-    work: &mut Workspace,
+    work: &mut Workspace<P>,
     out: &mut Vec<Degenerate>,
 ) {
     if !reflex_or_flat(polygon, b, out) {
@@ -249,7 +264,7 @@ fn search_from(
 
 /// The same triangles by an angular visibility sweep around every reflex vertex: O(r n log n).
 /// The reference for tests of [`minimally_degenerate`].
-pub fn minimally_degenerate_by_sweep(polygon: &Polygon) -> Vec<Degenerate> {
+pub fn minimally_degenerate_by_sweep<P: Coord>(polygon: &Polygon<P>) -> Vec<Degenerate> {
     let mut out = Vec::new();
     let mut visible = Vec::new();
     let mut seen = vec![false; polygon.len()];
@@ -280,10 +295,7 @@ pub fn minimally_degenerate_by_sweep(polygon: &Polygon) -> Vec<Degenerate> {
             seen[u] = false;
         }
         // Pair opposite directions: both halves are sorted by angle.
-        let upper = |u: usize| {
-            let d = polygon.point(u);
-            d.y > c.y || (d.y == c.y && d.x > c.x)
-        };
+        let upper = |u: usize| crate::geom::kernel::above(c, polygon.point(u));
         let split = nearest.partition_point(|&u| upper(u));
         let (top, bottom) = nearest.split_at(split);
         let mut j = 0;

@@ -19,11 +19,13 @@
 //! pairs), near-linear when segments are short, O(K^2) at worst.
 
 use super::degenerate::Degenerate;
+use crate::geom::kernel::Coord;
 use crate::geom::kernel::{cross, properly_cross};
 use crate::geom::polygon::Polygon;
+use std::cmp::Ordering;
 
 /// Whether triangles `t` and `u` cannot both be used (Theorem 1, made concrete).
-pub fn dependent(polygon: &Polygon, t: &Degenerate, u: &Degenerate) -> bool {
+pub fn dependent<P: Coord>(polygon: &Polygon<P>, t: &Degenerate, u: &Degenerate) -> bool {
     if t.b == u.b {
         return true;
     }
@@ -35,7 +37,7 @@ pub fn dependent(polygon: &Polygon, t: &Degenerate, u: &Degenerate) -> bool {
 }
 
 /// Whether `u` has an end at `t`'s middle and its other end strictly on `t`'s 180-degree side.
-fn reaches_straight_side(polygon: &Polygon, t: &Degenerate, u: &Degenerate) -> bool {
+fn reaches_straight_side<P: Coord>(polygon: &Polygon<P>, t: &Degenerate, u: &Degenerate) -> bool {
     let other = if u.a == t.b {
         u.c
     } else if u.c == t.b {
@@ -48,7 +50,7 @@ fn reaches_straight_side(polygon: &Polygon, t: &Degenerate, u: &Degenerate) -> b
 }
 
 /// The dependency graph: for each triangle, the sorted list of triangles it depends on.
-pub fn graph(polygon: &Polygon, mdts: &[Degenerate]) -> Vec<Vec<usize>> {
+pub fn graph<P: Coord>(polygon: &Polygon<P>, mdts: &[Degenerate]) -> Vec<Vec<usize>> {
     graph_within(polygon, mdts, u64::MAX, None).unwrap_or_default()
 }
 
@@ -66,8 +68,8 @@ pub fn pair_budget(n: usize) -> u64 {
 /// `deadline` has passed (checked every 4096 pairs), so that neither its time nor its memory
 /// (proportional to the pairs compared) runs away on polygons where most triangles depend on
 /// most others.
-pub fn graph_within(
-    polygon: &Polygon,
+pub fn graph_within<P: Coord>(
+    polygon: &Polygon<P>,
     mdts: &[Degenerate],
     budget: u64,
     deadline: Option<std::time::Instant>,
@@ -102,8 +104,11 @@ pub fn graph_within(
     }
     // Proper crossings: sweep over x, comparing segments whose x-ranges overlap.
     let range = |m: &Degenerate| {
-        let (a, c) = (polygon.point(m.a).x, polygon.point(m.c).x);
-        (a.min(c), a.max(c))
+        let (a, c) = (polygon.point(m.a), polygon.point(m.c));
+        match P::cmp_x(a, c) {
+            Ordering::Greater => (X(c), X(a)),
+            _ => (X(a), X(c)),
+        }
     };
     let mut order: Vec<usize> = (0..k).collect();
     order.sort_by_key(|&t| range(&mdts[t]).0);
@@ -129,4 +134,20 @@ pub fn graph_within(
         list.dedup();
     }
     Some(adjacent)
+}
+
+/// A point ordered by its x coordinate alone (the sweep over x of [`graph`]).
+#[derive(Clone, Copy, PartialEq, Eq)]
+struct X<P>(P);
+
+impl<P: Coord> Ord for X<P> {
+    fn cmp(&self, other: &Self) -> Ordering {
+        P::cmp_x(self.0, other.0)
+    }
+}
+
+impl<P: Coord> PartialOrd for X<P> {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
 }

@@ -41,22 +41,23 @@
 //! swept along the corridor (`crate::algo::plain_polygon_for_walking`).
 
 use crate::algo::mesh::twin_halves;
+use crate::geom::kernel::Coord;
 use crate::geom::kernel::{cross, incircle_approx, Dir};
 use crate::geom::polygon::Polygon;
 
 /// A cone of directions from `lo` counter-clockwise to `hi` (narrower than a half-turn); a bound
 /// marked `_in` is not defined by a vertex, so a vertex exactly on it is seen.
 #[derive(Clone, Copy, Debug)]
-struct Cone {
-    lo: Dir,
-    hi: Dir,
+struct Cone<P: Coord> {
+    lo: Dir<P>,
+    hi: Dir<P>,
     lo_in: bool,
     hi_in: bool,
 }
 
-impl Cone {
+impl<P: Coord> Cone<P> {
     /// The zero-width part at direction `d` (both ends included).
-    fn at(d: Dir) -> Cone {
+    fn at(d: Dir<P>) -> Cone<P> {
         Cone {
             lo: d,
             hi: d,
@@ -66,7 +67,7 @@ impl Cone {
     }
 
     /// The same directions turned by a half-turn (the other cone's view of them).
-    fn reversed(self) -> Cone {
+    fn reversed(self) -> Cone<P> {
         Cone {
             lo: self.lo.reversed(),
             hi: self.hi.reversed(),
@@ -76,18 +77,18 @@ impl Cone {
 
     /// Whether every direction of `self` lies below every direction of `other` (an end shared
     /// by both is common to them only if both include it). Both parts in one cone.
-    fn wholly_below(self, other: Cone) -> bool {
+    fn wholly_below(self, other: Cone<P>) -> bool {
         let c = other.lo.cross(self.hi);
         c < 0 || (c == 0 && !(other.lo_in && self.hi_in))
     }
 
     /// Whether direction `d` (in the same cone) lies in `self`, ends as flagged.
-    fn holds(self, d: Dir) -> bool {
+    fn holds(self, d: Dir<P>) -> bool {
         self.holds_given(d, self.lo.cross(d))
     }
 
     /// [`Cone::holds`] with `right = lo x d` computed already (the walk needs it again).
-    fn holds_given(self, d: Dir, right: i128) -> bool {
+    fn holds_given(self, d: Dir<P>, right: i128) -> bool {
         let left = d.cross(self.hi);
         (right > 0 || (right == 0 && self.lo_in)) && (left > 0 || (left == 0 && self.hi_in))
     }
@@ -115,7 +116,7 @@ impl Mesh {
     ///
     /// # Panics
     /// If the triangles do not share their sides as a triangulation of `polygon` does.
-    pub fn new(polygon: &Polygon, triangles: Vec<[usize; 3]>) -> Mesh {
+    pub fn new<P: Coord>(polygon: &Polygon<P>, triangles: Vec<[usize; 3]>) -> Mesh {
         let twin = twin_halves(polygon.len(), triangles.len(), |t, k| triangles[t][k]);
         let mut mesh = Mesh {
             triangles,
@@ -127,7 +128,7 @@ impl Mesh {
     }
 
     /// Sets `first` from the boundary half-edges.
-    fn find_boundary(&mut self, polygon: &Polygon) {
+    fn find_boundary<P: Coord>(&mut self, polygon: &Polygon<P>) {
         self.first = vec![NONE; polygon.len()];
         for (h, &g) in self.twin.iter().enumerate() {
             if g == NONE {
@@ -145,7 +146,7 @@ impl Mesh {
     /// Panics unless the neighbour structure is consistent: twins are mutual and join the same
     /// two vertices in opposite directions, and `first` holds each vertex's boundary edge.
     #[cfg(test)]
-    pub fn check_invariants(&self, polygon: &Polygon) {
+    pub fn check_invariants<P: Coord>(&self, polygon: &Polygon<P>) {
         assert_eq!(self.twin.len(), 3 * self.triangles.len());
         for (h, &g) in self.twin.iter().enumerate() {
             if g != NONE {
@@ -212,7 +213,11 @@ impl Mesh {
     /// hence walking a little slower, and never changes what the walk finds, which is correct
     /// over any triangulation. Since inexact answers could make flips cycle, at most `max_flips`
     /// are made.
-    pub fn flip_towards_delaunay(&mut self, polygon: &Polygon, max_flips: usize) -> usize {
+    pub fn flip_towards_delaunay<P: Coord>(
+        &mut self,
+        polygon: &Polygon<P>,
+        max_flips: usize,
+    ) -> usize {
         let p = |v: usize| polygon.point(v);
         let mut stack: Vec<u32> = (0..self.twin.len() as u32)
             .filter(|&h| self.twin[h as usize] != NONE && h < self.twin[h as usize])
@@ -270,7 +275,7 @@ impl Mesh {
 }
 
 /// A vertex seen from the searching vertex `b`, with its direction from `b`.
-pub type Sighting = (Dir, usize);
+pub type Sighting<P = crate::geom::kernel::Point> = (Dir<P>, usize);
 
 /// What a part of a cone on the stack stands for.
 #[derive(Clone, Copy, Debug)]
@@ -282,19 +287,29 @@ enum Step {
 }
 
 /// Reusable buffers for [`double_cone`], so that searching from many vertices allocates once.
-#[derive(Default)]
-pub struct Workspace {
+pub struct Workspace<P: Coord> {
     /// The fan around `b`: its vertices `u_0 = next(b), .., u_m = prev(b)` counter-clockwise,
     /// with their directions from `b`.
-    fan: Vec<Sighting>,
+    fan: Vec<Sighting<P>>,
     /// For each fan triangle `b u_i u_(i+1)`, its far side: the half-edge `u_i -> u_(i+1)`.
     far_sides: Vec<usize>,
     /// Per cone: the parts still to expand, disjoint and sorted by angle (the highest on top),
     /// each with what to do with it.
-    stacks: [Vec<(Step, Cone)>; 2],
+    stacks: [Vec<(Step, Cone<P>)>; 2],
     /// Per cone: the vertices found with their directions from `b`, by decreasing angle while
     /// searching, by increasing angle when handed out.
-    found: [Vec<Sighting>; 2],
+    found: [Vec<Sighting<P>>; 2],
+}
+
+impl<P: Coord> Default for Workspace<P> {
+    fn default() -> Self {
+        Workspace {
+            fan: Vec::new(),
+            far_sides: Vec::new(),
+            stacks: [Vec::new(), Vec::new()],
+            found: [Vec::new(), Vec::new()],
+        }
+    }
 }
 
 /// The vertices seen from reflex vertex `b` that are nearest in their direction, in the two
@@ -324,12 +339,12 @@ pub struct Workspace {
 /// the next one without going back to the stack: it is still the highest part, and nothing
 /// changed in the other cone (on a random star of 1000 vertices, three quarters of the triangles
 /// walked into; 2.0 of 14.6 million instructions saved).
-pub fn double_cone<'w>(
-    polygon: &Polygon,
+pub fn double_cone<'w, P: Coord>(
+    polygon: &Polygon<P>,
     mesh: &Mesh,
     b: usize,
-    work: &'w mut Workspace,
-) -> (&'w [Sighting], &'w [Sighting]) {
+    work: &'w mut Workspace<P>,
+) -> (&'w [Sighting<P>], &'w [Sighting<P>]) {
     let c = polygon.point(b);
     let dir = |v: usize| Dir::between(c, polygon.point(v));
     let (to_next, to_prev) = (dir(polygon.next(b)), dir(polygon.prev(b)));
@@ -380,7 +395,7 @@ pub fn double_cone<'w>(
         // cone is [0, a - pi] (side 0) or [pi, a] (side 1) in angles from next(b), a the
         // interior angle; the fan's angles run from 0 to a.
         let start = cone.lo; // next(b) or its opposite
-        let place = |d: Dir| -> i8 {
+        let place = |d: Dir<P>| -> i8 {
             let s = start.cross(d);
             let from_start = s > 0 || (s == 0 && start.dot(d) > 0);
             if !from_start {
@@ -535,7 +550,7 @@ pub fn double_cone<'w>(
 /// with `range`. Stepping down from the top: parts wholly above `range` are skipped (at most
 /// one, sharing an end not included by both, since the part popped lies above or at all pending
 /// ones), then the first one not wholly above decides.
-fn pending_in(parts: &[(Step, Cone)], range: Cone) -> bool {
+fn pending_in<P: Coord>(parts: &[(Step, Cone<P>)], range: Cone<P>) -> bool {
     let answer = parts
         .iter()
         .rev()
@@ -552,8 +567,8 @@ fn pending_in(parts: &[(Step, Cone)], range: Cone) -> bool {
 
 /// Whether a vertex of `seen` (by decreasing angle) lies in `range`: stepping back from the
 /// lowest, past those below `range` (at most one sharing its end, see [`double_cone`]).
-fn found_in(seen: &[Sighting], range: Cone) -> bool {
-    let below = |d: Dir| Cone::at(d).wholly_below(range);
+fn found_in<P: Coord>(seen: &[Sighting<P>], range: Cone<P>) -> bool {
+    let below = |d: Dir<P>| Cone::at(d).wholly_below(range);
     let answer = seen
         .iter()
         .rev()
@@ -565,7 +580,7 @@ fn found_in(seen: &[Sighting], range: Cone) -> bool {
 
 /// Pushes the part of a cone that leaves a triangle through its half-edge `k`, unless that is a
 /// polygon edge or the part is empty.
-fn enter(stack: &mut Vec<(Step, Cone)>, mesh: &Mesh, k: usize, part: Cone) {
+fn enter<P: Coord>(stack: &mut Vec<(Step, Cone<P>)>, mesh: &Mesh, k: usize, part: Cone<P>) {
     let next = mesh.twin[k];
     if next != NONE && part.lo.cross(part.hi) > 0 {
         stack.push((Step::Enter(next as usize), part));

@@ -30,6 +30,7 @@ pub mod small;
 mod staircase;
 
 use super::{Algorithm, Stopped, TriangulateError, Triangulation};
+use crate::geom::kernel::Coord;
 use crate::geom::polygon::Polygon;
 use std::time::{Duration, Instant};
 
@@ -41,7 +42,7 @@ pub const DEFAULT_TIME_LIMIT: Duration = Duration::from_secs(10);
 ///
 /// # Errors
 /// Those of [`triangulate_within`].
-pub fn triangulate(polygon: &Polygon) -> Result<Triangulation, TriangulateError> {
+pub fn triangulate<P: Coord>(polygon: &Polygon<P>) -> Result<Triangulation, TriangulateError> {
     triangulate_within(polygon, Instant::now().checked_add(DEFAULT_TIME_LIMIT))
 }
 
@@ -51,8 +52,8 @@ pub fn triangulate(polygon: &Polygon) -> Result<Triangulation, TriangulateError>
 /// # Errors
 /// Without holes, none for valid polygons; with holes, those of [`triangulate_general`] (not
 /// seen in the tests).
-pub fn triangulate_within(
-    polygon: &Polygon,
+pub fn triangulate_within<P: Coord>(
+    polygon: &Polygon<P>,
     deadline: Option<Instant>,
 ) -> Result<Triangulation, TriangulateError> {
     if polygon.touches() > 0 {
@@ -111,8 +112,8 @@ pub fn triangulate_within(
 /// # Errors
 /// [`TriangulateError::MinitriCutFailed`] if a self-check of the cut step fails (see [`cut`];
 /// not seen in the tests).
-pub fn triangulate_general(
-    polygon: &Polygon,
+pub fn triangulate_general<P: Coord>(
+    polygon: &Polygon<P>,
     deadline: Option<Instant>,
 ) -> Result<Triangulation, TriangulateError> {
     let (mut mdts, base, complete) =
@@ -129,7 +130,7 @@ pub fn triangulate_general(
         (0..polygon.len())
             .filter(|&v| {
                 let p = |i: usize| polygon.point(i);
-                crate::geom::kernel::cross(p(polygon.prev(v)), p(v), p(polygon.next(v))) <= 0
+                P::cross(p(polygon.prev(v)), p(v), p(polygon.next(v))) <= 0
             })
             .count()
     };
@@ -154,7 +155,7 @@ pub fn triangulate_general(
             });
         }
         if !sorted {
-            mdts.sort_by_key(|m| extent(polygon, m));
+            mdts.sort_by(|m, o| extent(polygon, m).total_cmp(&extent(polygon, o)));
             sorted = true;
         }
         mdts.truncate(mdts.len() / 2);
@@ -185,10 +186,11 @@ pub fn triangulate_general(
 /// 10 ms of work.
 pub const LATE_PAIRS: u64 = 1 << 20;
 
-/// How far a triangle's long side reaches: `|dx| + |dy|` (shorter triangles cross fewer others).
-fn extent(polygon: &Polygon, m: &degenerate::Degenerate) -> i128 {
-    let (a, c) = (polygon.point(m.a), polygon.point(m.c));
-    (i128::from(a.x) - i128::from(c.x)).abs() + (i128::from(a.y) - i128::from(c.y)).abs()
+/// How far a triangle's long side reaches, roughly: `|dx| + |dy|` in floating point (shorter
+/// triangles cross fewer others). Only an order of preference: any subset gives a valid answer.
+fn extent<P: Coord>(polygon: &Polygon<P>, m: &degenerate::Degenerate) -> f64 {
+    let [dx, dy] = polygon.point(m.c).offset_f64(polygon.point(m.a));
+    dx.abs() + dy.abs()
 }
 
 /// The proved lower bound on the minimum from an upper bound `d_upper` on the number of
@@ -196,7 +198,7 @@ fn extent(polygon: &Polygon, m: &degenerate::Degenerate) -> i128 {
 /// `ceil((n - f) / 3)` (every vertex but a flat one is a corner of a triangle). No subtraction
 /// can wrap: `d_upper` is at most the number of distinct middle vertices (each component's bound
 /// is capped by its middles), which is below `n`, and the subtraction saturates all the same.
-fn lower_bound(polygon: &Polygon, d_upper: usize) -> usize {
+fn lower_bound<P: Coord>(polygon: &Polygon<P>, d_upper: usize) -> usize {
     let (corners, plain) = polygon.minimum_bounds();
     plain.saturating_sub(d_upper).max(corners)
 }

@@ -15,14 +15,18 @@
 
 use super::degenerate::Degenerate;
 use crate::algo::plain;
-use crate::geom::kernel::{cmp_angle, cross, WideSum};
+use crate::geom::kernel::Coord;
+use crate::geom::kernel::{cmp_angle, cross, Area};
 use crate::geom::polygon::Polygon;
 
 /// The longest face list kept for the next faces once the outer face has been walked.
 const GIVE_BACK: usize = 1 << 12;
 
 /// The triangles of all pieces, in stored vertex indices, counter-clockwise.
-pub fn triangulate_pieces(polygon: &Polygon, chosen: &[Degenerate]) -> Vec<[usize; 3]> {
+pub fn triangulate_pieces<P: Coord>(
+    polygon: &Polygon<P>,
+    chosen: &[Degenerate],
+) -> Vec<[usize; 3]> {
     let n = polygon.len();
     // Undirected edges, deduplicated.
     let mut edges: Vec<(usize, usize)> = Vec::with_capacity(n + 2 * chosen.len());
@@ -60,9 +64,9 @@ pub fn triangulate_pieces(polygon: &Polygon, chosen: &[Degenerate]) -> Vec<[usiz
         }
         let point = |i: usize| polygon.point(face[i]);
         let k = face.len();
-        let mut area = WideSum::default();
+        let mut area = Area::default();
         for i in 0..k {
-            area.add(cross(point(0), point(i), point((i + 1) % k)));
+            area.add(point(0), point(i), point((i + 1) % k));
         }
         if area.signum() <= 0 {
             // The outer face (clockwise; the area sum cannot overflow): it runs along the whole
@@ -101,7 +105,7 @@ struct Graph {
 }
 
 impl Graph {
-    fn new(polygon: &Polygon, edges: &[(usize, usize)]) -> Graph {
+    fn new<P: Coord>(polygon: &Polygon<P>, edges: &[(usize, usize)]) -> Graph {
         let n = polygon.len();
         let mut start = vec![0; n + 1];
         for &(u, v) in edges {

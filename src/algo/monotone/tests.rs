@@ -1,4 +1,5 @@
 use super::*;
+use crate::geom::kernel::Point;
 use crate::geom::polygon::Polygon;
 use crate::test_support::{polygon, raw, U_SHAPE};
 use std::collections::HashSet;

@@ -19,7 +19,8 @@
 //! O(m) for m diagonals: each vertex enters and leaves a chain once.
 
 use crate::algo::mesh::Broken;
-use crate::geom::kernel::{cross, dot, Point};
+use crate::geom::kernel::Coord;
+use crate::geom::kernel::{cross, dot};
 use std::collections::VecDeque;
 
 /// A sleeve vertex: the polygon vertex, and the position of its copy in the sleeve.
@@ -29,15 +30,15 @@ struct Node {
     copy: usize,
 }
 
-struct Funnel<'a> {
-    pts: &'a [Point],
+struct Funnel<'a, P: Coord> {
+    pts: &'a [P],
     left: VecDeque<Node>,
     right: VecDeque<Node>,
     path: Vec<usize>,
 }
 
-impl Funnel<'_> {
-    fn p(&self, n: Node) -> Point {
+impl<P: Coord> Funnel<'_, P> {
+    fn p(&self, n: Node) -> P {
         self.pts[n.v]
     }
 
@@ -106,8 +107,8 @@ impl Funnel<'_> {
 
 /// The shortest path from `start` to `end` through the diagonals `portals` (`(left, right)`
 /// each), as polygon vertices; see the module docs.
-pub(super) fn shortest_path(
-    pts: &[Point],
+pub(super) fn shortest_path<P: Coord>(
+    pts: &[P],
     start: usize,
     portals: &[(usize, usize)],
     end: usize,

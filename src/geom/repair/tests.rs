@@ -12,13 +12,14 @@ fn repaired(rings: &[&[(i64, i64)]]) -> (Vec<Result<Polygon, String>>, Vec<Strin
             .pieces
             .into_iter()
             .map(|p| {
-                p.map(|(polygon, _)| polygon).map_err(|errors| {
-                    errors
-                        .iter()
-                        .map(ToString::to_string)
-                        .collect::<Vec<_>>()
-                        .join("; ")
-                })
+                p.map(|(polygon, _)| polygon.fast().expect("on the grid").clone())
+                    .map_err(|errors| {
+                        errors
+                            .iter()
+                            .map(ToString::to_string)
+                            .collect::<Vec<_>>()
+                            .join("; ")
+                    })
             })
             .collect(),
         pieces.repairs.iter().map(ToString::to_string).collect(),
@@ -329,10 +330,11 @@ fn check_region(rings: Vec<Vec<(i64, i64)>>, cells: &BTreeSet<(i64, i64)>) -> us
     for piece in pieces.pieces {
         match piece {
             Ok((polygon, _)) => {
-                let t = crate::algo::minitri::triangulate_within(&polygon, None)
-                    .or_else(|_| crate::algo::ear::triangulate(&polygon))
+                let polygon = polygon.fast().expect("on the grid");
+                let t = crate::algo::minitri::triangulate_within(polygon, None)
+                    .or_else(|_| crate::algo::ear::triangulate(polygon))
                     .expect("triangulated");
-                let check = crate::verify::check(&polygon, &t);
+                let check = crate::verify::check(polygon, &t);
                 assert!(check.valid, "{rings:?}: {:?}", check.problems);
             }
             Err(errors) => {

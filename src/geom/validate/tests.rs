@@ -1,5 +1,5 @@
 use super::*;
-use crate::geom::kernel::{cross, segment_contact};
+use crate::geom::kernel::{cross, segment_contact, Point};
 use crate::test_support::{raw, U_SHAPE};
 
 fn error(rings: &[&[(i64, i64)]]) -> String {

@@ -213,7 +213,6 @@ pub fn render(outcome: &Outcome) -> Option<String> {
     let (Ok(solved), Some(polygon)) = (&outcome.result, &outcome.polygon) else {
         return None;
     };
-    let grid = polygon.grid();
     let mut out = String::new();
     let ring = |out: &mut String, vertices: &mut dyn Iterator<Item = usize>| {
         if !out.is_empty() {
@@ -222,8 +221,8 @@ pub fn render(outcome: &Outcome) -> Option<String> {
         out.push_str("[[");
         let mut first = None;
         for v in vertices {
-            let p = polygon.point(v);
-            let text = format!("[{}, {}]", grid.format(0, p.x), grid.format(1, p.y));
+            let [x, y] = polygon.coordinates(v);
+            let text = format!("[{x}, {y}]");
             if first.is_some() {
                 out.push_str(", ");
             }

@@ -34,7 +34,8 @@
 use super::json::{ids, json};
 use super::Sink;
 use crate::algo::Triangulation;
-use crate::geom::kernel::{line_through, Line, Point};
+use crate::geom::kernel::line_through;
+use crate::geom::kernel::Coord;
 use crate::geom::polygon::Polygon;
 use crate::pipeline::Outcome;
 use std::io::{self, Write};
@@ -67,10 +68,9 @@ impl<W: Write> GeoJsonWriter<W> {
         };
         let t = &solved.triangulation;
         let source = json(&outcome.source);
-        let grid = polygon.grid();
         let coordinate = |i: usize| {
-            let p = polygon.point(i);
-            format!("[{}, {}]", grid.format(0, p.x), grid.format(1, p.y))
+            let [x, y] = polygon.coordinates(i);
+            format!("[{}, {}]", x, y)
         };
         if let Some(p) = &solved.pseudo {
             for (k, face) in p.faces.iter().enumerate() {
@@ -93,11 +93,11 @@ impl<W: Write> GeoJsonWriter<W> {
             }
             return Ok(());
         }
-        let on_sides = vertices_on_sides(polygon, t);
+        let on_sides = crate::with_polygon!(polygon, p => vertices_on_sides(p, t));
         for (k, (tri, vertices)) in t
             .triangles
             .iter()
-            .zip(ids(polygon, &t.triangles))
+            .zip(crate::with_polygon!(polygon, p => ids(p, &t.triangles)))
             .enumerate()
         {
             let separator = if self.features == 0 { "\n" } else { ",\n" };
@@ -148,13 +148,13 @@ impl<W: Write> Sink for GeoJsonWriter<W> {
 /// with the triangles on one given side of it, do not overlap; so after sorting the sides by
 /// (line, side of the line, lower end) a binary search finds the one holding `b`, if any, among
 /// the two candidates. Exact: line keys and the order along a line are integer comparisons.
-fn vertices_on_sides(polygon: &Polygon, t: &Triangulation) -> Vec<Vec<usize>> {
+fn vertices_on_sides<P: Coord>(polygon: &Polygon<P>, t: &Triangulation) -> Vec<Vec<usize>> {
     let mut found = vec![Vec::new(); t.triangles.len()];
     if t.degenerate.is_empty() {
         return found;
     }
     let valid = |i: usize| i < polygon.len();
-    let middles: Vec<(Line, Point, usize)> = t
+    let middles: Vec<(P::Line, P, usize)> = t
         .degenerate
         .iter()
         .filter(|[a, b, c]| valid(*a) && valid(*b) && valid(*c))
@@ -167,11 +167,11 @@ fn vertices_on_sides(polygon: &Polygon, t: &Triangulation) -> Vec<Vec<usize>> {
             )
         })
         .collect();
-    let mut lines: Vec<Line> = middles.iter().map(|m| m.0).collect();
+    let mut lines: Vec<P::Line> = middles.iter().map(|m| m.0).collect();
     lines.sort_unstable();
     lines.dedup();
     // (line, whether the side runs along the line's direction, lower end, upper end, triangle)
-    let mut sides: Vec<(Line, bool, Point, Point, usize)> = Vec::new();
+    let mut sides: Vec<(P::Line, bool, P, P, usize)> = Vec::new();
     for (k, tri) in t.triangles.iter().enumerate() {
         if !tri.iter().all(|&i| valid(i)) {
             continue;

@@ -9,6 +9,7 @@
 //! files stay small and diffable. [`JsonWriter`] writes the same document incrementally, one
 //! polygon at a time (memory: the error list only). Complexity: linear in the output size.
 
+use crate::geom::kernel::Coord;
 use crate::geom::polygon::Polygon;
 use crate::pipeline::Outcome;
 use serde::Serialize;
@@ -133,8 +134,10 @@ pub fn render(outcome: &Outcome) -> Option<String> {
     };
     let t = &solved.triangulation;
     let fields: Vec<(&str, String)> = match &solved.pseudo {
-        Some(p) => pseudo_fields(outcome, index, polygon, t.algorithm, p),
-        None => triangle_fields(outcome, index, polygon, t),
+        Some(p) => {
+            crate::with_polygon!(polygon, q => pseudo_fields(outcome, index, q, t.algorithm, p))
+        }
+        None => crate::with_polygon!(polygon, q => triangle_fields(outcome, index, q, t)),
     };
     let mut fields = fields;
     if let Some(feature) = &outcome.feature {
@@ -172,10 +175,10 @@ pub fn render(outcome: &Outcome) -> Option<String> {
 }
 
 /// The fields of a triangulated polygon, in order.
-fn triangle_fields(
+fn triangle_fields<P: Coord>(
     outcome: &Outcome,
     index: usize,
-    polygon: &Polygon,
+    polygon: &Polygon<P>,
     t: &crate::algo::Triangulation,
 ) -> Vec<(&'static str, String)> {
     let mut fields: Vec<(&str, String)> = vec![
@@ -217,7 +220,7 @@ fn triangle_fields(
 
 /// `touches` (how many touches join rings into boundary walks), right after `holes`, for a
 /// polygon whose rings touch (absent otherwise, so outputs without touches are unchanged).
-fn touches_field(fields: &mut Vec<(&'static str, String)>, polygon: &Polygon) {
+fn touches_field<P: Coord>(fields: &mut Vec<(&'static str, String)>, polygon: &Polygon<P>) {
     if polygon.touches() > 0 {
         let at = fields
             .iter()
@@ -233,10 +236,10 @@ fn touches_field(fields: &mut Vec<(&'static str, String)>, polygon: &Polygon) {
 /// `reflex_vertices` (r), `big_angles` (N), `corollary_count` (2n - r - 2) and `minimum_count`
 /// (2n - N - 2, the same in general position). `optimal` says whether the count is proved minimum (`pseudo-hull`) rather than
 /// only minimal (`pseudo`).
-fn pseudo_fields(
+fn pseudo_fields<P: Coord>(
     outcome: &Outcome,
     index: usize,
-    polygon: &Polygon,
+    polygon: &Polygon<P>,
     algorithm: crate::algo::Algorithm,
     p: &crate::algo::Pseudotriangulation,
 ) -> Vec<(&'static str, String)> {
@@ -279,7 +282,7 @@ fn pseudo_fields(
 }
 
 /// Triangles as input vertex numbers (shared with the GeoJSON writer).
-pub(crate) fn ids(polygon: &Polygon, triangles: &[[usize; 3]]) -> Vec<[usize; 3]> {
+pub(crate) fn ids<P: Coord>(polygon: &Polygon<P>, triangles: &[[usize; 3]]) -> Vec<[usize; 3]> {
     triangles.iter().map(|t| t.map(|i| polygon.id(i))).collect()
 }
 

@@ -50,7 +50,7 @@
 
 use crate::algo::{Pseudotriangulation, Triangulation};
 use crate::geom::kernel::Point;
-use crate::geom::polygon::Polygon;
+use crate::geom::polygon::{AnyPolygon, Polygon};
 use crate::pipeline::Outcome;
 use crate::verify::Faults;
 use std::collections::HashMap;
@@ -148,9 +148,14 @@ fn title(outcome: &Outcome) -> String {
 /// # Errors
 /// Only those of `out`.
 pub fn write_outcomes(outcomes: &[Outcome], style: Style, out: &mut impl Write) -> io::Result<()> {
+    // A wide polygon is drawn from a fast copy on a drawing grid (drawing needs no exactness).
+    let drawn: Vec<_> = outcomes
+        .iter()
+        .map(|o| o.polygon.as_ref().map(AnyPolygon::for_drawing))
+        .collect();
     let mut figures: Vec<Figure> = Vec::new();
-    for o in outcomes {
-        let Some(polygon) = o.polygon.as_ref() else {
+    for (o, drawn) in outcomes.iter().zip(&drawn) {
+        let Some(polygon) = drawn.as_deref() else {
             continue;
         };
         let base = |title: String| Figure {

@@ -43,10 +43,9 @@ impl<W: Write> WktWriter<W> {
         let (Ok(solved), Some(polygon)) = (&outcome.result, &outcome.polygon) else {
             return Ok(());
         };
-        let grid = polygon.grid();
         let coordinate = |i: usize| {
-            let p = polygon.point(i);
-            format!("{} {}", grid.format(0, p.x), grid.format(1, p.y))
+            let [x, y] = polygon.coordinates(i);
+            format!("{} {}", x, y)
         };
         write!(self.out, "MULTIPOLYGON (")?;
         if let Some(p) = &solved.pseudo {
