@@ -217,7 +217,7 @@ impl Flags {
         if format {
             cmd.error(
                 clap::error::ErrorKind::UnknownArgument,
-                "there is no --format: the output format is --to (json, geojson, wkt, svg), \
+                "there is no --format: the output format is --to (json, geojson, geojsonl, geojson-triangles, wkt, svg), \
                  the input format --from (auto, wkt, geojson, vertices)",
             )
             .exit();

@@ -4,7 +4,7 @@ use crate::geom::decimal::Decimal;
 use crate::geom::polygon::Polygon;
 use crate::io::read::RawPolygon;
 
-/// The U-shape of DESIGN.md: 12 vertices, counter-clockwise from (3, 2), four of them flat, with
+/// The U-shape of the README: 12 vertices, counter-clockwise from (3, 2), four of them flat, with
 /// a notch from the top down to y = 3.
 pub(crate) const U_SHAPE: [(i64, i64); 12] = [
     (3, 2),

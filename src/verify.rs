@@ -43,7 +43,7 @@
 //!   polygon, and so is the closed triangle; its sides then lie in the closed polygon, and their
 //!   ends are vertices, which is the definition of a chord;
 //! - no hole is swallowed: points of a hole's interior have `f = 0` and are outside the polygon,
-//!   so no triangle covers them (the trap of `DESIGN.md`: chords alone do not show this);
+//!   so no triangle covers them (the trap with holes of `docs/algorithms.md`: chords alone do not show this);
 //! - the union is the polygon: a.e. interior point is covered once, the union of the closed
 //!   triangles is closed, so it contains the closure of the interior, the closed polygon.
 //!

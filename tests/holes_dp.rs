@@ -4,7 +4,7 @@
 //! independent checker with `triangles = n + 2w - 2 - degenerate`, and on the small ones the
 //! count equals an exhaustive search over all sets of valid vertex triangles (written here from
 //! scratch, sharing no code with the crate's algorithms, and careful about the hole-swallowing
-//! trap of DESIGN.md).
+//! trap with holes of docs/algorithms.md).
 //!
 //! Random polygons: an outer ring (a rectangle with random lattice points of its boundary kept
 //! as flat vertices, or a polygon grown from a big triangle by inserting random grid points into
@@ -198,7 +198,7 @@ fn inside_thirds(poly: &Polygon, c: Point) -> bool {
 /// A triangle that may appear in a triangulation: nondegenerate, its sides chords, and its
 /// interior inside the polygon: no edge meets it (so no vertex inside it and no hole partly in
 /// it) and its centroid is inside the polygon (so it is not a hole, nor swallows a whole hole:
-/// the trap of DESIGN.md, where every side is a chord and no vertex lies inside).
+/// the trap with holes of docs/algorithms.md, where every side is a chord and no vertex lies inside).
 fn valid_triangle(poly: &Polygon, t: &[usize; 3]) -> bool {
     let pts = t.map(|v| poly.point(v));
     if cross(pts[0], pts[1], pts[2]) <= 0 {
@@ -495,7 +495,7 @@ fn two_holes_dp_is_minimum_and_valid() {
 
 #[test]
 fn the_exhaustive_search_avoids_the_swallowed_hole() {
-    // DESIGN.md's trap: the medial triangle (4,0) (6,4) (2,4) has chord sides and no vertex
+    // The trap with holes (docs/algorithms.md): the medial triangle (4,0) (6,4) (2,4) has chord sides and no vertex
     // inside, yet swallows the hole whose corners lie on its sides; with it the count would be 4.
     let p = polygon_from_rings(&[
         vec![(0, 0), (4, 0), (8, 0), (6, 4), (4, 8), (2, 4)],

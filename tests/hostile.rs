@@ -452,7 +452,7 @@ fn fault_injection_short() {
 
 /// The full campaign of issue 24: 1,000 files, 50 kills (`.ci/run` runs it in release mode).
 #[test]
-#[ignore = "about a minute in release mode; run by .ci/run"]
+#[ignore = "1,000 files, 50 kills, about 20 s; run by .ci/run"]
 fn fault_injection_full() {
     kill_batches(1000, 50, 2024);
 }

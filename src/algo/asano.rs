@@ -2,7 +2,7 @@
 //!
 //! T. Asano, T. Asano and R. Y. Pinter, "Polygon triangulation: efficiency and minimality",
 //! *Journal of Algorithms* 7 (1986) 221-231; as presented in T. Asano and T. Asano, "Topics on
-//! triangulation of polygons" (`papers/asano-asano-topics-on-triangulation-dp.txt`), §3.
+//! triangulation of polygons", §3.
 //!
 //! # Overview
 //! 1. The chord table ([`super::chords`], O(n^2 log n)): which closed segments between vertices

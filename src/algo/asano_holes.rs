@@ -1,8 +1,8 @@
 //! The exact minimum triangulation of a polygon with 1 or 2 holes, by dynamic programming over
 //! the polygon with its holes cut open.
 //!
-//! T. Asano and T. Asano, "Topics on triangulation of polygons"
-//! (`papers/asano-asano-topics-on-triangulation-dp.txt`), §3, second part: for a polygonal
+//! T. Asano and T. Asano, "Topics on triangulation of polygons",
+//! §3, second part: for a polygonal
 //! region with k windows (holes), cut one hole open by a triangle that has an edge on the hole
 //! and its apex off it, which leaves a region with k - 1 holes, and recurse; O(n^{3+2k}).
 //!
@@ -530,7 +530,7 @@ mod tests {
 
     #[test]
     fn a_triangle_touching_a_hole_at_its_corners_does_not_swallow_it() {
-        // The trap of DESIGN.md: a big triangle with its side midpoints as flat vertices, and a
+        // The trap with holes (docs/algorithms.md): a big triangle with its side midpoints as flat vertices, and a
         // hole whose corners are the midpoints of the medial triangle's sides. The medial
         // triangle's sides are chords (they touch the hole at its corners only) and no vertex
         // lies strictly inside it, yet it swallows the hole: 3 corner triangles plus it would

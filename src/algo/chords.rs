@@ -1,6 +1,6 @@
 //! The chord table: for every pair of vertices, is the closed segment between them a chord?
 //!
-//! A chord (DESIGN.md; Chen & Chang §1; Asano & Asano §3) is a closed segment between two
+//! A chord (`docs/algorithms.md`; Chen & Chang §1; Asano & Asano §3) is a closed segment between two
 //! vertices that lies in the closed polygon: it may touch the boundary and run along edges.
 //! Exactly: segment `v u` is a chord iff (1) at `v` and at `u` its direction lies in the closed
 //! interior angle, (2) no edge crosses it properly, and (3) at every vertex inside it, both of its

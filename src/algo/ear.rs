@@ -3,8 +3,7 @@
 //! for small polygons without holes (up to 32 vertices, where it is quickest), ear clipping
 //! (Meisters, "Polygons have
 //! ears", *Amer. Math. Monthly* 82 (1975); the lecture notes
-//! `papers/goldwasser-1991-lecture-triangulating-simple-polygons.txt` and
-//! `papers/toussaint-1993-lecture-triangulations.txt`), which this module implements.
+//! Goldwasser's (1991) and Toussaint's (1993) lecture notes), which this module implements.
 //!
 //! Input contract: a valid polygon, with or without holes; flat vertices allowed, on any ring.
 //! Output guarantee: exactly n + 2w - 2 counter-clockwise triangles of positive area (n - 2

@@ -4,8 +4,7 @@
 //! subdivision and its applications", *SIAM J. Comput.* 6 (1977); Garey, Johnson, Preparata &
 //! Tarjan, "Triangulating a simple polygon", *Inform. Process. Lett.* 7 (1978); de Berg, Cheong,
 //! van Kreveld & Overmars, *Computational Geometry*, ch. 3, whose Theorem 3.6 covers holes; the
-//! lecture notes `papers/goldwasser-1991-lecture-triangulating-simple-polygons.txt` and
-//! `papers/toussaint-1993-lecture-triangulations.txt`).
+//! lecture notes of Goldwasser (1991) and Toussaint (1993)).
 //!
 //! Input contract: the rings given one after another in one slice of points, ring 0 the outer
 //! ring, counter-clockwise, rings 1.. the holes, clockwise (so the interior is on the left of every

@@ -1,7 +1,6 @@
 //! `--algorithm pseudo`: a MINIMAL pseudotriangulation of a polygon (holes allowed) contained in a
 //! triangulation, by the linear-time greedy of Rote, Wang, Wang & Xu, "On constrained minimum
-//! pseudotriangulations", COCOON 2003, LNCS 2697, pp. 445-454, doi:10.1007/3-540-45071-8_45
-//! (`papers/rote-wang-wang-xu-constrained-minimum-pseudotriangulations.txt`).
+//! pseudotriangulations", COCOON 2003, LNCS 2697, pp. 445-454, doi:10.1007/3-540-45071-8_45.
 //!
 //! A pseudotriangle is a simple polygon with exactly three corners, a corner being a vertex whose
 //! interior angle is strictly less than pi; a vertex whose angle in a face is pi or more (a flat

@@ -2,8 +2,7 @@
 //! vertices that contains the polygon's edges (outer ring and holes) as the given segment set L,
 //! by the construction in the proof of Theorem 6 of Rote, Wang, Wang & Xu, "On constrained
 //! minimum pseudotriangulations", COCOON 2003, LNCS 2697, pp. 445-454,
-//! doi:10.1007/3-540-45071-8_45, Section 6
-//! (`papers/rote-wang-wang-xu-constrained-minimum-pseudotriangulations.txt`).
+//! doi:10.1007/3-540-45071-8_45, Section 6.
 //!
 //! The region is the whole convex hull: the polygon's interior, the interiors of its holes and
 //! the pockets between the outer ring and the hull are all cut into pseudotriangles (Section 1: a

@@ -267,7 +267,7 @@ fn t_junctions_need_their_degenerate_triangles() {
 
 #[test]
 fn two_t_junctions_on_one_side() {
-    // DESIGN.md's first example: minimum 2, vertices 1 and 2 both inside side 0-3.
+    // The first worked example of docs/algorithms.md: minimum 2, vertices 1 and 2 both inside side 0-3.
     let p = polygon(&[&[(0, 0), (1, 0), (2, 0), (3, 0), (3, 3), (0, 3)]]);
     let minimum = [[0, 3, 4], [0, 4, 5]];
     assert_valid(&p, &minimum, &[[0, 1, 2], [1, 2, 3]]);

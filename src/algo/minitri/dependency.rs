@@ -1,7 +1,7 @@
 //! The dependency graph of minimally degenerate triangles, for any polygon (holes allowed).
 //!
 //! Chen & Chang (1990, §2, Theorem 1) list when two minimally degenerate triangles can be used
-//! together. Made concrete (`DESIGN.md`, "Theorem 1 made concrete"): triangles `T = (a, b, c)`
+//! together. Made concrete (`docs/algorithms.md`, "Theorem 1 made concrete"): triangles `T = (a, b, c)`
 //! and `U = (x, y, z)` (middles `b`, `y`) are dependent exactly when
 //! - the segments `a c` and `x z` cross properly, or
 //! - they share their middle vertex (`b == y`), or

@@ -1,7 +1,7 @@
 //! Algorithm MINITRI: the minimum triangulation of a polygon without holes.
 //!
 //! C. Chen and R.-C. Chang, "On the minimality of polygon triangulation", *BIT* 30 (1990)
-//! 570-582, §3 (`papers/chen-chang-1990-minimality-of-polygon-triangulation.txt`).
+//! 570-582, §3.
 //!
 //! The minimum number of triangles is `n - 2 - d`, `d` the size of a maximum set of mutually
 //! independent minimally degenerate triangles (Theorem 2). Departures from the paper: flat

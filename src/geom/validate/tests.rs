@@ -36,7 +36,7 @@ fn valid_polygons_pass() {
         ]]),
         "valid"
     );
-    // The U-shape of DESIGN.md.
+    // The U-shape of the README.
     assert_eq!(error(&[&U_SHAPE]), "valid");
     let (p, _) = Polygon::from_raw(&raw(&[SQUARE, &[(2, 2), (2, 4), (4, 4)]])).unwrap();
     p.check_invariants();

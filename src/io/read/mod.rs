@@ -3,7 +3,7 @@
 //! Input contract: UTF-8 text. Output guarantee: each polygon as rings of exact decimal
 //! coordinates (outer ring first, then the holes in input order), each ring WITHOUT its repeated
 //! closing vertex (a ring whose last vertex equals its first, exactly, loses the last one), so that
-//! the vertex numbering of `spec/CLI.md` is simply the order of vertices over the rings. Nothing
+//! the vertex numbering of `docs/cli.md` is simply the order of vertices over the rings. Nothing
 //! else is cleaned here: duplicates, winding and validity are the business of
 //! [`crate::geom::polygon`].
 //!

@@ -1,4 +1,4 @@
-//! The JSON writer: the document of `spec/CLI.md`.
+//! The JSON writer: the document of `docs/cli.md`.
 //!
 //! Output: `{"polygons": [...], "errors": [...]}`, one object per triangulated polygon with the
 //! spec's fields (vertex numbers are INPUT numbers, triangles counter-clockwise), plus

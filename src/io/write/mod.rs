@@ -15,7 +15,7 @@ use std::io::{self, Write};
 /// An output format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum OutputFormat {
-    /// The JSON document of `spec/CLI.md`.
+    /// The JSON document of `docs/cli.md`.
     Json,
     /// A GeoJSON FeatureCollection, one Feature per input feature (a MultiPolygon of its
     /// triangles; [`features`]).
