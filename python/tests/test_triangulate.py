@@ -155,3 +155,27 @@ def test_a_failed_verification_raises(monkeypatch):
         minitri.triangulate_many([shapely.from_wkt(U_FLAT)], verify=True)
     # Without verify nothing is checked, and nothing is corrupted.
     assert minitri.triangulate(U_FLAT).triangle_count == 5
+
+
+def test_full_precision_doubles_and_touching_holes():
+    # Shortest round-trip doubles at both ends of the range (the wide exact kernel: no
+    # "coordinates too large"), a hole touching the outer ring at a vertex, and a vertex
+    # exactly on the middle of the outer ring's bottom edge (a T-junction as written).
+    a, b = 1.2345678901234567e-5, 0.012345678901234567
+    outer = [(-170.5, -80.25), (a, -80.25), (179.75, -80.25), (179.75, 84.5), (-170.5, 84.5)]
+    outer[1] = (4.625, -80.25)  # the midpoint of (-170.5, -80.25)-(179.75, -80.25)
+    hole = [(-170.5, 0.0), (b, 10.0), (b, -10.0)]  # touches the outer ring's left edge
+    shape = shapely.Polygon(outer, [hole])
+    assert shape.is_valid  # OGC-valid: the hole touches the shell at one point
+    result = minitri.triangulate(shape, verify=True)
+    assert result.parts[0].verification["ok"] is True
+    assert result.optimal is True
+    assert result.triangles.area == pytest.approx(shape.area)
+    # Every corner is an input coordinate, bit for bit.
+    inputs = {tuple(p) for p in outer + hole}
+    assert {tuple(v) for v in result.vertices} <= inputs
+    # The vertex on the bottom edge is the middle of a degenerate triangle.
+    assert any(tuple(result.vertices[t[1]]) == (4.625, -80.25) for t in result.degenerate)
+    # A coordinate like 1.2345678901234567e-5 beside coordinates in the tens is taken exactly.
+    tiny = shapely.Polygon([(0, 0), (a, 0), (20, 0), (20, 20)])
+    assert minitri.triangulate(tiny).degenerate_count == 1

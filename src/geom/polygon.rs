@@ -345,14 +345,17 @@ impl Polygon<WidePoint> {
                 distinct: 0,
             });
         }
-        let points = raw
-            .rings
-            .iter()
-            .flatten()
-            .map(|[x, y]| WidePoint::new(*x, *y))
-            .collect();
-        Polygon::assemble(raw, points, Grid::identity())
+        Polygon::assemble(raw, wide_points(raw), Grid::identity())
     }
+}
+
+/// The vertices of every ring of `raw`, in order, as wide-kernel points (any decimals).
+pub(crate) fn wide_points(raw: &RawPolygon) -> Vec<WidePoint> {
+    raw.rings
+        .iter()
+        .flatten()
+        .map(|[x, y]| WidePoint::new(*x, *y))
+        .collect()
 }
 
 impl<P: Coord> Polygon<P> {
