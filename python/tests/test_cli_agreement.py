@@ -3,6 +3,7 @@ every valid polygon, the same messages for every invalid input."""
 
 import json
 
+import numpy as np
 import pytest
 import shapely
 
@@ -46,8 +47,11 @@ def test_valid_fixture_json_is_the_cli_json(path, verify):
 
 @pytest.mark.parametrize("path", [p for p in VALID if p.suffix == ".wkt"], ids=lambda p: p.name)
 def test_valid_fixture_through_shapely_floats_gives_the_same_triangles(path):
+    shape = shapely.from_wkt(path.read_text())
+    if not np.isfinite(shapely.get_coordinates(shape)).all():
+        pytest.skip("coordinates beyond the range of a double (1e400): no float form exists")
     text = minitri.triangulate(path.read_text())
-    floats = minitri.triangulate(shapely.from_wkt(path.read_text()))
+    floats = minitri.triangulate(shape)
     assert [p.json for p in floats.parts] == [p.json for p in text.parts]
     # Corners: the input floats (WKB path) and the decimals rounded (text path) agree exactly.
     assert shapely.equals_exact(floats.triangles, text.triangles, tolerance=0)
