@@ -4,9 +4,11 @@
 //! top-level values of GeoJSON Lines and of concatenated GeoJSON, each one feature). Each gets
 //! a [`Feature`]: its number in its source (from 0, in input order), its `id` and `properties`
 //! exactly as written (the JSON text, byte for byte: `serde_json`'s [`RawValue`]), and what its
-//! geometry is: `k` polygons (a Polygon is 1 part, a MultiPolygon or GeometryCollection `k`),
-//! `null`, or unreadable. Each polygon of it is then one [`Identity`]: the feature and the
-//! part's number within it. The writers use them: JSON entries carry `feature`, `part`, `id`
+//! geometry is: `k` parts (a Polygon is 1 part, a MultiPolygon or GeometryCollection `k`),
+//! `null`, or unreadable. Each part of it is then one [`Identity`]: the feature and the part's
+//! number within it. A part is a polygon, or a member of a GeometryCollection that is not one
+//! (a Point, a LineString): a failed part, one error outcome in its place among the parts, so
+//! that the collection's polygons are triangulated and the member reported, numbered like them. The writers use them: JSON entries carry `feature`, `part`, `id`
 //! and `properties`; `--to geojson` and `--to geojsonl` give one Feature per input feature.
 //!
 //! Inputs without features (WKT, vertex lists) have no identity: each polygon stands alone.
@@ -32,7 +34,8 @@ pub struct Feature {
 /// What a feature's geometry is, as read.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Geometry {
-    /// This many polygons, each one outcome (a MultiPolygon's parts in order).
+    /// This many parts, each one outcome, in input order: the polygons (a MultiPolygon's in
+    /// order), and the members of a GeometryCollection that are not polygons (failed parts).
     Parts(usize),
     /// `"geometry": null`: nothing to triangulate (reported as an error of the feature).
     Null,

@@ -487,16 +487,26 @@ pub fn unreadable(source: &str, error: Error) -> Outcome {
     }
 }
 
-/// Reads, validates and triangulates every polygon of one source text.
+/// Reads, validates and triangulates every polygon of one source text. A member of a geometry
+/// collection that is not a polygon (a `POINT`) is one failed outcome in its place, without
+/// index ([`read::read_parts`]); the polygons are numbered without it.
 pub fn process(source: &str, text: &str, format: Format, options: &Options) -> Vec<Outcome> {
-    let raws = match read::read(format, text) {
-        Ok(raws) => raws,
+    let parts = match read::read_parts(format, text) {
+        Ok(parts) => parts,
         Err(e) => return vec![unreadable(source, Error::Parse(e))],
     };
-    raws.into_iter()
-        .enumerate()
-        .flat_map(|(index, raw)| process_raw(source, index, raw, options))
-        .collect()
+    let mut index = 0;
+    let mut outcomes = Vec::new();
+    for part in parts {
+        match part {
+            Ok(raw) => {
+                outcomes.extend(process_raw(source, index, raw, options));
+                index += 1;
+            }
+            Err(e) => outcomes.push(unreadable(source, Error::Parse(e))),
+        }
+    }
+    outcomes
 }
 
 /// Validates and triangulates polygon `index` of `source`, as read: one outcome, or with

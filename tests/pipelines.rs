@@ -141,6 +141,95 @@ fn errors_and_results_are_numbered_by_feature_and_part() {
     }
 }
 
+/// A GeometryCollection feature with a Point among its polygons (issue 24 point 8), then a
+/// Polygon feature.
+const COLLECTION_LAYER: [&str; 2] = [
+    r#"{"type": "Feature", "id": "gc", "geometry": {"type": "GeometryCollection", "geometries": [{"type": "Point", "coordinates": [1, 2]}, {"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 1]]]}, {"type": "MultiPolygon", "coordinates": [[[[5, 5], [6, 5], [5, 6]]], [[[8, 8], [9, 8], [8, 9]]]]}]}}"#,
+    r#"{"type": "Feature", "id": "p", "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [2, 0], [2, 2], [0, 2]]]}}"#,
+];
+
+#[test]
+fn a_collection_member_that_is_not_a_polygon_is_a_failed_part_of_its_feature() {
+    let collection = format!(
+        "{{\"type\": \"FeatureCollection\", \"features\": [\n{}\n]}}\n",
+        COLLECTION_LAYER.join(",\n")
+    );
+    let lines = COLLECTION_LAYER.join("\n") + "\n";
+    for (input, name) in [(collection, "feature 0"), (lines, "line 1, column 1")] {
+        let message = format!(
+            "{name}, geometry 0: expected a Polygon or MultiPolygon geometry, found \"Point\""
+        )
+        .replace("column 1, geometry", "column 1: geometry");
+        // JSON: the collection's polygons are parts 1 to 3 of feature 0, the Point its part 0.
+        let (code, out, err) = run(&[], Some(&input));
+        assert_eq!(code, 1, "not wholly processed: {err}");
+        assert_eq!(err, format!("minitri: -: {message}\n"));
+        let doc = json(&out);
+        let numbered: Vec<(Value, Value, Value)> = doc["polygons"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|p| (p["index"].clone(), p["feature"].clone(), p["part"].clone()))
+            .collect();
+        assert_eq!(
+            numbered,
+            [
+                (0.into(), 0.into(), 1.into()),
+                (1.into(), 0.into(), 2.into()),
+                (2.into(), 0.into(), 3.into()),
+                (3.into(), 1.into(), Value::Null),
+            ]
+        );
+        let mut error = doc["errors"][0].clone();
+        error.as_object_mut().unwrap().remove("line");
+        assert_eq!(
+            error,
+            serde_json::json!({"source": "-", "feature": 0, "part": 0, "id": "gc", "message": message})
+        );
+        assert_eq!(doc["errors"].as_array().unwrap().len(), 1);
+        // GeoJSON: feature 0's Feature carries its triangles and the Point's error.
+        for to in ["geojson", "geojsonl"] {
+            let (code, out, _) = run(&["--from", "geojson", "-", "--to", to], Some(&input));
+            assert_eq!(code, 1);
+            let features: Vec<Value> = match to {
+                "geojson" => json(&out)["features"].as_array().unwrap().clone(),
+                _ => out.lines().map(json).collect(),
+            };
+            assert_eq!(features.len(), 2, "one per input feature: {out}");
+            let gc = &features[0];
+            assert_eq!(gc["id"], "gc");
+            assert_eq!(facts(gc)["ok"], false);
+            assert_eq!(facts(gc)["parts"], 4);
+            assert_eq!(facts(gc)["triangle_count"], 3);
+            assert_eq!(gc["geometry"]["coordinates"].as_array().unwrap().len(), 3);
+            assert_eq!(
+                facts(gc)["errors"],
+                serde_json::json!([format!("part 0: {message}")])
+            );
+            assert_eq!(facts(&features[1])["ok"], true);
+        }
+    }
+    // WKT: the polygons triangulated, the Point reported at its line and column.
+    let wkt =
+        "GEOMETRYCOLLECTION (POINT (1 2),\n  POLYGON ((0 0, 1 0, 0 1)), LINESTRING (0 0, 1 1))";
+    let (code, out, err) = run(&["--from", "wkt"], Some(wkt));
+    assert_eq!(code, 1);
+    let expected = "expected POLYGON, MULTIPOLYGON or GEOMETRYCOLLECTION, found";
+    assert_eq!(
+        err,
+        format!(
+            "minitri: -: line 1, column 21: {expected} POINT\nminitri: -: line 2, column 30: {expected} LINESTRING\n"
+        )
+    );
+    let doc = json(&out);
+    assert_eq!(doc["polygons"].as_array().unwrap().len(), 1);
+    assert_eq!(doc["polygons"][0]["index"], 0);
+    assert_eq!(
+        doc["errors"][0],
+        serde_json::json!({"source": "-", "message": format!("line 1, column 21: {expected} POINT")})
+    );
+}
+
 #[test]
 fn geojsonl_is_a_filter_one_line_out_per_line_in() {
     let mut input = lines();

@@ -96,12 +96,18 @@ fn text_outcomes(text: &str, format: Format, options: &Options) -> Vec<Outcome> 
             continue;
         }
         any = true;
-        match geojson_stream::read_line(line, k + 1) {
+        // A member of a GeometryCollection that is not a polygon is reported in its place.
+        match geojson_stream::read_line_feature(line, k + 1, 0).1 {
             Err(e) => outcomes.push(pipeline::unreadable("-", Error::Parse(e))),
-            Ok(raws) => {
-                for raw in raws {
-                    outcomes.extend(pipeline::process_raw("-", index, raw, options));
-                    index += 1;
+            Ok(parts) => {
+                for part in parts {
+                    match part {
+                        Ok(raw) => {
+                            outcomes.extend(pipeline::process_raw("-", index, raw, options));
+                            index += 1;
+                        }
+                        Err(e) => outcomes.push(pipeline::unreadable("-", Error::Parse(e))),
+                    }
                 }
             }
         }

@@ -306,7 +306,7 @@ enum Item {
 /// An item after the parallel reading of lines, before its polygons are numbered.
 enum Parsed {
     Ready(Item),
-    Line(Arc<str>, Feature, Result<Vec<RawPolygon>, ParseError>),
+    Line(Arc<str>, Feature, Result<geojson_stream::Parts, ParseError>),
 }
 
 /// Where a chunk's outcomes go, in order, each with what the sink's renderer made of it.
@@ -392,7 +392,7 @@ impl<'a> Chunker<'a> {
                     let outcome = unreadable(&source, Error::Parse(e));
                     items.push(failed_feature(outcome, &Arc::new(feature)));
                 }
-                Parsed::Line(source, feature, Ok(raws)) => {
+                Parsed::Line(source, feature, Ok(parts)) => {
                     let feature = Arc::new(feature);
                     if let Some(item) = no_parts(&source, &feature) {
                         items.push(item);
@@ -402,19 +402,27 @@ impl<'a> Chunker<'a> {
                         Some((last, next)) if Arc::ptr_eq(last, &source) => next,
                         lines => &mut lines.insert((Arc::clone(&source), 0)).1,
                     };
-                    for (part, raw) in raws.into_iter().enumerate() {
+                    for (part, read) in parts.into_iter().enumerate() {
+                        let identity = Identity {
+                            feature: Arc::clone(&feature),
+                            part,
+                        };
+                        let raw = match read {
+                            Ok(raw) => raw,
+                            // A member of a GeometryCollection that is not a polygon.
+                            Err(e) => {
+                                items.push(failed_part(&source, e, identity));
+                                continue;
+                            }
+                        };
                         let index = *next;
                         *next += 1;
                         let source = Arc::clone(&source);
-                        let feature = Some(Identity {
-                            feature: Arc::clone(&feature),
-                            part,
-                        });
                         items.push(Item::Polygon {
                             source,
                             index,
                             raw,
-                            feature,
+                            feature: Some(identity),
                         });
                     }
                 }
@@ -523,17 +531,27 @@ fn read_input(input: &Input, from: Option<Format>, chunker: &mut Chunker) -> io:
     if format == Format::GeoJson {
         return stream_geojson(&source, text.as_bytes(), chunker);
     }
-    match read::read(format, &text) {
-        Ok(raws) => {
+    // A member of a collection that is not a polygon is reported in its place; the polygons
+    // are numbered without it.
+    match read::read_parts(format, &text) {
+        Ok(parts) => {
             drop(text);
-            for (index, raw) in raws.into_iter().enumerate() {
+            let mut index = 0;
+            for part in parts {
                 let source = Arc::clone(&source);
-                chunker.push(Item::Polygon {
-                    source,
-                    index,
-                    raw,
-                    feature: None,
-                })?;
+                match part {
+                    Ok(raw) => {
+                        chunker.push(Item::Polygon {
+                            source,
+                            index,
+                            raw,
+                            feature: None,
+                        })?;
+                        index += 1;
+                    }
+                    Err(e) => chunker
+                        .push(Item::Failed(Box::new(unreadable(&source, Error::Parse(e)))))?,
+                }
             }
             Ok(true)
         }
@@ -644,15 +662,26 @@ fn stream_geojson(
                 feature,
             })
         }
-        Event::Failed(e) => {
-            let outcome = unreadable(source, Error::Parse(e));
-            match current.take() {
-                Some((feature, _)) if feature.geometry == Geometry::Failed => {
-                    chunker.push(failed_feature(outcome, &feature))
-                }
-                _ => chunker.push(Item::Failed(Box::new(outcome))),
+        Event::Failed(e) => match &mut current {
+            // A part of the feature that is not a polygon (a member of a GeometryCollection).
+            Some((feature, part)) if matches!(feature.geometry, Geometry::Parts(k) if *part < k) => {
+                *part += 1;
+                let identity = Identity {
+                    feature: Arc::clone(feature),
+                    part: *part - 1,
+                };
+                chunker.push(failed_part(source, e, identity))
             }
-        }
+            _ => {
+                let outcome = unreadable(source, Error::Parse(e));
+                match current.take() {
+                    Some((feature, _)) if feature.geometry == Geometry::Failed => {
+                        chunker.push(failed_feature(outcome, &feature))
+                    }
+                    _ => chunker.push(Item::Failed(Box::new(outcome))),
+                }
+            }
+        },
     };
     let stop = match geojson_stream::stream(reader, &mut emit) {
         Ok(()) => return Ok(true),
@@ -671,6 +700,14 @@ fn failed_feature(mut outcome: Outcome, feature: &Arc<Feature>) -> Item {
         feature: Arc::clone(feature),
         part: 0,
     });
+    Item::Failed(Box::new(outcome))
+}
+
+/// A failed part of a feature: a member of a GeometryCollection that is not a polygon, one
+/// outcome among the feature's parts (without index: the polygons are numbered without it).
+fn failed_part(source: &str, error: ParseError, identity: Identity) -> Item {
+    let mut outcome = unreadable(source, Error::Parse(error));
+    outcome.feature = Some(identity);
     Item::Failed(Box::new(outcome))
 }
 

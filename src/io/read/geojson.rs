@@ -5,7 +5,10 @@
 //! One JSON value, or several concatenated or newline-delimited (GeoJSON Lines / NDJSON), each:
 //!
 //! - a `Polygon` or `MultiPolygon` geometry (each MultiPolygon part is one polygon), or a
-//!   `GeometryCollection` of those (nested up to 64 levels);
+//!   `GeometryCollection` of those (nested up to 64 levels); a member of another type (a
+//!   `Point`, a `LineString`, ...) is a failed part: [`read_parts`] gives its error in its place
+//!   among the polygons, which stand (`geometry 0: expected a Polygon or MultiPolygon geometry,
+//!   found "Point"`), and [`read`] fails on it;
 //! - a `Feature` whose `geometry` is one of the above, or `null` (which yields no polygon);
 //! - a `FeatureCollection` of such Features;
 //! - a bare array of rings `[[[x, y], ...], ...]` (a Polygon's `coordinates`, the layout of the
@@ -61,6 +64,74 @@ const MAX_DEPTH: usize = 64;
 /// # Ok::<(), minitri::io::read::ParseError>(())
 /// ```
 pub fn read(text: &str) -> Result<Vec<RawPolygon>, ParseError> {
+    let (values, several) = values(text)?;
+    let mut polygons = Vec::new();
+    for (start, value) in values {
+        let mut parts = Vec::new();
+        let located = |failure: Failure| ParseError {
+            location: several.then(|| locate(text, start)),
+            message: failure.to_string(),
+        };
+        top_level(value, &mut parts).map_err(located)?;
+        for part in parts {
+            polygons.push(part.map_err(located)?);
+        }
+    }
+    if polygons.is_empty() {
+        return Err(no_polygon());
+    }
+    Ok(polygons)
+}
+
+/// Reads every part of a GeoJSON text: its polygons, and each member of a GeometryCollection
+/// that is not a polygon (a Point, a LineString, ...) as the error that names it by its path
+/// (`geometry 0: expected a Polygon or MultiPolygon geometry, found "Point"`), in input order.
+/// Anything else wrong is an error of the whole input, as in [`read`] (which is this, failing
+/// at the first failed part).
+///
+/// # Errors
+/// As [`read`], but for the members of GeometryCollections that are not polygons; an input
+/// without any part is an error.
+///
+/// # Examples
+/// ```
+/// use minitri::io::read::geojson;
+/// let text = r#"{"type": "GeometryCollection", "geometries": [{"type": "Point", "coordinates": [1, 2]},
+///   {"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 1]]]}]}"#;
+/// let parts = geojson::read_parts(text)?;
+/// assert_eq!(
+///     parts[0].as_ref().unwrap_err().to_string(),
+///     "geometry 0: expected a Polygon or MultiPolygon geometry, found \"Point\""
+/// );
+/// assert_eq!(parts[1].as_ref().unwrap().rings[0].len(), 3);
+/// # Ok::<(), minitri::io::read::ParseError>(())
+/// ```
+pub fn read_parts(text: &str) -> Result<Vec<Result<RawPolygon, ParseError>>, ParseError> {
+    let (values, several) = values(text)?;
+    let mut out = Vec::new();
+    for (start, value) in values {
+        let mut parts = Vec::new();
+        let located = |failure: Failure| ParseError {
+            location: several.then(|| locate(text, start)),
+            message: failure.to_string(),
+        };
+        top_level(value, &mut parts).map_err(located)?;
+        out.extend(parts.into_iter().map(|part| part.map_err(located)));
+    }
+    if out.is_empty() {
+        return Err(no_polygon());
+    }
+    Ok(out)
+}
+
+/// The error of an input without any polygon.
+fn no_polygon() -> ParseError {
+    ParseError::new("no polygon found: the input holds no non-empty Polygon or MultiPolygon")
+}
+
+/// The JSON values of a GeoJSON text, each with the byte offset where it starts, and whether
+/// there are several.
+fn values(text: &str) -> Result<(Vec<(usize, Node)>, bool), ParseError> {
     let bom = if text.starts_with('\u{feff}') {
         '\u{feff}'.len_utf8()
     } else {
@@ -85,19 +156,7 @@ pub fn read(text: &str) -> Result<Vec<RawPolygon>, ParseError> {
         return Err(ParseError::new("empty input: no polygon found"));
     }
     let several = values.len() > 1;
-    let mut polygons = Vec::new();
-    for (start, value) in values {
-        top_level(value, &mut polygons).map_err(|failure| ParseError {
-            location: several.then(|| locate(text, start)),
-            message: failure.to_string(),
-        })?;
-    }
-    if polygons.is_empty() {
-        return Err(ParseError::new(
-            "no polygon found: the input holds no non-empty Polygon or MultiPolygon",
-        ));
-    }
-    Ok(polygons)
+    Ok((values, several))
 }
 
 /// A `serde_json` syntax error as a [`ParseError`] at its line and (character) column.
@@ -165,8 +224,24 @@ impl Failure {
 
     /// The same failure, inside element `index` of a list of `name`s.
     pub(super) fn within(mut self, name: &'static str, index: usize) -> Failure {
-        self.path.insert(0, (name, index));
+        self.nest(name, index);
         self
+    }
+
+    /// Puts this failure inside element `index` of a list of `name`s.
+    pub(super) fn nest(&mut self, name: &'static str, index: usize) {
+        self.path.insert(0, (name, index));
+    }
+}
+
+/// One part of a feature as read: a polygon, or a member of a GeometryCollection that is not a
+/// polygon (a Point, a LineString, ...), which fails alone: the collection's polygons stand.
+pub(super) type Part = Result<RawPolygon, Failure>;
+
+/// Puts the failed parts among `parts` inside element `index` of a list of `name`s.
+pub(super) fn nest_parts(parts: &mut [Part], name: &'static str, index: usize) {
+    for failure in parts.iter_mut().filter_map(|part| part.as_mut().err()) {
+        failure.nest(name, index);
     }
 }
 
@@ -185,8 +260,9 @@ impl std::fmt::Display for Failure {
     }
 }
 
-/// A top-level JSON value: a GeoJSON object or a bare array of rings.
-pub(super) fn top_level(node: Node, out: &mut Vec<RawPolygon>) -> Result<(), Failure> {
+/// A top-level JSON value: a GeoJSON object or a bare array of rings. Its parts go to `out`;
+/// the `Err` is a failure of the whole value (then `out` is to be dropped).
+pub(super) fn top_level(node: Node, out: &mut Vec<Part>) -> Result<(), Failure> {
     match node {
         Node::Object(object) => match type_of(&object)?.as_str() {
             "Feature" => feature(*object, out),
@@ -197,7 +273,7 @@ pub(super) fn top_level(node: Node, out: &mut Vec<RawPolygon>) -> Result<(), Fai
             "expected an array of rings [[[x, y], ...], ...], found an empty array",
         )),
         Node::Rings(polygon) => {
-            out.extend(polygon?);
+            out.extend(polygon?.map(Ok));
             Ok(())
         }
         other => Err(Failure::new(format!(
@@ -245,16 +321,18 @@ fn list_member(value: Option<Node>, name: &str, kind: &str) -> Result<Vec<Node>,
 }
 
 /// A FeatureCollection: each feature in order.
-fn feature_collection(object: Object, out: &mut Vec<RawPolygon>) -> Result<(), Failure> {
+fn feature_collection(object: Object, out: &mut Vec<Part>) -> Result<(), Failure> {
     let features = list_member(object.features, "features", "FeatureCollection")?;
     for (index, item) in features.into_iter().enumerate() {
+        let start = out.len();
         collection_feature(item, out).map_err(|failure| failure.within("feature", index))?;
+        nest_parts(&mut out[start..], "feature", index);
     }
     Ok(())
 }
 
 /// An element of a FeatureCollection's `features`: a Feature.
-pub(super) fn collection_feature(item: Node, out: &mut Vec<RawPolygon>) -> Result<(), Failure> {
+pub(super) fn collection_feature(item: Node, out: &mut Vec<Part>) -> Result<(), Failure> {
     let object = object_of(item, "a Feature object")?;
     match type_of(&object)?.as_str() {
         "Feature" => feature(object, out),
@@ -265,11 +343,27 @@ pub(super) fn collection_feature(item: Node, out: &mut Vec<RawPolygon>) -> Resul
     }
 }
 
-/// An element of a GeometryCollection's `geometries`, `depth` collections deep.
-fn collection_geometry(item: Node, depth: usize, out: &mut Vec<RawPolygon>) -> Result<(), Failure> {
+/// An element of a GeometryCollection's `geometries`, `depth` collections deep. A geometry of
+/// another type (a Point, a LineString, ...) is one failed part; anything else wrong with it
+/// (not an object, no `type`, bad coordinates) fails the whole collection.
+fn collection_geometry(item: Node, depth: usize, out: &mut Vec<Part>) -> Result<(), Failure> {
     let object = object_of(item, "a geometry object")?;
     let kind = type_of(&object)?;
-    geometry(object, &kind, depth, out)
+    match kind.as_str() {
+        "Polygon" | "MultiPolygon" | "GeometryCollection" => geometry(object, &kind, depth, out),
+        other => {
+            out.push(Err(not_a_polygon(other)));
+            Ok(())
+        }
+    }
+}
+
+/// The failure of a geometry of type `kind`, which is no polygon.
+fn not_a_polygon(kind: &str) -> Failure {
+    Failure::new(format!(
+        "expected a Polygon or MultiPolygon geometry, found {}",
+        quote(kind)
+    ))
 }
 
 /// A value that must be a JSON object; `what` names it in the error.
@@ -284,7 +378,7 @@ fn object_of(node: Node, what: &str) -> Result<Object, Failure> {
 }
 
 /// A Feature: its geometry, if not `null`.
-fn feature(object: Object, out: &mut Vec<RawPolygon>) -> Result<(), Failure> {
+fn feature(object: Object, out: &mut Vec<Part>) -> Result<(), Failure> {
     match member(object.geometry, "geometry", "Feature")? {
         Node::Null => Ok(()),
         Node::Object(geometry_object) => {
@@ -299,16 +393,11 @@ fn feature(object: Object, out: &mut Vec<RawPolygon>) -> Result<(), Failure> {
 }
 
 /// A geometry object of type `kind`, `depth` collections deep.
-fn geometry(
-    object: Object,
-    kind: &str,
-    depth: usize,
-    out: &mut Vec<RawPolygon>,
-) -> Result<(), Failure> {
+fn geometry(object: Object, kind: &str, depth: usize, out: &mut Vec<Part>) -> Result<(), Failure> {
     match kind {
         "Polygon" | "MultiPolygon" => match member(object.coordinates, "coordinates", kind)? {
-            Coordinates::Polygon(polygon) => out.extend(polygon?),
-            Coordinates::MultiPolygon(polygons) => out.extend(polygons?),
+            Coordinates::Polygon(polygon) => out.extend(polygon?.map(Ok)),
+            Coordinates::MultiPolygon(polygons) => out.extend(polygons?.into_iter().map(Ok)),
             // Read for another `type`: only when "type" was named twice, reported before this.
             Coordinates::Text(_) | Coordinates::Skipped => {
                 return Err(Failure::new(format!(
@@ -324,16 +413,13 @@ fn geometry(
             }
             let geometries = list_member(object.geometries, "geometries", "GeometryCollection")?;
             for (index, item) in geometries.into_iter().enumerate() {
+                let start = out.len();
                 collection_geometry(item, depth + 1, out)
                     .map_err(|failure| failure.within("geometry", index))?;
+                nest_parts(&mut out[start..], "geometry", index);
             }
         }
-        other => {
-            return Err(Failure::new(format!(
-                "expected a Polygon or MultiPolygon geometry, found {}",
-                quote(other)
-            )));
-        }
+        other => return Err(not_a_polygon(other)),
     }
     Ok(())
 }
@@ -640,19 +726,129 @@ mod tests {
             error(&format!(r#"{{"coordinates": {rings}, "type": "Point"}}"#)),
             "expected a Polygon or MultiPolygon geometry, found \"Point\""
         );
-        // Kept as text, they are read without `serde_json`'s recursion limit, then with it.
-        let deep = format!(
-            r#"{{"coordinates": [[{}0{}]], "type": "Polygon"}}"#,
-            "[".repeat(200),
-            "]".repeat(200)
+        // Kept as text, they are still read within `serde_json`'s recursion limit, which is
+        // reported where it is met, with its line and column, as when "type" comes first (it
+        // used to be met only when the text was read again, without a location).
+        let nest = |depth: usize| format!("{}0{}", "[".repeat(depth), "]".repeat(depth));
+        let deep = format!(r#"{{"coordinates": {}, "type": "Polygon"}}"#, nest(202));
+        assert_eq!(
+            error(&deep),
+            "line 1, column 143: invalid JSON: recursion limit exceeded"
         );
-        assert_eq!(error(&deep), "invalid JSON: recursion limit exceeded");
-        // A syntax error in them is one, worded by `serde_json`'s skipping parser.
+        let deep = format!(
+            "{{\n  \"bbox\": [],\n  \"coordinates\":\n  {}, \"type\": \"Polygon\"}}",
+            nest(200)
+        );
+        assert_eq!(
+            error(&deep),
+            "line 4, column 129: invalid JSON: recursion limit exceeded"
+        );
+        let first = format!(r#"{{"type": "Polygon", "coordinates": {}}}"#, nest(200));
+        assert_eq!(
+            error(&first),
+            "line 1, column 162: invalid JSON: recursion limit exceeded"
+        );
+        // Nested just within the limit: an error of the coordinates, not of the JSON.
+        let within = format!(r#"{{"coordinates": {}, "type": "Polygon"}}"#, nest(126));
+        assert_eq!(
+            error(&within),
+            "ring 0, position 0: expected [x, y], found an array of arrays (the coordinates are nested one level too deep)"
+        );
+        // A syntax error in them is one, located and worded as when "type" comes first.
         let cut = r#"{"coordinates": [[[0, 0], [1, 0], [5,]]], "type": "Polygon"}"#;
+        let cut_after = r#"{"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [5,]]]}"#;
         assert_eq!(
             error(cut),
-            "line 1, column 38: invalid JSON: expected value"
+            "line 1, column 38: invalid JSON: trailing comma"
         );
+        assert_eq!(
+            error(cut_after),
+            "line 1, column 57: invalid JSON: trailing comma"
+        );
+        // Strings, objects and numbers in them keep what the messages quote.
+        let odd = r#"{"coordinates": [[[0, 0], [1, 0], [{"a": "\u00e9\"", "b": 1.50}]]], "type": "Polygon"}"#;
+        assert_eq!(
+            error(odd),
+            r#"ring 0, position 2: expected [x, y], found [{"a":"é\"","b":1.50}]"#
+        );
+        let odd = r#"{"coordinates": [[[0, 0], [1, 0], [1E5, "\ty"]]], "type": "Polygon"}"#;
+        assert_eq!(
+            error(odd),
+            "ring 0, position 2: expected a number for y, found \"\\ty\""
+        );
+    }
+
+    /// The messages of the failed parts, and the number of polygons, in order (`None` for a
+    /// polygon).
+    fn parts(text: &str) -> Vec<Option<String>> {
+        read_parts(text)
+            .unwrap()
+            .into_iter()
+            .map(|part| part.err().map(|e| e.to_string()))
+            .collect()
+    }
+
+    #[test]
+    fn a_collection_member_that_is_not_a_polygon_fails_alone() {
+        let point = r#"{"type": "Point", "coordinates": [1, 2]}"#;
+        let triangle = r#"{"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 1]]]}"#;
+        let two = r#"{"type": "MultiPolygon", "coordinates": [[[[0, 0], [1, 0], [0, 1]]], [[[5, 5], [6, 5], [5, 6]]]]}"#;
+        let collection =
+            format!(r#"{{"type": "GeometryCollection", "geometries": [{point}, {triangle}]}}"#);
+        let message = "geometry 0: expected a Polygon or MultiPolygon geometry, found \"Point\"";
+        assert_eq!(parts(&collection), [Some(message.to_string()), None]);
+        let polygons = read_parts(&collection).unwrap();
+        assert_eq!(polygons[1].as_ref().unwrap(), &read(triangle).unwrap()[0]);
+        // The whole reader fails on it, as before.
+        assert_eq!(error(&collection), message);
+        // Nested, among a MultiPolygon's parts, in a Feature of a collection: named by its path,
+        // in its place among the parts.
+        let nested = format!(
+            r#"{{"type": "FeatureCollection", "features": [{{"type": "Feature", "geometry": null}}, {{"type": "Feature", "geometry": {{"type": "GeometryCollection", "geometries": [{two}, {{"type": "GeometryCollection", "geometries": [{{"type": "LineString", "coordinates": []}}, {triangle}]}}, {{"type": "Feature"}}]}}}}]}}"#
+        );
+        assert_eq!(
+            parts(&nested),
+            [
+                None,
+                None,
+                Some("feature 1, geometry 1, geometry 0: expected a Polygon or MultiPolygon geometry, found \"LineString\"".into()),
+                None,
+                Some("feature 1, geometry 2: expected a Polygon or MultiPolygon geometry, found \"Feature\"".into()),
+            ]
+        );
+        // Several values: located at the value, as the value's own failures are.
+        let several = format!("{triangle}\n  {collection}\n");
+        assert_eq!(
+            parts(&several),
+            [None, Some(format!("line 2, column 3: {message}")), None]
+        );
+        // Only members of collections: the value itself, or a Feature's geometry, still fails.
+        assert!(read_parts(point).is_err());
+        let feature = format!(r#"{{"type": "Feature", "geometry": {point}}}"#);
+        assert!(read_parts(&feature).is_err());
+        // Only members of another type: a member that is no geometry object, or a polygon
+        // member with bad coordinates, fails the whole collection.
+        for member in [
+            "7",
+            r#"{"coordinates": []}"#,
+            r#"{"type": "Polygon", "coordinates": [[]]}"#,
+        ] {
+            let text = format!(
+                r#"{{"type": "GeometryCollection", "geometries": [{triangle}, {member}]}}"#
+            );
+            assert!(
+                read_parts(&text)
+                    .unwrap_err()
+                    .to_string()
+                    .starts_with("geometry 1"),
+                "{text}"
+            );
+        }
+        // A collection of points only: no polygon, one error each.
+        let points =
+            format!(r#"{{"type": "GeometryCollection", "geometries": [{point}, {point}]}}"#);
+        assert_eq!(parts(&points).len(), 2);
+        assert!(parts(&points).iter().all(Option::is_some));
     }
 
     #[test]

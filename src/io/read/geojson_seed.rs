@@ -13,13 +13,15 @@
 //! a `Node` as it judged a JSON value, with the same messages.
 //!
 //! The nesting of `coordinates` depends on the object's `type`: when `"coordinates"` comes
-//! before `"type"`, its text is kept ([`RawValue`], a few bytes per position) and read once the
-//! type is known. `serde_json` checks such text with its skipping parser, so a JSON syntax error
-//! inside it is worded as that parser words it (`expected value` where `trailing comma` would be
-//! said otherwise, a control character in a string one column earlier) and the recursion limit
-//! is only met when the text is read (`invalid JSON: recursion limit exceeded`, without a
-//! location). A GeoJSON member named twice in one object is recorded (and then reported), since
-//! the second could change how the first was read.
+//! before `"type"`, it is kept as compact JSON text (a few bytes per position) and read once the
+//! type is known. That text is written by a visitor ([`TextSeed`]), not captured raw, so the
+//! value goes through the same parser as any other: a JSON syntax error inside it, and
+//! `serde_json`'s recursion limit (a value nested 128 deep), are reported where they are in the
+//! input, with line and column, and worded as when `"type"` comes first (a raw capture used
+//! `serde_json`'s skipping parser, which has no recursion limit: the limit was met only when
+//! the text was read again, and the error had no location). A GeoJSON member named twice in one
+//! object is recorded (and then reported), since the second could change how the first was
+//! read.
 //!
 //! Memory: 64 bytes per position while its polygon is held (two decimals), plus the text of
 //! `coordinates` that come before `"type"`. Complexity: linear in the input size.
@@ -119,8 +121,9 @@ impl Object {
         let Some(Coordinates::Text(text)) = &self.coordinates else {
             return;
         };
-        let mut de = serde_json::Deserializer::from_str(text.get());
-        // The text was read as JSON once already, but without the recursion limit.
+        let mut de = serde_json::Deserializer::from_str(text);
+        // The text was written from JSON read within the recursion limit, and is nested less
+        // deep than it was in its object: no error is expected here.
         let failed = |e: serde_json::Error| Failure::new(json_message(&e, None));
         self.coordinates = Some(match self.kind() {
             Some("Polygon") => Coordinates::Polygon(
@@ -145,8 +148,8 @@ pub(super) enum Coordinates {
     Polygon(Read<Option<RawPolygon>>),
     /// Read as a MultiPolygon's: its non-empty polygons.
     MultiPolygon(Read<Vec<RawPolygon>>),
-    /// Met before `type`: the text, read when the object ends.
-    Text(Box<RawValue>),
+    /// Met before `type`: as compact JSON text ([`TextSeed`]), read when the object ends.
+    Text(String),
     /// Not read: the `type` needs no coordinates.
     Skipped,
 }
@@ -327,7 +330,12 @@ fn read_object<'de, A: MapAccess<'de>>(
                     (Some("MultiPolygon"), _) => Coordinates::MultiPolygon(
                         map.next_value_seed(LevelSeed(MultiPolygonLevel))?,
                     ),
-                    (None, None) => Coordinates::Text(map.next_value()?),
+                    (None, None) => {
+                        let mut text = String::new();
+                        map.next_value_seed(TextSeed(&mut text))?;
+                        text.shrink_to_fit();
+                        Coordinates::Text(text)
+                    }
                     _ => {
                         map.next_value::<Skip>()?;
                         Coordinates::Skipped
@@ -417,6 +425,96 @@ fn number_text<'de, A: MapAccess<'de>>(mut map: A) -> Result<String, A::Error> {
         return Err(de::Error::custom("invalid number"));
     }
     Ok(text)
+}
+
+/// Writes a JSON value as compact JSON text to its string: numbers as their literal text
+/// (`serde_json`'s `arbitrary_precision`), strings escaped again, objects through
+/// `serde_json::Value`. Read with `deserialize_any`, so that the value is checked by the same
+/// parser as any other (its syntax errors and recursion limit located in the input).
+struct TextSeed<'t>(&'t mut String);
+
+impl<'de> DeserializeSeed<'de> for TextSeed<'_> {
+    type Value = ();
+
+    fn deserialize<D: de::Deserializer<'de>>(self, d: D) -> Result<(), D::Error> {
+        d.deserialize_any(self)
+    }
+}
+
+impl<'de> Visitor<'de> for TextSeed<'_> {
+    type Value = ();
+
+    fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str("a JSON value")
+    }
+
+    fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<(), A::Error> {
+        let out = self.0;
+        out.push('[');
+        let mut first = true;
+        loop {
+            let mark = out.len();
+            if !first {
+                out.push(',');
+            }
+            if seq.next_element_seed(TextSeed(&mut *out))?.is_none() {
+                out.truncate(mark);
+                break;
+            }
+            first = false;
+        }
+        out.push(']');
+        Ok(())
+    }
+
+    fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<(), A::Error> {
+        let mut object = Map::new();
+        match map.next_key_seed(KeySeed)? {
+            None => {}
+            Some(Key::Number) => {
+                self.0.push_str(&number_text(map)?);
+                return Ok(());
+            }
+            Some(key) => {
+                object.insert(key.name(), map.next_value()?);
+                while let Some((name, value)) = map.next_entry()? {
+                    object.insert(name, value);
+                }
+            }
+        }
+        self.0.push_str(&Value::Object(object).to_string());
+        Ok(())
+    }
+
+    fn visit_bool<E: de::Error>(self, v: bool) -> Result<(), E> {
+        self.0.push_str(if v { "true" } else { "false" });
+        Ok(())
+    }
+
+    fn visit_u64<E: de::Error>(self, v: u64) -> Result<(), E> {
+        self.0.push_str(&v.to_string());
+        Ok(())
+    }
+
+    fn visit_i64<E: de::Error>(self, v: i64) -> Result<(), E> {
+        self.0.push_str(&v.to_string());
+        Ok(())
+    }
+
+    fn visit_f64<E: de::Error>(self, v: f64) -> Result<(), E> {
+        self.0.push_str(&Value::from(v).to_string());
+        Ok(())
+    }
+
+    fn visit_str<E: de::Error>(self, v: &str) -> Result<(), E> {
+        self.0.push_str(&Value::from(v).to_string());
+        Ok(())
+    }
+
+    fn visit_unit<E: de::Error>(self) -> Result<(), E> {
+        self.0.push_str("null");
+        Ok(())
+    }
 }
 
 /// Whether `text` is a JSON number (RFC 8259, section 6).

@@ -3,7 +3,9 @@
 //!
 //! Input contract: the same documents as [`super::geojson`], from any [`BufRead`]. Output
 //! guarantee: [`Event`]s in input order, pushed to a callback as soon as each feature (or
-//! top-level value) has been read, so memory holds one feature at a time, not the document.
+//! top-level value) has been read, so memory holds one feature at a time, not the document (the
+//! first top-level value's parts wait until the next value starts, or the input ends: whether
+//! their failures carry a location depends on whether there are several values).
 //! Numbers are read by `serde_json` with `arbitrary_precision`, exactly as written, never through
 //! `f64` (the `geojson` crate's `FeatureReader` finds the features by looking for the first `[`
 //! in the text and yields `f64` positions, so it is not used).
@@ -15,7 +17,9 @@
 //!
 //! Error semantics, which differ from [`super::geojson::read`] (all or nothing) on purpose, so
 //! that one bad record does not stop the others: a feature or top-level value that is not a
-//! polygon is reported as an [`Event::Failed`] and reading goes on; a JSON syntax error stops
+//! polygon is reported as an [`Event::Failed`] and reading goes on, and so is each member of a
+//! GeometryCollection that is not a polygon, a failed part among its feature's parts (the
+//! collection's polygons stand); a JSON syntax error stops
 //! reading ([`Stop::Parse`]), after the events already pushed. Messages are those of
 //! [`super::geojson::read`]: `feature 3, ring 1: ...` inside a FeatureCollection, and
 //! `line 5, column 1: ...` for a top-level value when the input holds several.
@@ -26,7 +30,9 @@
 //!
 //! Complexity: linear in the input size; memory proportional to the largest feature.
 
-use super::geojson::{collection_feature, json_message, top_level, type_of, JSON_WHITESPACE};
+use super::geojson::{
+    collection_feature, json_message, top_level, type_of, Failure, Part, JSON_WHITESPACE,
+};
 use super::geojson_seed::{FeatureSink, Node, NodeSeed, Object};
 use super::{locate, Location, ParseError, RawPolygon};
 use crate::feature::{Feature, Geometry};
@@ -42,12 +48,16 @@ use std::sync::Arc;
 #[derive(Debug)]
 pub enum Event {
     /// A feature starts (a Feature of a collection, or a top-level value): its identity and
-    /// what its geometry is. Its events follow: [`Geometry::Parts`]`(k)` polygons, or one
-    /// failure ([`Geometry::Failed`]), or none ([`Geometry::Null`]).
+    /// what its geometry is. Its events follow: for [`Geometry::Parts`]`(k)`, `k` parts in
+    /// order, each a [`Event::Polygon`] or, for a member of a GeometryCollection that is not a
+    /// polygon (a Point, ...), an [`Event::Failed`]; for [`Geometry::Failed`], one failure; for
+    /// [`Geometry::Null`], none.
     Feature(Arc<Feature>),
     /// The next polygon.
     Polygon(RawPolygon),
-    /// A feature or top-level value that is not a polygon (its polygons, if any, are skipped).
+    /// A feature or top-level value that is not a polygon (its polygons, if any, are skipped),
+    /// or a part of a feature that is not a polygon (a member of a GeometryCollection), or
+    /// something wrong with the input outside any feature.
     Failed(ParseError),
 }
 
@@ -108,9 +118,9 @@ pub fn stream<R: BufRead>(
         failures: 0,
         features: 0,
     };
-    // The first value's failure waits until we know whether the input holds several values,
-    // which decides whether its message carries a location (as in `geojson::read`).
-    let mut held: Option<(Location, String)> = None;
+    // The first value's parts wait until we know whether the input holds several values,
+    // which decides whether its failures carry a location (as in `geojson::read`).
+    let mut held: Option<(Location, Vec<Deferred>)> = None;
     let mut values = 0usize;
     loop {
         match de.end() {
@@ -126,18 +136,18 @@ pub fn stream<R: BufRead>(
             line,
             column: column.max(1),
         };
-        if let Some((location, message)) = held.take() {
-            sink.fail(ParseError::at(location, message))
-                .map_err(Stop::Output)?;
+        if let Some((location, parts)) = held.take() {
+            sink.parts(parts, Some(location)).map_err(Stop::Output)?;
         }
         match NodeSeed::top(Some(&mut sink)).deserialize(&mut de) {
-            Ok(node) => match sink.value(node).map_err(Stop::Output)? {
-                None => {}
-                Some(message) if values == 0 => held = Some((start, message)),
-                Some(message) => sink
-                    .fail(ParseError::at(start, message))
-                    .map_err(Stop::Output)?,
-            },
+            Ok(node) => {
+                let parts = sink.value(node).map_err(Stop::Output)?;
+                if values == 0 {
+                    held = Some((start, parts));
+                } else {
+                    sink.parts(parts, Some(start)).map_err(Stop::Output)?;
+                }
+            }
             Err(e) => {
                 return Err(match sink.output_error.take() {
                     Some(output) => Stop::Output(output),
@@ -148,8 +158,8 @@ pub fn stream<R: BufRead>(
         }
         values += 1;
     }
-    if let Some((_, message)) = held {
-        sink.fail(ParseError::new(message)).map_err(Stop::Output)?;
+    if let Some((_, parts)) = held {
+        sink.parts(parts, None).map_err(Stop::Output)?;
     }
     if values == 0 {
         return Err(Stop::Parse(ParseError::new(
@@ -168,7 +178,9 @@ pub fn stream<R: BufRead>(
 /// for a blank line or a Feature without geometry.
 ///
 /// # Errors
-/// [`ParseError`] located at the line (and column) when the line is not JSON or not a polygon.
+/// [`ParseError`] located at the line (and column) when the line is not JSON or not a polygon,
+/// or holds a GeometryCollection with a member that is not a polygon ([`read_line_feature`]
+/// keeps the collection's polygons then).
 ///
 /// # Examples
 /// ```
@@ -180,16 +192,41 @@ pub fn stream<R: BufRead>(
 /// # Ok::<(), minitri::io::read::ParseError>(())
 /// ```
 pub fn read_line(line: &str, number: usize) -> Result<Vec<RawPolygon>, ParseError> {
-    read_line_feature(line, number, 0).1
+    read_line_feature(line, number, 0)
+        .1
+        .and_then(|parts| parts.into_iter().collect())
 }
 
+/// The parts of a feature: each a polygon, or the error of a member of a GeometryCollection
+/// that is not a polygon.
+pub type Parts = Vec<Result<RawPolygon, ParseError>>;
+
 /// [`read_line`] with the line's feature (numbered `feature`): its `id`, `properties` and
-/// geometry, `None` for a blank line or a line that is not JSON.
+/// geometry, `None` for a blank line or a line that is not JSON; and its parts, each a polygon
+/// or, for a member of a GeometryCollection that is not a polygon, its error (located at the
+/// line, as the line's own errors are).
+///
+/// # Examples
+/// ```
+/// use minitri::io::read::geojson_stream::read_line_feature;
+/// use minitri::feature::Geometry;
+/// let line = r#"{"type": "GeometryCollection", "geometries": [{"type": "Point", "coordinates": [1, 2]},
+///   {"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 1]]]}]}"#;
+/// let (feature, parts) = read_line_feature(line, 7, 0);
+/// assert_eq!(feature.unwrap().geometry, Geometry::Parts(2));
+/// let parts = parts?;
+/// assert_eq!(
+///     parts[0].as_ref().unwrap_err().to_string(),
+///     "line 7, column 1: geometry 0: expected a Polygon or MultiPolygon geometry, found \"Point\""
+/// );
+/// assert!(parts[1].is_ok());
+/// # Ok::<(), minitri::io::read::ParseError>(())
+/// ```
 pub fn read_line_feature(
     line: &str,
     number: usize,
     feature: usize,
-) -> (Option<Feature>, Result<Vec<RawPolygon>, ParseError>) {
+) -> (Option<Feature>, Result<Parts, ParseError>) {
     let line = line.strip_prefix('\u{feff}').unwrap_or(line);
     let body = line.trim_start_matches(JSON_WHITESPACE);
     if body.trim_end_matches(JSON_WHITESPACE).is_empty() {
@@ -221,12 +258,11 @@ pub fn read_line_feature(
         Err(e) => return (None, Err(e)),
     };
     let (id, properties, null) = identity(&mut node);
-    let mut polygons = Vec::new();
-    let result = top_level(node, &mut polygons).map_err(|failure| {
-        let column = line.chars().count() - body.chars().count() + 1;
-        ParseError::at(at(column), failure.to_string())
-    });
-    let geometry = geometry_of(result.is_ok(), null, polygons.len());
+    let mut parts = Vec::new();
+    let column = line.chars().count() - body.chars().count() + 1;
+    let located = |failure: Failure| ParseError::at(at(column), failure.to_string());
+    let result = top_level(node, &mut parts).map_err(located);
+    let geometry = geometry_of(result.is_ok(), null, parts.len());
     let feature = Feature {
         number: feature,
         line: Some(number),
@@ -234,7 +270,13 @@ pub fn read_line_feature(
         properties,
         geometry,
     };
-    (Some(feature), result.map(|()| polygons))
+    let parts = result.map(|()| {
+        parts
+            .into_iter()
+            .map(|part| part.map_err(located))
+            .collect()
+    });
+    (Some(feature), parts)
 }
 
 /// A Feature object's `id` and `properties` (taken out of it), and whether its geometry is
@@ -251,11 +293,11 @@ fn identity(node: &mut Node) -> (Option<Box<RawValue>>, Option<Box<RawValue>>, b
 }
 
 /// What a feature's geometry is, from how it was read.
-fn geometry_of(read: bool, null: bool, polygons: usize) -> Geometry {
+fn geometry_of(read: bool, null: bool, parts: usize) -> Geometry {
     match (read, null) {
         (false, _) => Geometry::Failed,
         (true, true) => Geometry::Null,
-        (true, false) => Geometry::Parts(polygons),
+        (true, false) => Geometry::Parts(parts),
     }
 }
 
@@ -408,6 +450,11 @@ struct Sink<'e> {
     features: usize,
 }
 
+/// A part of a top-level value not pushed yet: a polygon, or the message of a failure (a failed
+/// part, or the whole value), which is located once it is known whether the input holds
+/// several values.
+type Deferred = Result<RawPolygon, String>;
+
 impl Sink<'_> {
     /// Announces the next feature ([`Event::Feature`]).
     fn announce(
@@ -437,25 +484,37 @@ impl Sink<'_> {
         (self.emit)(Event::Failed(error))
     }
 
-    /// Element `index` of a FeatureCollection's `features`: its polygons, or why not.
+    /// Pushes the parts of a top-level value, its failures at `location`.
+    fn parts(&mut self, parts: Vec<Deferred>, location: Option<Location>) -> io::Result<()> {
+        parts.into_iter().try_for_each(|part| match part {
+            Ok(polygon) => self.polygon(polygon),
+            Err(message) => self.fail(ParseError { location, message }),
+        })
+    }
+
+    /// Element `index` of a FeatureCollection's `features`: its parts, or why not.
     fn feature(&mut self, index: usize, mut node: Node) -> io::Result<()> {
         let identity = identity(&mut node);
-        let mut polygons = Vec::new();
-        let read = collection_feature(node, &mut polygons);
-        self.announce(identity, read.is_ok(), polygons.len())?;
+        let mut parts: Vec<Part> = Vec::new();
+        let read = collection_feature(node, &mut parts);
+        self.announce(identity, read.is_ok(), parts.len())?;
         match read {
-            Ok(()) => polygons
-                .into_iter()
-                .try_for_each(|polygon| self.polygon(polygon)),
+            Ok(()) => parts.into_iter().try_for_each(|part| match part {
+                Ok(polygon) => self.polygon(polygon),
+                Err(failure) => self.fail(ParseError::new(
+                    failure.within("feature", index).to_string(),
+                )),
+            }),
             Err(failure) => self.fail(ParseError::new(
                 failure.within("feature", index).to_string(),
             )),
         }
     }
 
-    /// A whole top-level value (its features already pushed if it streamed them): its polygons
-    /// are pushed; `Some(message)` when it has none.
-    fn value(&mut self, node: Node) -> io::Result<Option<String>> {
+    /// A whole top-level value (its features already pushed if it streamed them): it is
+    /// announced, and its parts returned, to be pushed by [`Sink::parts`]: its polygons and
+    /// failed parts, or the one failure of the value.
+    fn value(&mut self, node: Node) -> io::Result<Vec<Deferred>> {
         let collection = |object: &Object| {
             type_of(object).is_ok_and(|kind| kind == "FeatureCollection")
                 && matches!(object.features, Some(Node::List(_)))
@@ -463,7 +522,11 @@ impl Sink<'_> {
         match node {
             // Only a member named twice can be wrong with the object itself.
             Node::Object(object) if matches!(object.features, Some(Node::Streamed)) => {
-                Ok(type_of(&object).err().map(|failure| failure.to_string()))
+                Ok(type_of(&object)
+                    .err()
+                    .map(|failure| Err(failure.to_string()))
+                    .into_iter()
+                    .collect())
             }
             // `"features"` came before `"type"`: read whole, but judged feature by feature too.
             Node::Object(object) if collection(&object) => {
@@ -472,22 +535,20 @@ impl Sink<'_> {
                         self.feature(index, feature)?;
                     }
                 }
-                Ok(None)
+                Ok(Vec::new())
             }
             mut node => {
                 let identity = identity(&mut node);
-                let mut polygons = Vec::new();
-                let read = top_level(node, &mut polygons);
-                self.announce(identity, read.is_ok(), polygons.len())?;
-                match read {
-                    Ok(()) => {
-                        for polygon in polygons {
-                            self.polygon(polygon)?;
-                        }
-                        Ok(None)
-                    }
-                    Err(failure) => Ok(Some(failure.to_string())),
-                }
+                let mut parts = Vec::new();
+                let read = top_level(node, &mut parts);
+                self.announce(identity, read.is_ok(), parts.len())?;
+                Ok(match read {
+                    Ok(()) => parts
+                        .into_iter()
+                        .map(|part| part.map_err(|failure| failure.to_string()))
+                        .collect(),
+                    Err(failure) => vec![Err(failure.to_string())],
+                })
             }
         }
     }
@@ -589,6 +650,98 @@ mod tests {
                 "{scalar}"
             );
         }
+    }
+
+    #[test]
+    fn a_collection_member_that_is_not_a_polygon_is_a_failed_part() {
+        let point = r#"{"type": "Point", "coordinates": [1, 2]}"#;
+        let collection =
+            format!(r#"{{"type": "GeometryCollection", "geometries": [{point}, {A}, {B}]}}"#);
+        let message = "geometry 0: expected a Polygon or MultiPolygon geometry, found \"Point\"";
+        // Announced as 4 parts (the Point, A, B's two), then the parts in order.
+        let announced = |text: &str| {
+            let mut kinds = Vec::new();
+            stream(text.as_bytes(), &mut |e| {
+                kinds.push(match e {
+                    Event::Feature(f) => format!("feature {} {:?}", f.number, f.geometry),
+                    Event::Polygon(_) => "polygon".into(),
+                    Event::Failed(e) => e.to_string(),
+                });
+                Ok(())
+            })
+            .unwrap();
+            kinds
+        };
+        assert_eq!(
+            announced(&collection),
+            [
+                "feature 0 Parts(4)",
+                message,
+                "polygon",
+                "polygon",
+                "polygon"
+            ]
+        );
+        // In a FeatureCollection (streamed or not) and in concatenated values, named and located
+        // as the whole reader names them.
+        let feature = format!(r#"{{"type": "Feature", "geometry": {collection}}}"#);
+        let features =
+            format!(r#"{{"type": "FeatureCollection", "features": [{feature}, {feature}]}}"#);
+        let reversed =
+            format!(r#"{{"features": [{feature}, {feature}], "type": "FeatureCollection"}}"#);
+        let several = format!("{A} {collection}\n{collection}");
+        for text in [collection.as_str(), &features, &reversed, &several] {
+            let (got, stop) = events(text);
+            assert_eq!(stop, None, "{text}");
+            let expected: Vec<_> = geojson::read_parts(text)
+                .unwrap()
+                .into_iter()
+                .map(|part| part.map_err(|e| e.to_string()))
+                .collect();
+            assert_eq!(got, expected, "{text}");
+        }
+        assert_eq!(
+            announced(&features)[6],
+            format!("feature 1, {message}"),
+            "feature 1's Point"
+        );
+        assert_eq!(
+            events(&several).0[1].as_ref().unwrap_err(),
+            &format!("line 1, column 80: {message}")
+        );
+        // A line: its parts, the failed one located at the line.
+        let (read, parts) = read_line_feature(&collection, 3, 0);
+        assert_eq!(read.unwrap().geometry, Geometry::Parts(4));
+        let parts = parts.unwrap();
+        assert_eq!(
+            parts[0].as_ref().unwrap_err().to_string(),
+            format!("line 3, column 1: {message}")
+        );
+        assert!(parts[1..].iter().all(Result::is_ok));
+        // `read_line`, all or nothing, fails on it.
+        assert_eq!(
+            read_line(&collection, 3).unwrap_err().to_string(),
+            format!("line 3, column 1: {message}")
+        );
+    }
+
+    #[test]
+    fn deep_coordinates_before_the_type_are_located() {
+        let text = format!(
+            "{{\"coordinates\": {}0{}, \"type\": \"Polygon\"}}",
+            "[".repeat(200),
+            "]".repeat(200)
+        );
+        let expected = "line 1, column 143: invalid JSON: recursion limit exceeded";
+        assert_eq!(events(&text).1.as_deref(), Some(expected));
+        assert_eq!(geojson::read(&text).unwrap_err().to_string(), expected);
+        assert_eq!(read_line(&text, 1).unwrap_err().to_string(), expected);
+        let feature = format!(
+            "{{\"type\": \"FeatureCollection\", \"features\": [\n{{\"type\": \"Feature\", \"geometry\": {text}}}]}}"
+        );
+        let expected = "line 2, column 172: invalid JSON: recursion limit exceeded";
+        assert_eq!(events(&feature).1.as_deref(), Some(expected));
+        assert_eq!(geojson::read(&feature).unwrap_err().to_string(), expected);
     }
 
     #[test]

@@ -216,3 +216,29 @@ pub fn read(format: Format, text: &str) -> Result<Vec<RawPolygon>, ParseError> {
         Format::Vertices => vertices::read(text),
     }
 }
+
+/// Reads every part of `text` in the given format, in input order: its polygons, and for each
+/// member of a geometry collection that is not a polygon (a WKT `POINT`, a GeoJSON `LineString`,
+/// ...) the error that names it; the collection's polygons stand.
+///
+/// # Errors
+/// As [`read`], but for those members.
+///
+/// # Examples
+/// ```
+/// use minitri::io::read::{read_parts, Format};
+/// let parts = read_parts(Format::Wkt, "GEOMETRYCOLLECTION (LINESTRING (0 0, 1 1), POLYGON ((0 0, 1 0, 0 1)))")?;
+/// assert_eq!(parts.len(), 2);
+/// assert!(parts[0].is_err() && parts[1].is_ok());
+/// # Ok::<(), minitri::io::read::ParseError>(())
+/// ```
+pub fn read_parts(
+    format: Format,
+    text: &str,
+) -> Result<Vec<Result<RawPolygon, ParseError>>, ParseError> {
+    match format {
+        Format::Wkt => wkt::read_parts(text),
+        Format::GeoJson => geojson::read_parts(text),
+        Format::Vertices => Ok(vertices::read(text)?.into_iter().map(Ok).collect()),
+    }
+}

@@ -20,6 +20,12 @@
 //! Exactly one top-level geometry is read; anything after it is an error (wrap several in a
 //! `GEOMETRYCOLLECTION` or `MULTIPOLYGON`). Collections may nest up to 64 levels.
 //!
+//! A member of a `GEOMETRYCOLLECTION` of another WKT type (`POINT`, `LINESTRING`, `TRIANGLE`,
+//! ...) is read as far as its syntax goes (its dimension tag, then `EMPTY` or a body of balanced
+//! parentheses holding words and commas; an unbalanced body is a syntax error, as anywhere) and
+//! becomes one failed part: [`read_parts`] gives its error, at its keyword, in its place among
+//! the polygons, and the collection's polygons stand. [`read`] fails on it.
+//!
 //! Output guarantee: one [`RawPolygon`] per `POLYGON` and per `MULTIPOLYGON` part, in input
 //! order, `EMPTY` ones skipped; coordinates are exact [`Decimal`]s parsed from their literal text
 //! (never through `f64`); each ring loses its repeated closing vertex. Errors carry the line and
@@ -75,10 +81,33 @@ const OTHER_TYPES: [&str; 15] = [
 /// # Ok::<(), minitri::io::read::ParseError>(())
 /// ```
 pub fn read(text: &str) -> Result<Vec<RawPolygon>, ParseError> {
+    read_parts(text)?.into_iter().collect()
+}
+
+/// Reads the one WKT geometry of `text` and returns its parts in input order: its polygons,
+/// and for each member of a `GEOMETRYCOLLECTION` of another type (`POINT`, `LINESTRING`, ...)
+/// the error that names it, at its line and column.
+///
+/// # Errors
+/// As [`read`], but for the members of collections of other types; a geometry without any part
+/// (all `EMPTY`) is an error.
+///
+/// # Examples
+/// ```
+/// use minitri::io::read::wkt;
+/// let parts = wkt::read_parts("GEOMETRYCOLLECTION (POINT (1 2), POLYGON ((0 0, 1 0, 0 1)))")?;
+/// assert_eq!(
+///     parts[0].as_ref().unwrap_err().to_string(),
+///     "line 1, column 21: expected POLYGON, MULTIPOLYGON or GEOMETRYCOLLECTION, found POINT"
+/// );
+/// assert_eq!(parts[1].as_ref().unwrap().rings[0].len(), 3);
+/// # Ok::<(), minitri::io::read::ParseError>(())
+/// ```
+pub fn read_parts(text: &str) -> Result<Vec<Result<RawPolygon, ParseError>>, ParseError> {
     let mut parser = Parser {
         text,
         pos: 0,
-        polygons: Vec::new(),
+        parts: Vec::new(),
         dimensions: None,
     };
     if parser.peek().kind == Tok::End {
@@ -87,10 +116,10 @@ pub fn read(text: &str) -> Result<Vec<RawPolygon>, ParseError> {
     parser.srid_prefix()?;
     parser.geometry(0)?;
     parser.end()?;
-    if parser.polygons.is_empty() {
+    if parser.parts.is_empty() {
         return Err(ParseError::new("no polygon found: the geometry is EMPTY"));
     }
-    Ok(parser.polygons)
+    Ok(parser.parts)
 }
 
 /// A token kind; words are keywords or number literals.
@@ -178,11 +207,11 @@ fn is_delimiter(c: char) -> bool {
     c.is_whitespace() || matches!(c, '(' | ')' | ',' | ';' | '=' | '#' | '\u{feff}')
 }
 
-/// The parser state: the text, the position of the next token, and the polygons read so far.
+/// The parser state: the text, the position of the next token, and the parts read so far.
 struct Parser<'a> {
     text: &'a str,
     pos: usize,
-    polygons: Vec<RawPolygon>,
+    parts: Vec<Result<RawPolygon, ParseError>>,
     /// How many coordinates the current polygon's first point has: every point of a polygon
     /// must have as many (a point with more is most likely a missing comma).
     dimensions: Option<usize>,
@@ -312,29 +341,37 @@ impl<'a> Parser<'a> {
             return Err(self.expected(GEOMETRY_TYPES, token));
         };
         let Some((kind, glued)) = classify(word) else {
-            let found = match split_type(word, &OTHER_TYPES) {
+            let other = split_type(word, &OTHER_TYPES);
+            let found = match other {
                 Some((name, _)) => name.to_string(),
                 None => quote(word),
             };
-            return Err(self.error(token, format!("expected {GEOMETRY_TYPES}, found {found}")));
+            let error = self.error(token, format!("expected {GEOMETRY_TYPES}, found {found}"));
+            return match other {
+                // A member of a collection: skipped, one failed part.
+                Some((name, glued)) if depth > 0 => {
+                    self.skip_body(name, glued)?;
+                    self.parts.push(Err(error));
+                    Ok(())
+                }
+                _ => Err(error),
+            };
         };
-        if !glued && !self.eat_word("ZM") && !self.eat_word("Z") {
-            self.eat_word("M");
-        }
+        self.dimension(glued);
         if self.eat_word("EMPTY") {
             return Ok(());
         }
         match kind {
             Kind::Polygon => {
                 let polygon = self.polygon("'(' or EMPTY after POLYGON")?;
-                self.polygons.push(polygon);
+                self.parts.push(Ok(polygon));
             }
             Kind::MultiPolygon => {
                 self.expect(Tok::Open, "'(' or EMPTY after MULTIPOLYGON")?;
                 loop {
                     if !self.eat_word("EMPTY") {
                         let polygon = self.polygon("'(' opening a polygon, or EMPTY")?;
-                        self.polygons.push(polygon);
+                        self.parts.push(Ok(polygon));
                     }
                     if !self.list_continues()? {
                         break;
@@ -348,6 +385,37 @@ impl<'a> Parser<'a> {
                     if !self.list_continues()? {
                         break;
                     }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Skips a dimension tag (`Z`, `M`, `ZM`) after a geometry keyword, unless one is `glued`
+    /// to it.
+    fn dimension(&mut self, glued: bool) {
+        if !glued && !self.eat_word("ZM") && !self.eat_word("Z") {
+            self.eat_word("M");
+        }
+    }
+
+    /// Skips the rest of a geometry of another type `name` (after its keyword): its dimension
+    /// tag, then `EMPTY` or a body of balanced parentheses holding words and commas.
+    fn skip_body(&mut self, name: &str, glued: bool) -> Result<(), ParseError> {
+        self.dimension(glued);
+        if self.eat_word("EMPTY") {
+            return Ok(());
+        }
+        self.expect(Tok::Open, &format!("'(' or EMPTY after {name}"))?;
+        let mut open = 1usize;
+        while open > 0 {
+            let token = self.next();
+            match token.kind {
+                Tok::Open => open += 1,
+                Tok::Close => open -= 1,
+                Tok::Word(_) | Tok::Comma => {}
+                Tok::Semicolon | Tok::Equals | Tok::End => {
+                    return Err(self.expected("')' or ','", token))
                 }
             }
         }
@@ -634,6 +702,83 @@ mod tests {
             error("(0 0)"),
             "line 1, column 1: expected POLYGON, MULTIPOLYGON or GEOMETRYCOLLECTION, found '('"
         );
+    }
+
+    /// The parts of `text`: `None` for a polygon, the message of a failed part.
+    fn parts(text: &str) -> Vec<Option<String>> {
+        read_parts(text)
+            .unwrap()
+            .into_iter()
+            .map(|part| part.err().map(|e| e.to_string()))
+            .collect()
+    }
+
+    #[test]
+    fn a_collection_member_of_another_type_is_skipped_and_reported() {
+        let found = |line: usize, column: usize, name: &str| {
+            Some(format!(
+                "line {line}, column {column}: expected POLYGON, MULTIPOLYGON or GEOMETRYCOLLECTION, found {name}"
+            ))
+        };
+        let text = "GEOMETRYCOLLECTION (POINT (1 2), POLYGON ((0 0, 1 0, 0 1)))";
+        assert_eq!(parts(text), [found(1, 21, "POINT"), None]);
+        let polygon = read_parts(text).unwrap().pop().unwrap().unwrap();
+        assert_eq!(polygon, read("POLYGON ((0 0, 1 0, 0 1))").unwrap()[0]);
+        // `read`, all or nothing, fails on it, as before.
+        assert_eq!(error(text), found(1, 21, "POINT").unwrap());
+        // Every other type, with dimension tags, EMPTY, nested parentheses, in nested
+        // collections, between polygons and MultiPolygon parts.
+        let text = "GEOMETRYCOLLECTION (\n\
+            MULTIPOLYGON (((0 0, 1 0, 0 1)), ((5 5, 6 5, 5 6))),\n\
+            linestring zm (0 0 1 2, 1 1 1 2), POINT EMPTY,\n\
+            GEOMETRYCOLLECTION (MULTILINESTRINGZ ((0 0 0, 1 1 1), (2 2 2, 3 3 3)), POLYGON ((0 0, 2 0, 0 2))),\n\
+            CURVEPOLYGON (CIRCULARSTRING (0 0, 1 1, 2 0, 1 -1, 0 0)), TIN EMPTY, GEOMETRYCOLLECTION EMPTY)";
+        assert_eq!(
+            parts(text),
+            [
+                None,
+                None,
+                found(3, 1, "LINESTRING"),
+                found(3, 35, "POINT"),
+                found(4, 21, "MULTILINESTRING"),
+                None,
+                found(5, 1, "CURVEPOLYGON"),
+                found(5, 59, "TIN"),
+            ]
+        );
+        // Only points: no polygon, one error each.
+        assert_eq!(
+            parts("GEOMETRYCOLLECTION (POINT (1 2), MULTIPOINT ((1 2), (3 4)))").len(),
+            2
+        );
+        // At the top level it is still the input's error, and a syntax error in a skipped body
+        // is still a syntax error of the input.
+        assert_eq!(error("POINT (1 2)"), found(1, 1, "POINT").unwrap());
+        for (bad, message) in [
+            (
+                "GEOMETRYCOLLECTION (POINT (1 2, POLYGON ((0 0, 1 0, 0 1)))",
+                "line 1, column 59: expected ')' or ',' but reached the end of the input",
+            ),
+            (
+                "GEOMETRYCOLLECTION (POINT (1 2); POLYGON ((0 0, 1 0, 0 1)))",
+                "line 1, column 32: expected ')' or ',', found ';'",
+            ),
+            (
+                "GEOMETRYCOLLECTION (POINT 1 2, POLYGON ((0 0, 1 0, 0 1)))",
+                "line 1, column 27: expected '(' or EMPTY after POINT, found \"1\"",
+            ),
+            (
+                "GEOMETRYCOLLECTION (POINT (1 2)) POLYGON ((0 0, 1 0, 0 1))",
+                "line 1, column 34: unexpected text after the geometry: \"POLYGON ((0 0, 1 0, 0 1))\" \
+                 (a second geometry is not allowed; wrap several in a GEOMETRYCOLLECTION or MULTIPOLYGON)",
+            ),
+            (
+                "GEOMETRYCOLLECTION (POINTS (1 2), POLYGON ((0 0, 1 0, 0 1)))",
+                "line 1, column 21: expected POLYGON, MULTIPOLYGON or GEOMETRYCOLLECTION, found \"POINTS\"",
+            ),
+        ] {
+            assert_eq!(read_parts(bad).unwrap_err().to_string(), message, "{bad}");
+        }
     }
 
     #[test]
