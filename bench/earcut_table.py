@@ -49,6 +49,7 @@ def reason(message):
         ("zero area", "ring of zero area"),
         ("rings cross", "rings cross"),
         ("self-intersection", "ring crosses itself"),
+        ("cut the interior", "touching rings cut the interior in two"),
         ("lies outside", "hole outside the outer ring"),
         ("lies inside", "nested rings"),
     ]

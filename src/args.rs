@@ -75,8 +75,9 @@ pub struct Flags {
     #[arg(long)]
     pub verify: bool,
     /// Repair spikes, rings of fewer than 3 points or zero area, rings touching themselves at a
-    /// vertex (split into polygons or holes) and rings sharing edges (merged), using no new
-    /// points; each repair is a warning and listed under "repaired" in the JSON
+    /// vertex or with a vertex inside their own edge (split into polygons or holes), rings sharing
+    /// edges (merged) and rings touching in a cycle (each piece of the interior a polygon),
+    /// using no new points; each repair is a warning and listed under "repaired" in the JSON
     #[arg(long)]
     pub repair: bool,
     /// With --to svg: write the vertex numbers whatever the polygon's size (by default only up

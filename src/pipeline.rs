@@ -30,8 +30,8 @@ pub struct Options {
     pub verify: bool,
     /// How long the exact search for a polygon with holes may run (`None`: no limit).
     pub time_limit: Option<std::time::Duration>,
-    /// Repair spikes, degenerate rings, self-touching rings and rings sharing edges before
-    /// validating ([`crate::geom::repair`]); a polygon may then give several pieces.
+    /// Repair spikes, degenerate rings, self-touching rings, rings sharing edges and rings
+    /// touching in a cycle before validating ([`crate::geom::repair`]); a polygon may then give several pieces.
     pub repair: bool,
 }
 

@@ -526,7 +526,7 @@ fn rejections_name_rings_and_points() {
     let two_touches = vec![square.clone(), vec![(0, 5), (5, 0), (5, 5)]];
     assert_eq!(
         message(&two_touches),
-        "touching rings cut the interior in two: outer ring, hole 1 touch in a cycle at (0, 5), (5, 0), enclosing a piece of the interior"
+        "touching rings cut the interior in two: outer ring, hole 1 touch in a cycle at (0, 5), (5, 0), enclosing a piece of the interior; --repair makes each piece a separate polygon"
     );
     // Three holes in a cycle of touches.
     let cycle = vec![

@@ -388,3 +388,82 @@ fn touching_rings_and_repairs_give_the_same_outcomes_on_wide_grids() {
         "{invalid} {repaired} {valid} {touching}"
     );
 }
+
+/// `rings` as read, each coordinate written by `f`.
+fn written(rings: &[&[(i64, i64)]], f: &dyn Fn(i64) -> String) -> RawPolygon {
+    RawPolygon {
+        rings: rings
+            .iter()
+            .map(|r| {
+                r.iter()
+                    .map(|&(x, y)| {
+                        [
+                            Decimal::parse(&f(x)).unwrap(),
+                            Decimal::parse(&f(y)).unwrap(),
+                        ]
+                    })
+                    .collect()
+            })
+            .collect(),
+    }
+}
+
+#[test]
+fn vertices_on_their_own_edges_and_cycles_of_touches_are_repaired_on_the_wide_kernel() {
+    // A vertex inside its own ring's edge (outer ring, hole); a hole touching the outer ring
+    // twice; two holes touching twice: repaired alike (repairs, pieces, counts, all verified) on
+    // the integer grid and on grids that force the wide kernel.
+    let square: &[(i64, i64)] = &[(-10, -10), (20, -10), (20, 20), (-10, 20)];
+    type Rings<'a> = &'a [&'a [(i64, i64)]];
+    let cases: [(Rings, RepairKind, usize); 4] = [
+        (
+            &[&[(0, 0), (10, 0), (10, 10), (6, 10), (5, 0), (4, 10), (0, 10)]],
+            RepairKind::SplitRing,
+            2,
+        ),
+        (
+            &[
+                square,
+                &[(2, 2), (8, 2), (8, 8), (6, 8), (5, 2), (4, 8), (2, 8)],
+            ],
+            RepairKind::SplitRing,
+            1,
+        ),
+        (
+            &[
+                &[(0, 0), (10, 0), (10, 10), (0, 10)],
+                &[(3, 0), (5, 5), (10, 7)],
+            ],
+            RepairKind::CutInterior,
+            2,
+        ),
+        (
+            &[
+                &[(0, 0), (20, 0), (20, 20), (0, 20)],
+                &[(10, 4), (4, 10), (10, 16), (7, 10)],
+                &[(10, 4), (13, 10), (10, 16), (16, 10)],
+            ],
+            RepairKind::CutInterior,
+            2,
+        ),
+    ];
+    let algorithms = [Algorithm::Minitri, Algorithm::Ear];
+    for (rings, kind, pieces) in cases {
+        let fast = written(rings, &|v| v.to_string());
+        assert!(
+            AnyPolygon::from_raw(&fast).is_err(),
+            "{rings:?}: invalid as it is"
+        );
+        let want = summary(&fast, true, &algorithms, false);
+        assert_eq!(want.len(), pieces * algorithms.len(), "{want:?}");
+        assert!(
+            want.iter()
+                .all(|l| l.starts_with(&format!("[{kind:?}]")) && !l.contains("invalid")),
+            "{want:?}"
+        );
+        for suffix in ["", "e-200"] {
+            let wide = written(rings, &|v| format!("{v}.00000000000000000001{suffix}"));
+            assert_eq!(summary(&wide, true, &algorithms, true), want, "{rings:?}");
+        }
+    }
+}

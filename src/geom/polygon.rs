@@ -387,8 +387,18 @@ impl<P: Coord> Polygon<P> {
     /// The same polygon with other rings (points and input numbers, outer ring first); the
     /// rings' winding is kept as given.
     pub(super) fn with_rings(&self, rings: &[Vec<(P, usize)>]) -> Polygon<P> {
+        Polygon::rings_as_they_are(rings, self.input_vertices, self.grid)
+    }
+
+    /// Rings (points and input numbers) stored as they are: no validation, no winding change,
+    /// nothing dropped; for the sweep of [`crate::geom::repair`] over rings not yet valid.
+    pub(crate) fn rings_as_they_are(
+        rings: &[Vec<(P, usize)>],
+        input_vertices: usize,
+        grid: Grid,
+    ) -> Polygon<P> {
         let total = rings.iter().map(Vec::len).sum();
-        let mut p = Polygon::empty(total, rings.len(), self.input_vertices, self.grid);
+        let mut p = Polygon::empty(total, rings.len(), input_vertices, grid);
         for (r, ring) in rings.iter().enumerate() {
             p.ring_starts.push(p.points.len());
             for &(q, id) in ring {

@@ -24,16 +24,21 @@
 //!    other's vertices, and the rings around them traced again: two holes become one, a hole
 //!    on the outer ring becomes a notch of it. Tracing turns, at a point with several ways on,
 //!    into the first edge clockwise from the one it came by, which keeps the region on the left
-//!    and splits rings where they touch.
+//!    and splits rings where they touch;
+//! 5. a vertex lying inside an edge (found by the validation sweep) inserted there as a copy (same
+//!    point, same input number); a loop that then passes its own point twice split as in step 3;
+//!    loops touching in a cycle (a hole touching the outer ring twice, two holes touching twice),
+//!    which cuts the interior into pieces, traced again as in step 4: each piece its own polygon.
+//!    Loops touching without a cycle (valid in OGC terms) are left as they came.
 //!
 //! Every decision is exact (the kernel's orientation and collinearity tests). Complexity:
-//! O(n log n) for steps 1, 2 and 4 (a sort of the edges by their supporting line, hash maps of
-//! edges and points); step 3 costs O(k n) for a ring split into k loops, and placing h holes
-//! into s > 1 outer rings O(h n).
+//! O(n log n) for steps 1, 2, 4 and 5 (a sort of the edges by their supporting line, hash maps of
+//! edges and points, one sweep); step 3 costs O(k n) for a ring split into k loops, and placing h
+//! holes into s > 1 outer rings O(h n).
 
 use super::kernel::{cmp_angle_from, cross, line_through, on_segment, Area, Coord, Point};
 use super::polygon::{dropped, to_grid, AnyPolygon, Grid, Polygon, Ring, Warning};
-use super::validate::{folds_back, InvalidPolygon};
+use super::validate::{folds_back, vertices_on_edges, InvalidPolygon};
 use super::wide::WidePoint;
 use crate::io::read::RawPolygon;
 use serde::Serialize;
@@ -55,6 +60,9 @@ pub enum RepairKind {
     SplitRing,
     /// Rings sharing edges merged (the shared edges removed).
     MergedRings,
+    /// Rings touching in a cycle, which cuts the interior into pieces: each piece made a
+    /// separate polygon.
+    CutInterior,
 }
 
 /// One change made by `--repair`, in words (`message`) and by kind.
@@ -255,9 +263,12 @@ pub(crate) fn repair<P: Coord>(
             });
             continue;
         }
-        loops.extend(split(r, r == 0, cleaned, grid, &mut out));
+        loops.extend(split(r, r == 0, cleaned, grid, &mut out, &HashMap::new()));
     }
-    let (mut shells, mut holes) = merge(loops, grid, &mut out);
+    let loops = merge(loops, grid, &mut out);
+    let (mut shells, mut holes): (Vec<_>, Vec<_>) = separate(loops, grid, &mut out)
+        .into_iter()
+        .partition(|l| l.shell);
     if shells.is_empty() {
         return Err(InvalidPolygon::ZeroArea { ring: Ring::Outer });
     }
@@ -354,13 +365,15 @@ fn despike<P: Coord>(
 
 /// Ring `r` (an outer boundary if `outer`, else a hole) split into its loops where it passes a
 /// point twice, each loop with its role and orientation; the loop through the ring's first
-/// vertex first.
+/// vertex first. `on_edge`: the points where the ring passes twice because a vertex of it lay
+/// inside its edge (step 5), with that edge's input numbers, for the message.
 fn split<P: Coord>(
     r: usize,
     outer: bool,
     ring: Vec<Vertex<P>>,
     grid: &Grid,
     out: &mut Repaired<P>,
+    on_edge: &HashMap<P, (usize, usize)>,
 ) -> Vec<Loop<P>> {
     let mut stack: Vec<Vertex<P>> = Vec::with_capacity(ring.len());
     let mut at: HashMap<P, usize> = HashMap::new();
@@ -397,10 +410,14 @@ fn split<P: Coord>(
                 (false, false) => "a separate hole",
                 (false, true) => "a separate polygon inside the hole",
             };
+            let inside = on_edge
+                .get(&vertices[0].0)
+                .map(|(a, b)| format!(", inside its edge {a}-{b}"))
+                .unwrap_or_default();
             out.repairs.push(Repair {
                 kind: RepairKind::SplitRing,
                 message: format!(
-                    "{name} touches itself at vertex {} {}: its loop of {} vertices from there became {what}",
+                    "{name} touches itself at vertex {} {}{inside}: its loop of {} vertices from there became {what}",
                     vertices[0].1,
                     grid.format_point(vertices[0].0),
                     vertices.len()
@@ -479,13 +496,8 @@ fn innermost<P: Coord>(shells: &[Loop<P>], hole: &[Vertex<P>]) -> Option<usize> 
 /// loop and the position of its start).
 type Shared = ((usize, usize), usize, (usize, usize));
 
-/// Step 4: edges shared in opposite directions removed and the loops concerned traced again;
-/// the outer boundaries and the holes.
-fn merge<P: Coord>(
-    loops: Vec<Loop<P>>,
-    grid: &Grid,
-    out: &mut Repaired<P>,
-) -> (Vec<Loop<P>>, Vec<Loop<P>>) {
+/// Step 4: edges shared in opposite directions removed and the loops concerned traced again.
+fn merge<P: Coord>(loops: Vec<Loop<P>>, grid: &Grid, out: &mut Repaired<P>) -> Vec<Loop<P>> {
     let cut = cut_overlaps(&loops);
     // Each directed edge (from, to) of the cut loops: (loop, position of its start).
     let mut edges: HashMap<(P, P), (usize, usize)> = HashMap::new();
@@ -517,7 +529,7 @@ fn merge<P: Coord>(
         }
     }
     if shared.is_empty() {
-        return loops.into_iter().partition(|l| l.shell);
+        return loops;
     }
     for &((l, m), count, (e, i)) in &shared {
         let v = &cut[e].vertices;
@@ -573,41 +585,243 @@ fn merge<P: Coord>(
             rest.push((lp.vertices[i], lp.vertices[(i + 1) % k].0, lp.ring));
         }
     }
+    for (ring, vertices) in trace(&rest) {
+        let twice = area(&vertices).signum();
+        if twice == 0 || vertices.len() < 3 {
+            continue;
+        }
+        // Traced where rings touched, it may pass a point twice: its loops, as for an input ring.
+        result.extend(split(ring, twice > 0, vertices, grid, out, &HashMap::new()));
+    }
+    result
+}
+
+/// The closed walks along `edges` (start vertex, end point, input ring), each edge taken once:
+/// at a point with several ways on, the first edge clockwise from the way back, which keeps the
+/// region on the left and parts the walks where rings only touch. Each walk with the ring of its
+/// first edge.
+fn trace<P: Coord>(edges: &[(Vertex<P>, P, usize)]) -> Vec<(usize, Vec<Vertex<P>>)> {
     let mut leaving: HashMap<P, Vec<usize>> = HashMap::new();
-    for (e, edge) in rest.iter().enumerate() {
+    for (e, edge) in edges.iter().enumerate() {
         leaving.entry(edge.0 .0).or_default().push(e);
     }
-    let mut used = vec![false; rest.len()];
-    for first in 0..rest.len() {
+    let mut used = vec![false; edges.len()];
+    let mut walks = Vec::new();
+    for first in 0..edges.len() {
         if used[first] {
             continue;
         }
         let mut vertices = Vec::new();
         let mut e = first;
-        let ring = rest[first].2;
         loop {
             used[e] = true;
-            vertices.push(rest[e].0);
-            let (from, to) = (rest[e].0 .0, rest[e].1);
+            vertices.push(edges[e].0);
+            let (from, to) = (edges[e].0 .0, edges[e].1);
             let next = leaving.get(&to).and_then(|out| {
                 // The first edge clockwise from the way back (the largest counter-clockwise angle).
                 out.iter()
                     .copied()
-                    .max_by(|&f, &g| cmp_angle_from(to, from, rest[f].1, rest[g].1))
+                    .max_by(|&f, &g| cmp_angle_from(to, from, edges[f].1, edges[g].1))
             });
             match next {
                 Some(f) if !used[f] => e = f,
                 _ => break,
             }
         }
-        let twice = area(&vertices).signum();
-        if twice == 0 || vertices.len() < 3 {
-            continue;
-        }
-        // Traced where rings touched, it may pass a point twice: its loops, as for an input ring.
-        result.extend(split(ring, twice > 0, vertices, grid, out));
+        walks.push((edges[first].2, vertices));
     }
-    result.into_iter().partition(|l| l.shell)
+    walks
+}
+
+/// Step 5: a vertex lying inside an edge of its own loop, and loops touching in a cycle.
+///
+/// The sweep of validation finds every vertex lying strictly inside an edge (of any loop); a
+/// copy of the vertex (same point, same input number) is inserted into the edge. A loop that
+/// now passes its own point twice is split there as in step 3. Then the loops meeting at common
+/// points form a graph (a node per loop, an edge per loop through a shared point); where it has a
+/// cycle, the loops of that connected part are traced again as in step 4 (without the shared
+/// edges, nothing cancels): the walks are the boundaries of the region's pieces there, so an
+/// interior cut in two becomes two polygons. Loops not concerned are returned as they came (the
+/// contacts OGC allows are left to validation), as is everything when the sweep finds rings
+/// crossing or overlapping, or a loop of fewer than 3 vertices (rejected by validation).
+fn separate<P: Coord>(loops: Vec<Loop<P>>, grid: &Grid, out: &mut Repaired<P>) -> Vec<Loop<P>> {
+    // The sweep needs rings of at least 3 vertices without consecutive repeats; what is left
+    // otherwise is rejected by validation.
+    let sane = |l: &Loop<P>| {
+        let v = &l.vertices;
+        v.len() >= 3 && (0..v.len()).all(|i| v[i].0 != v[(i + 1) % v.len()].0)
+    };
+    if loops.is_empty() || !loops.iter().all(sane) {
+        return loops;
+    }
+    let rings: Vec<Vec<Vertex<P>>> = loops.iter().map(|l| l.vertices.clone()).collect();
+    let polygon = Polygon::rings_as_they_are(&rings, 0, *grid);
+    drop(rings);
+    let Some(on_edge) = vertices_on_edges(&polygon) else {
+        return loops;
+    };
+    let starts = polygon.ring_starts();
+    let locate = |i: usize| {
+        let l = polygon.ring_index(i);
+        (l, i - starts[l])
+    };
+    // The vertices to insert into each edge (loop, position of its start), and for each loop
+    // the points of its own vertices inside its edges, with the edge's input numbers.
+    let mut cuts: HashMap<(usize, usize), Vec<Vertex<P>>> = HashMap::new();
+    let mut own: Vec<HashMap<P, (usize, usize)>> = vec![HashMap::new(); loops.len()];
+    for &(e, v) in &on_edge {
+        let ((l, i), (m, j)) = (locate(e), locate(v));
+        let ring = &loops[l].vertices;
+        cuts.entry((l, i)).or_default().push(loops[m].vertices[j]);
+        if l == m {
+            own[l]
+                .entry(ring[j].0)
+                .or_insert((ring[i].1, ring[(i + 1) % ring.len()].1));
+        }
+    }
+    // Step 5a: each loop with its edges cut (kept for tracing), split where it touches itself.
+    let mut result: Vec<(Loop<P>, Vec<Vertex<P>>)> = Vec::with_capacity(loops.len());
+    for (l, lp) in loops.into_iter().enumerate() {
+        let mut vertices = Vec::with_capacity(lp.vertices.len());
+        for (i, &v) in lp.vertices.iter().enumerate() {
+            vertices.push(v);
+            if let Some(inner) = cuts.get_mut(&(l, i)) {
+                inner.sort_by(|x, y| P::cmp_dist(v.0, x.0, y.0));
+                inner.dedup_by_key(|x| x.0);
+                vertices.extend_from_slice(inner);
+            }
+        }
+        if own[l].is_empty() {
+            result.push((lp, vertices));
+        } else {
+            for piece in split(lp.ring, lp.shell, vertices, grid, out, &own[l]) {
+                let cut = piece.vertices.clone();
+                result.push((piece, cut));
+            }
+        }
+    }
+    // Step 5b: the loops through each point shared by several; a touch joining loops already
+    // joined closes a cycle.
+    let n = result.len();
+    let mut through: HashMap<P, Vec<usize>> = HashMap::new();
+    for (l, (_, vertices)) in result.iter().enumerate() {
+        for v in vertices {
+            through.entry(v.0).or_default().push(l);
+        }
+    }
+    let mut touches: Vec<(P, Vec<usize>)> =
+        through.into_iter().filter(|(_, ls)| ls.len() > 1).collect();
+    touches.sort_unstable_by_key(|t| t.0);
+    fn find(root: &mut [usize], mut r: usize) -> usize {
+        while root[r] != r {
+            root[r] = root[root[r]];
+            r = root[r];
+        }
+        r
+    }
+    let mut root: Vec<usize> = (0..n).collect();
+    let mut closing = Vec::new();
+    for (_, ls) in &mut touches {
+        ls.dedup();
+        for k in 1..ls.len() {
+            let (a, b) = (find(&mut root, ls[0]), find(&mut root, ls[k]));
+            if a == b {
+                closing.push(ls[0]);
+            } else {
+                root[a] = b;
+            }
+        }
+    }
+    if closing.is_empty() {
+        return result.into_iter().map(|(l, _)| l).collect();
+    }
+    let part: Vec<usize> = (0..n).map(|l| find(&mut root, l)).collect();
+    let mut cyclic: Vec<usize> = closing.iter().map(|&l| part[l]).collect();
+    cyclic.sort_unstable();
+    cyclic.dedup();
+    let mut members: HashMap<usize, Vec<usize>> = cyclic.iter().map(|&c| (c, Vec::new())).collect();
+    for (l, c) in part.iter().enumerate() {
+        if let Some(m) = members.get_mut(c) {
+            m.push(l);
+        }
+    }
+    let mut replaced: Vec<(usize, Vec<Loop<P>>)> = Vec::new();
+    for c in cyclic {
+        let ls = &members[&c];
+        let mut edges = Vec::new();
+        for &l in ls {
+            let (lp, vertices) = &result[l];
+            let k = vertices.len();
+            for i in 0..k {
+                edges.push((vertices[i], vertices[(i + 1) % k].0, lp.ring));
+            }
+        }
+        // Traced again, its walks split silently where they pass a point twice (a touch that
+        // is no cycle: OGC allows it, as the input had it).
+        let mut quiet = Repaired::default();
+        let mut traced = Vec::new();
+        for (ring, vertices) in trace(&edges) {
+            let twice = area(&vertices).signum();
+            if twice != 0 && vertices.len() >= 3 {
+                traced.extend(split(
+                    ring,
+                    twice > 0,
+                    vertices,
+                    grid,
+                    &mut quiet,
+                    &HashMap::new(),
+                ));
+            }
+        }
+        let before = ls.iter().filter(|&&l| result[l].0.shell).count();
+        let after = traced.iter().filter(|l| l.shell).count();
+        if after <= before {
+            continue; // the cycle encloses no interior (pieces touching twice): left as it is
+        }
+        let mut rings: Vec<usize> = ls.iter().map(|&l| result[l].0.ring).collect();
+        rings.sort_unstable();
+        rings.dedup();
+        let mut names: Vec<String> = rings
+            .iter()
+            .map(|&r| Ring::from_index(r).to_string())
+            .collect();
+        let last = names.pop().unwrap_or_default();
+        let (names, verb) = if names.is_empty() {
+            (last, "touches itself")
+        } else {
+            (format!("{} and {last}", names.join(", ")), "touch")
+        };
+        let points: Vec<String> = touches
+            .iter()
+            .filter(|(_, t)| part[t[0]] == c)
+            .map(|(p, _)| grid.format_point(*p))
+            .collect();
+        const SHOWN: usize = 6;
+        let mut at = points[..points.len().min(SHOWN)].join(", ");
+        if points.len() > SHOWN {
+            at.push_str(&format!(" and {} more points", points.len() - SHOWN));
+        }
+        out.repairs.push(Repair {
+            kind: RepairKind::CutInterior,
+            message: format!(
+                "{names} {verb} at {at}, cutting the interior into {} pieces: each became a separate polygon",
+                1 + after - before
+            ),
+        });
+        replaced.push((c, traced));
+    }
+    let mut gone = vec![false; n];
+    for &(c, _) in &replaced {
+        gone[c] = true;
+    }
+    let mut loops = Vec::with_capacity(n);
+    for (l, (lp, _)) in result.into_iter().enumerate() {
+        if !gone[part[l]] {
+            loops.push(lp);
+        }
+    }
+    loops.extend(replaced.into_iter().flat_map(|(_, traced)| traced));
+    loops
 }
 
 /// The loops with every edge cut at the vertices of collinear edges lying strictly inside it (a

@@ -120,7 +120,7 @@ pub enum InvalidPolygon {
         at: String,
     },
     /// Touches close a cycle of rings, which encloses a piece of the interior.
-    #[error("touching rings cut the interior in two: {rings} touch in a cycle at {points}, enclosing a piece of the interior")]
+    #[error("touching rings cut the interior in two: {rings} touch in a cycle at {points}, enclosing a piece of the interior; --repair makes each piece a separate polygon")]
     CutInterior {
         /// The rings of the cycle.
         rings: String,
@@ -172,6 +172,7 @@ fn overlap_hint(contact: &EdgeContact) -> &'static str {
     match (contact.contact, contact.ring_a == contact.ring_b) {
         (SegmentContact::Overlap, false) => "; --repair merges rings sharing a stretch of edge",
         (SegmentContact::Overlap, true) => "; --repair removes a stretch the ring runs along twice",
+        (SegmentContact::Touch, true) => "; --repair splits the ring there",
         _ => "",
     }
 }
@@ -296,7 +297,7 @@ fn scan<P: Coord>(
         return Ok(contacts);
     }
     let mut found = allow_touches.then(Vec::new);
-    let below = sweep(polygon, &order, &mut found).map_err(|e| vec![e])?;
+    let below = sweep(polygon, &order, &mut found, false).map_err(|e| vec![e])?;
     contacts.on_edge = found.unwrap_or_default();
     contacts.on_edge.sort_unstable();
     contacts.on_edge.dedup();
@@ -310,6 +311,21 @@ fn scan<P: Coord>(
     } else {
         Err(errors)
     }
+}
+
+/// For `--repair`: every vertex lying strictly inside an edge, of another ring or of its own, as
+/// `(edge, vertex)` pairs (sorted), found by the sweep. `None` when edges meet otherwise than at
+/// such points or at common vertices (rings cross or overlap: validation reports it).
+/// Within a ring no two vertices may share a point. O(n log n).
+pub(crate) fn vertices_on_edges<P: Coord>(polygon: &Polygon<P>) -> Option<Vec<(usize, usize)>> {
+    let mut order: Vec<usize> = (0..polygon.len()).collect();
+    order.sort_unstable_by_key(|&i| (polygon.point(i), i));
+    let mut found = Some(Vec::new());
+    sweep(polygon, &order, &mut found, true).ok()?;
+    let mut found = found.unwrap_or_default();
+    found.sort_unstable();
+    found.dedup();
+    Some(found)
 }
 
 /// Each ring's enclosing ring (`None`: none) from what the sweep saw below each ring's first
@@ -468,11 +484,13 @@ impl<P: Coord> Ord for Cut<P> {
 /// The sweep: the leftmost forbidden contact, or for each ring what lies just below its first
 /// vertex (`None`: nothing; else the ring of the edge below and whether that ring encloses the
 /// region above the edge). With `touches`, contacts OGC allows between rings are collected there
-/// instead of being errors.
+/// instead of being errors; with `touches` and `same_ring`, also a vertex strictly inside an edge
+/// of its own ring.
 fn sweep<P: Coord>(
     polygon: &Polygon<P>,
     order: &[usize],
     touches: &mut Option<Vec<(usize, usize)>>,
+    same_ring: bool,
 ) -> Result<Vec<Option<(usize, bool)>>, InvalidPolygon> {
     let rings = polygon.holes() + 1;
     let mut below_of: Vec<Option<(usize, bool)>> = vec![None; rings];
@@ -510,7 +528,7 @@ fn sweep<P: Coord>(
                 let below = status.prev(h).map(|b| status.key(b).edge);
                 status.remove(h);
                 if let (Some(a), Some(b)) = (above, below) {
-                    test(polygon, a, b, touches)?;
+                    test(polygon, a, b, touches, same_ring)?;
                 }
             }
         }
@@ -520,10 +538,10 @@ fn sweep<P: Coord>(
                 let h = status.insert(cut);
                 handle[e] = Some(h);
                 if let Some(above) = status.next(h) {
-                    test(polygon, e, status.key(above).edge, touches)?;
+                    test(polygon, e, status.key(above).edge, touches, same_ring)?;
                 }
                 if let Some(below) = status.prev(h) {
-                    test(polygon, e, status.key(below).edge, touches)?;
+                    test(polygon, e, status.key(below).edge, touches, same_ring)?;
                 }
             }
         }
@@ -533,12 +551,14 @@ fn sweep<P: Coord>(
 
 /// Whether edges `e` and `f` meet where they must not. With `touches`, a single common point of
 /// edges of different rings that is a vertex of one of them is allowed: recorded there when it
-/// lies strictly inside the other edge (a shared vertex is found by sorting).
+/// lies strictly inside the other edge (a shared vertex is found by sorting); with `same_ring`,
+/// also between edges of one ring.
 fn test<P: Coord>(
     polygon: &Polygon<P>,
     e: usize,
     f: usize,
     touches: &mut Option<Vec<(usize, usize)>>,
+    same_ring: bool,
 ) -> Result<(), InvalidPolygon> {
     if polygon.next(e) == f || polygon.next(f) == e {
         return Ok(()); // neighbours share their common vertex; spikes are reported separately
@@ -551,7 +571,9 @@ fn test<P: Coord>(
     }
     let (e1, f1) = (polygon.next(e), polygon.next(f));
     if let Some(found) = touches.as_mut() {
-        if contact == SegmentContact::Touch && polygon.ring_index(e) != polygon.ring_index(f) {
+        if contact == SegmentContact::Touch
+            && (same_ring || polygon.ring_index(e) != polygon.ring_index(f))
+        {
             use super::kernel::strictly_between;
             for (edge, (s, t), v) in [
                 (e, (a, b), f),
