@@ -37,9 +37,8 @@
 //! holes into s > 1 outer rings O(h n).
 
 use super::kernel::{cmp_angle_from, cross, line_through, on_segment, Area, Coord, Point};
-use super::polygon::{dropped, to_grid, AnyPolygon, Grid, Polygon, Ring, Warning};
+use super::polygon::{dropped, to_grid, wide_points, AnyPolygon, Grid, Polygon, Ring, Warning};
 use super::validate::{folds_back, vertices_on_edges, InvalidPolygon};
-use super::wide::WidePoint;
 use crate::io::read::RawPolygon;
 use serde::Serialize;
 use std::collections::HashMap;
@@ -132,13 +131,7 @@ pub fn repair_raw(raw: &RawPolygon) -> Result<Pieces, InvalidPolygon> {
     match to_grid(raw) {
         Ok((points, grid)) => repair_points(raw, points, grid),
         Err(InvalidPolygon::CoordinatesTooLarge { .. }) => {
-            let points = raw
-                .rings
-                .iter()
-                .flatten()
-                .map(|[x, y]| WidePoint::new(*x, *y))
-                .collect();
-            repair_points(raw, points, Grid::identity())
+            repair_points(raw, wide_points(raw), Grid::identity())
         }
         Err(e) => Err(e),
     }
