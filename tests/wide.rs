@@ -336,21 +336,8 @@ fn touching_rings_and_repairs_give_the_same_outcomes_on_wide_grids() {
             continue;
         };
         let fast = crate::touching::raw(&rings);
-        let moved = |f: &dyn Fn(i64) -> String| RawPolygon {
-            rings: rings
-                .iter()
-                .map(|r| {
-                    r.iter()
-                        .map(|&(x, y)| {
-                            [
-                                Decimal::parse(&f(x)).unwrap(),
-                                Decimal::parse(&f(y)).unwrap(),
-                            ]
-                        })
-                        .collect()
-                })
-                .collect(),
-        };
+        let refs: Vec<&[(i64, i64)]> = rings.iter().map(|r| &r[..]).collect();
+        let moved = |f: &dyn Fn(i64) -> String| written(&refs, f);
         let shifted = moved(&|v| format!("{v}.00000000000000000001"));
         let tiny = moved(&|v| format!("{v}.00000000000000000001e-200"));
         let Ok((p, _)) = AnyPolygon::from_raw(&fast) else {

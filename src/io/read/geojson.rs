@@ -64,23 +64,8 @@ const MAX_DEPTH: usize = 64;
 /// # Ok::<(), minitri::io::read::ParseError>(())
 /// ```
 pub fn read(text: &str) -> Result<Vec<RawPolygon>, ParseError> {
-    let (values, several) = values(text)?;
-    let mut polygons = Vec::new();
-    for (start, value) in values {
-        let mut parts = Vec::new();
-        let located = |failure: Failure| ParseError {
-            location: several.then(|| locate(text, start)),
-            message: failure.to_string(),
-        };
-        top_level(value, &mut parts).map_err(located)?;
-        for part in parts {
-            polygons.push(part.map_err(located)?);
-        }
-    }
-    if polygons.is_empty() {
-        return Err(no_polygon());
-    }
-    Ok(polygons)
+    // All or nothing: the first failed part is the error.
+    read_parts(text)?.into_iter().collect()
 }
 
 /// Reads every part of a GeoJSON text: its polygons, and each member of a GeometryCollection
