@@ -119,12 +119,28 @@ impl Degenerate {
 /// Whether `b` is reflex (to be searched); a flat `b` adds its one triangle to `out` instead, and
 /// a convex `b` is the middle of nothing (no two opposite directions fit in its angle).
 fn reflex_or_flat<P: Coord>(polygon: &Polygon<P>, b: usize, out: &mut Vec<Degenerate>) -> bool {
-    let (p, q) = (polygon.prev(b), polygon.next(b));
-    let turn = cross(polygon.point(p), polygon.point(b), polygon.point(q));
+    let turn = turn_at(polygon, b);
     if turn == 0 {
-        out.push(Degenerate::new(polygon, p, b, q));
+        out.push(Degenerate::new(
+            polygon,
+            polygon.prev(b),
+            b,
+            polygon.next(b),
+        ));
     }
     turn < 0
+}
+
+/// Whether `b` can be the middle of a minimally degenerate triangle: its angle is 180 degrees
+/// or more (reflex or flat).
+pub fn can_be_middle<P: Coord>(polygon: &Polygon<P>, b: usize) -> bool {
+    turn_at(polygon, b) <= 0
+}
+
+/// The turn at `b` (positive: convex, interior on the left of every edge).
+fn turn_at<P: Coord>(polygon: &Polygon<P>, b: usize) -> i128 {
+    let (p, q) = (polygon.prev(b), polygon.next(b));
+    cross(polygon.point(p), polygon.point(b), polygon.point(q))
 }
 
 /// The most edge flips made per vertex to fatten the triangulation walked: a bound, since the

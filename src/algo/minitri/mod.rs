@@ -118,22 +118,14 @@ pub fn triangulate_general<P: Coord>(
 ) -> Result<Triangulation, TriangulateError> {
     let (mut mdts, base, complete) =
         degenerate::minimally_degenerate_and_mesh_until(polygon, deadline);
-    // An upper bound on `d` over ALL the minimally degenerate triangles: their distinct middles,
-    // or, when some were not looked for, every vertex that could be one (angle of 180 degrees
-    // or more).
-    let all_middles = if complete {
-        let mut middles: Vec<usize> = mdts.iter().map(|m| m.b).collect();
-        middles.sort_unstable();
-        middles.dedup();
-        middles.len()
-    } else {
+    // Once the search may not see every minimally degenerate triangle, an upper bound on `d`
+    // over ALL of them: every vertex that could be a middle (angle of 180 degrees or more) when
+    // some were not looked for, else their distinct middles (taken before any is dropped).
+    let mut d_all = (!complete).then(|| {
         (0..polygon.len())
-            .filter(|&v| {
-                let p = |i: usize| polygon.point(i);
-                P::cross(p(polygon.prev(v)), p(v), p(polygon.next(v))) <= 0
-            })
+            .filter(|&v| degenerate::can_be_middle(polygon, v))
             .count()
-    };
+    });
     let mut stopped = (!complete).then_some(Stopped::TimeLimit);
     let mut sorted = false;
     let graph = loop {
@@ -147,14 +139,13 @@ pub fn triangulate_general<P: Coord>(
             break graph;
         }
         let late = deadline.is_some_and(|d| Instant::now() >= d);
-        if stopped.is_none() {
-            stopped = Some(if late {
-                Stopped::TimeLimit
-            } else {
-                Stopped::GraphSize
-            });
-        }
+        stopped.get_or_insert(if late {
+            Stopped::TimeLimit
+        } else {
+            Stopped::GraphSize
+        });
         if !sorted {
+            d_all.get_or_insert_with(|| distinct_middles(&mdts));
             mdts.sort_by(|m, o| extent(polygon, m).total_cmp(&extent(polygon, o)));
             sorted = true;
         }
@@ -164,11 +155,7 @@ pub fn triangulate_general<P: Coord>(
     let found = branch_and_bound::maximum_independent_set_labelled(&graph, &middles, deadline);
     let chosen: Vec<degenerate::Degenerate> = found.set.iter().map(|&t| mdts[t]).collect();
     let triangles = cut::triangulate_with_cuts(polygon, base, &chosen)?;
-    let d_upper = match stopped {
-        None => found.upper_bound,
-        Some(_) => all_middles,
-    };
-    let lower = lower_bound(polygon, d_upper);
+    let lower = lower_bound(polygon, d_all.unwrap_or(found.upper_bound));
     // A search cut short whose bound meets its count has found the minimum all the same.
     let stopped = stopped.or(found.stopped);
     let optimal = stopped.is_none() || lower >= triangles.len();
@@ -185,6 +172,14 @@ pub fn triangulate_general<P: Coord>(
 /// The pairs the dependency graph may compare per try once the deadline has passed: about
 /// 10 ms of work.
 pub const LATE_PAIRS: u64 = 1 << 20;
+
+/// The number of distinct middle vertices of `mdts`.
+fn distinct_middles(mdts: &[degenerate::Degenerate]) -> usize {
+    let mut middles: Vec<usize> = mdts.iter().map(|m| m.b).collect();
+    middles.sort_unstable();
+    middles.dedup();
+    middles.len()
+}
 
 /// How far a triangle's long side reaches, roughly: `|dx| + |dy|` in floating point (shorter
 /// triangles cross fewer others). Only an order of preference: any subset gives a valid answer.
