@@ -37,6 +37,7 @@ use super::{Algorithm, TriangulateError, Triangulation};
 use crate::geom::kernel::cross;
 use crate::geom::kernel::Coord;
 use crate::geom::polygon::Polygon;
+use std::time::Instant;
 
 /// The default largest number of vertices the DP accepts (at most about 6 s and 75 MB at 3000).
 pub const DEFAULT_LIMIT: usize = 3000;
@@ -76,7 +77,7 @@ pub fn triangulate<P: Coord>(
 ) -> Result<Triangulation, TriangulateError> {
     let n = polygon.len();
     if polygon.touches() > 0 {
-        return super::touching(polygon, Algorithm::Asano);
+        return super::touching(polygon, Algorithm::Asano, limit, None);
     }
     if polygon.holes() > 0 {
         return super::asano_holes::triangulate(polygon, limit);
@@ -97,6 +98,7 @@ pub fn triangulate<P: Coord>(
         |i| polygon.point(i),
         |i, j| chords.is_chord(i, j),
         |i| chords.lines_through(i),
+        None,
     )
     .expect("`n-1 -> 0` is an edge, so the whole polygon always has a triangulation");
     let degenerate = super::t_junctions(polygon, &walk.triangles);
@@ -132,12 +134,14 @@ pub(crate) struct WalkTriangulation {
 /// through `p` (equal for `q` and `r` exactly when `p`, `q`, `r` are collinear; `q` at `p`'s
 /// own point must get a number no other position on a line through `p` gets).
 ///
-/// Returns `None` when the walk has no triangulation (cannot happen for a valid walk).
+/// Returns `None` when the walk has no triangulation (cannot happen for a valid walk), or when
+/// `deadline` passes (read once per chord length, i.e. every O(m^2) steps at most).
 pub(crate) fn solve_walk<'a, P: Coord>(
     m: usize,
     point: impl Fn(usize) -> P,
     is_chord: impl Fn(usize, usize) -> bool,
     lines_through: impl Fn(usize) -> &'a [u16],
+    deadline: Option<Instant>,
 ) -> Option<WalkTriangulation> {
     let n = m;
     let at = |i: usize, j: usize| i * n + j;
@@ -149,6 +153,9 @@ pub(crate) fn solve_walk<'a, P: Coord>(
         cost_t[at(i + 1, i)] = 0;
     }
     for gap in 2..n {
+        if deadline.is_some_and(|d| Instant::now() >= d) {
+            return None;
+        }
         for i in 0..n - gap {
             let j = i + gap;
             if !is_chord(i, j) {

@@ -333,6 +333,7 @@ impl<'a, P: Coord> Cutter<'a, P> {
             |p| self.point(walk[p]),
             |p, q| chord[p * m + q],
             |p| &lines[p * m..(p + 1) * m],
+            None,
         ) else {
             return;
         };

@@ -14,7 +14,8 @@
 //! common ray is the same). At each direction, edges ending there leave first, then the nearest
 //! edge cut by the ray bounds what is visible, then edges starting there enter. Walking out along
 //! the ray through the vertices in that direction applies (1) and (3) with the exact wedge test.
-//! Works for polygons with holes as well (all rings' edges take part).
+//! Works for polygons with holes as well (all rings' edges take part), and for the boundary walks
+//! of touching rings, where a point may hold several stored vertices ([`walk_out`]).
 //!
 //! The same angular order also numbers the lines through each vertex ([`ChordTable::line`]):
 //! `k` lies on the line through `i` and `j` exactly when `line(i, k) == line(i, j)`, which
@@ -65,7 +66,8 @@ impl ChordTable {
     }
 
     /// The number of the line through vertices `i` and `k` among the lines through `i`: equal
-    /// for `k` and `j` exactly when `i`, `k`, `j` are collinear. Zero for `k == i`.
+    /// for `k` and `j` exactly when `i`, `k`, `j` are collinear. Zero for `k == i`; a copy of
+    /// `i`'s point (touching rings) has a number no other vertex has.
     #[inline]
     pub fn line(&self, i: usize, k: usize) -> u16 {
         self.lines[i * self.n + k]
@@ -164,6 +166,12 @@ fn number_lines<P: Coord>(polygon: &Polygon<P>, v: usize, order: &[usize], out: 
             out[u] = next_id;
         }
     }
+    // Copies of `v`'s point lie on no line through `v` with any other vertex: numbers of their
+    // own (as `solve_walk` requires).
+    for u in (0..polygon.len()).filter(|&u| u != v && polygon.point(u) == c) {
+        next_id += 1;
+        out[u] = next_id;
+    }
 }
 
 /// Fills `out` with the vertices `u` such that `v u` is a chord; returns all other vertices
@@ -179,7 +187,11 @@ pub(crate) fn visible_from<P: Coord>(
         polygon.point(polygon.prev(v)),
         polygon.point(polygon.next(v)),
     );
-    let mut order: Vec<usize> = (0..polygon.len()).filter(|&u| u != v).collect();
+    // Copies of `v`'s point (touching rings: one stored vertex per interior sector) are never
+    // joined to `v` (a zero-length segment); every other vertex has a direction from `c`.
+    let mut order: Vec<usize> = (0..polygon.len())
+        .filter(|&u| polygon.point(u) != c)
+        .collect();
     order.sort_unstable_by(|&a, &b| {
         let (pa, pb) = (polygon.point(a), polygon.point(b));
         cmp_angle(c, pa, pb).then_with(|| P::cmp_dist(c, pa, pb))
@@ -229,25 +241,7 @@ pub(crate) fn visible_from<P: Coord>(
             }
         }
         if in_closed_wedge(vp, c, vn, first) {
-            let nearest = status.first();
-            for (idx, &u) in group.iter().enumerate() {
-                let p = polygon.point(u);
-                if nearest.is_some_and(|k| cross(k.a, k.b, p) < 0) {
-                    break; // an edge crosses the segment before u
-                }
-                let (up, un) = (
-                    polygon.point(polygon.prev(u)),
-                    polygon.point(polygon.next(u)),
-                );
-                if !in_closed_wedge(up, p, un, c) {
-                    break;
-                }
-                out.push(u);
-                match group.get(idx + 1) {
-                    Some(&w) if in_closed_wedge(up, p, un, polygon.point(w)) => {}
-                    _ => break,
-                }
-            }
+            walk_out(polygon, c, group, status.first(), out);
         }
         for &u in group {
             for e in [polygon.prev(u), u] {
@@ -261,6 +255,54 @@ pub(crate) fn visible_from<P: Coord>(
         start = end;
     }
     order
+}
+
+/// Walks out from `c` along one direction through `group` (the vertices there, sorted by
+/// distance), pushing onto `out` each vertex `u` such that `c u` is a chord, given `nearest`, the
+/// nearest edge cut by the ray in its interior. A point may hold several stored vertices (the
+/// copies of a touch point, each with its own angle): each copy whose closed angle holds the
+/// direction back to `c` is seen, and the segment goes on beyond the point only through a copy
+/// whose closed angle holds both directions (`crate::algo::walks::is_chord`'s definition; with
+/// one vertex per point, as in a simple polygon, this is the plain test).
+fn walk_out<P: Coord>(
+    polygon: &Polygon<P>,
+    c: P,
+    group: &[usize],
+    nearest: Option<&Cut<P>>,
+    out: &mut Vec<usize>,
+) {
+    let wedge = |u: usize, target: P| {
+        in_closed_wedge(
+            polygon.point(polygon.prev(u)),
+            polygon.point(u),
+            polygon.point(polygon.next(u)),
+            target,
+        )
+    };
+    let mut start = 0;
+    while start < group.len() {
+        let p = polygon.point(group[start]);
+        if nearest.is_some_and(|k| cross(k.a, k.b, p) < 0) {
+            return; // an edge crosses the segment before p
+        }
+        let end = start
+            + group[start..]
+                .iter()
+                .take_while(|&&u| polygon.point(u) == p)
+                .count();
+        let beyond = group.get(end).map(|&w| polygon.point(w));
+        let mut through = false;
+        for &u in &group[start..end] {
+            if wedge(u, c) {
+                out.push(u);
+                through |= beyond.is_some_and(|b| wedge(u, b));
+            }
+        }
+        if !through {
+            return;
+        }
+        start = end;
+    }
 }
 
 /// The chord test straight from the definition, in O(n) per pair (the sweep's test oracle).

@@ -55,7 +55,7 @@ use crate::geom::polygon::Polygon;
 /// ```
 pub fn triangulate<P: Coord>(polygon: &Polygon<P>) -> Result<Triangulation, TriangulateError> {
     if polygon.touches() > 0 {
-        return super::touching(polygon, Algorithm::Ear);
+        return super::touching(polygon, Algorithm::Ear, 0, None);
     }
     Ok(Triangulation {
         algorithm: Algorithm::Ear,

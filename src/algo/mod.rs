@@ -25,6 +25,7 @@ pub mod walks;
 
 use crate::geom::kernel::Coord;
 use std::cmp::Ordering;
+use std::time::Instant;
 use std::fmt;
 
 /// Which algorithm made (or should make) a triangulation.
@@ -375,18 +376,38 @@ pub(crate) fn plain_polygon_for_walking<P: Coord>(polygon: &crate::Polygon<P>) -
 pub(crate) fn touching<P: Coord>(
     polygon: &crate::Polygon<P>,
     algorithm: Algorithm,
+    limit: usize,
+    deadline: Option<std::time::Instant>,
 ) -> Result<Triangulation, TriangulateError> {
+    let mut why = Stopped::Touching;
     if algorithm.is_minimum() {
-        if let Some((triangles, degenerate)) = walks::minimum(polygon) {
-            return Ok(Triangulation {
-                algorithm,
-                triangles,
-                degenerate,
-                optimal: true,
-                lower_bound: None,
-                stopped: None,
-            });
+        match walks::minimum(polygon, limit, deadline) {
+            Ok((triangles, degenerate)) => {
+                return Ok(Triangulation {
+                    algorithm,
+                    triangles,
+                    degenerate,
+                    optimal: true,
+                    lower_bound: None,
+                    stopped: None,
+                })
+            }
+            Err(stopped) => why = stopped,
         }
+    }
+    // Otherwise the general method on the walks (Chen & Chang's steps with the exact search),
+    // kept when its search finished; else the better of it and the flattened walk.
+    let mut general = algorithm
+        .is_minimum()
+        .then(|| {
+            let deadline =
+                deadline.or_else(|| Instant::now().checked_add(minitri::DEFAULT_TIME_LIMIT));
+            minitri::triangulate_walks(polygon, deadline).ok()
+        })
+        .flatten()
+        .map(|t| Triangulation { algorithm, ..t });
+    if let Some(t) = general.take_if(|t| t.optimal) {
+        return Ok(t);
     }
     let flattened = algorithm
         .is_minimum()
@@ -400,7 +421,19 @@ pub(crate) fn touching<P: Coord>(
             Vec::new(),
         ),
     };
-    let lower = polygon.minimum_bounds().0;
+    let mut lower = polygon.minimum_bounds().0;
+    let (triangles, degenerate) = match general {
+        Some(t) => {
+            lower = lower.max(t.lower_bound.unwrap_or(0));
+            why = t.stopped.unwrap_or(why);
+            if t.triangles.len() < triangles.len() {
+                (t.triangles, t.degenerate)
+            } else {
+                (triangles, degenerate)
+            }
+        }
+        None => (triangles, degenerate),
+    };
     let optimal = algorithm.is_minimum() && triangles.len() <= lower;
     Ok(Triangulation {
         algorithm,
@@ -408,7 +441,7 @@ pub(crate) fn touching<P: Coord>(
         degenerate,
         optimal,
         lower_bound: (algorithm.is_minimum() && !optimal).then_some(lower),
-        stopped: (algorithm.is_minimum() && !optimal).then_some(Stopped::Touching),
+        stopped: (algorithm.is_minimum() && !optimal).then_some(why),
     })
 }
 

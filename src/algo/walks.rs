@@ -52,16 +52,21 @@
 //! sweep do not yet run on walks.
 
 use super::asano::solve_walk;
+use super::chords::ChordTable;
+use super::Stopped;
 use crate::geom::kernel::{cross, dot, in_closed_wedge, properly_cross, strictly_between, Coord};
 use crate::geom::polygon::Polygon;
+#[cfg(test)]
 use std::collections::HashMap;
+use std::time::Instant;
 
 /// Triangles as stored vertex indices.
 pub type Triangles = Vec<[usize; 3]>;
 
-/// The largest walk (stored vertices, copies counted) [`minimum`] takes: its chord table costs
-/// O(n^3) direct tests.
-pub const WALK_DP_LIMIT: usize = 300;
+/// The largest walk (stored vertices, copies counted) [`minimum`] ever takes: the DP's tables
+/// (`u16` entries; 8 n^2 bytes, 72 MB here) and O(n^3) time (about 6 s here), the limit of the
+/// DP for simple polygons ([`super::asano::DEFAULT_LIMIT`]).
+pub const WALK_DP_LIMIT: usize = super::asano::DEFAULT_LIMIT;
 
 /// The largest bridged cycle (positions) [`flattened`] clips in both orders, keeping the better;
 /// beyond, the greedy order only (each clipping costs O(n^2) in practice).
@@ -315,7 +320,9 @@ fn clip<P: Coord>(
 }
 
 /// Whether the segment between stored vertices `i` and `j` is a chord of the walks (see the
-/// module documentation; it may run along edges and pass vertices).
+/// module documentation; it may run along edges and pass vertices), straight from the
+/// definition in O(n): the test oracle of the chord table's sweep on walks.
+#[cfg(test)]
 pub(crate) fn is_chord<P: Coord>(polygon: &Polygon<P>, i: usize, j: usize) -> bool {
     let (a, b) = (polygon.point(i), polygon.point(j));
     if a == b {
@@ -346,68 +353,42 @@ pub(crate) fn is_chord<P: Coord>(polygon: &Polygon<P>, i: usize, j: usize) -> bo
     passed.values().all(|&ok| ok)
 }
 
-/// The exact minimum triangulation of a polygon whose rings all join the outer ring (one walk,
-/// at most [`WALK_DP_LIMIT`] stored vertices): the nondegenerate triangles and the degenerate
-/// ones (as [`super::Triangulation`] has them), or `None` beyond the limit or with hole walks.
-pub fn minimum<P: Coord>(polygon: &Polygon<P>) -> Option<(Triangles, Triangles)> {
+/// The exact minimum triangulation of a polygon whose rings all join the outer ring (one walk)
+/// of at most `limit` stored vertices: the nondegenerate triangles and the degenerate ones (as
+/// [`super::Triangulation`] has them). `Err(Stopped::Touching)` with hole walks or beyond
+/// `limit`, `Err(Stopped::TimeLimit)` when `deadline` passes first.
+///
+/// # Errors
+/// As above; the caller then takes [`flattened`].
+pub fn minimum<P: Coord>(
+    polygon: &Polygon<P>,
+    limit: usize,
+    deadline: Option<Instant>,
+) -> Result<(Triangles, Triangles), Stopped> {
     let n = polygon.len();
-    if polygon.holes() > 0 || n > WALK_DP_LIMIT {
-        return None;
+    if polygon.holes() > 0 || n > limit.min(WALK_DP_LIMIT) {
+        return Err(Stopped::Touching);
     }
-    let mut chord = vec![false; n * n];
-    for i in 0..n {
-        for j in i + 2..n {
-            let c = is_chord(polygon, i, j);
-            chord[i * n + j] = c;
-            chord[j * n + i] = c;
-        }
-    }
-    let lines: Vec<Vec<u16>> = (0..n).map(|i| lines_through(polygon, i)).collect();
+    let chords = ChordTable::new(polygon);
     let walk = solve_walk(
         n,
         |i| polygon.point(i),
-        |i, j| chord[i * n + j],
-        |i| &lines[i],
-    )?;
+        |i, j| chords.is_chord(i, j),
+        |i| chords.lines_through(i),
+        deadline,
+    );
+    let Some(walk) = walk else {
+        return Err(if deadline.is_some_and(|d| Instant::now() >= d) {
+            Stopped::TimeLimit
+        } else {
+            Stopped::Touching // not seen: a valid walk always has a triangulation
+        });
+    };
     let degenerate = t_junctions(polygon, &walk.triangles);
     if degenerate.len() != walk.dummies {
-        return None; // not seen; the caller falls back to the plain triangulation
+        return Err(Stopped::Touching); // not seen; the caller falls back
     }
-    Some((walk.triangles, degenerate))
-}
-
-/// Line numbers through stored vertex `i` (as `solve_walk` wants them: equal for `q` and `r`
-/// exactly when `i`, `q`, `r` are collinear; vertices at `i`'s own point get numbers of their
-/// own).
-fn lines_through<P: Coord>(polygon: &Polygon<P>, i: usize) -> Vec<u16> {
-    let n = polygon.len();
-    let c = polygon.point(i);
-    // Each direction turned into the upper half-plane, so opposite directions are one line.
-    let key = |q: usize| {
-        let p = polygon.point(q);
-        let v = P::vector(c, p);
-        let below = P::cmp_y(p, c).then(P::cmp_x(p, c)).is_lt();
-        if below {
-            P::reversed(v)
-        } else {
-            v
-        }
-    };
-    let mut others: Vec<usize> = (0..n).filter(|&q| polygon.point(q) != c).collect();
-    others.sort_by(|&q, &r| 0.cmp(&P::vector_cross(key(q), key(r)).signum()));
-    let mut out = vec![0u16; n];
-    let mut line = 0u16;
-    for (k, &q) in others.iter().enumerate() {
-        if k > 0 && P::vector_cross(key(others[k - 1]), key(q)) != 0 {
-            line += 1;
-        }
-        out[q] = line;
-    }
-    for q in (0..n).filter(|&q| polygon.point(q) == c) {
-        line += 1;
-        out[q] = line;
-    }
-    out
+    Ok((walk.triangles, degenerate))
 }
 
 /// The degenerate triangles a set of triangles of the walks uses: for each triangle side and
@@ -458,4 +439,94 @@ fn junctions_among<P: Coord>(
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::test_support::{raw, xorshift};
+
+    /// Random touching polygons on the grid 0..=8: a square with a few vertices added, and 1 to
+    /// 4 small holes whose corners are often vertices of the rings so far (touches, several
+    /// rings at one point, chains of holes, hole walks left). Only the valid ones with touches
+    /// are kept.
+    fn random_touching(rnd: &mut impl FnMut(i64) -> i64) -> Option<Polygon> {
+        let mut outer = vec![(0, 0), (8, 0), (8, 8), (0, 8)];
+        for _ in 0..rnd(5) {
+            let mut next = outer.clone();
+            next.insert(rnd(outer.len() as i64) as usize + 1, (rnd(9), rnd(9)));
+            if Polygon::from_raw(&raw(&[&next])).is_ok() {
+                outer = next;
+            }
+        }
+        let mut rings = vec![outer];
+        for _ in 0..1 + rnd(4) {
+            let existing: Vec<(i64, i64)> = rings.iter().flatten().copied().collect();
+            let anchor = if rnd(2) == 0 {
+                (1 + rnd(7), 1 + rnd(7))
+            } else {
+                existing[rnd(existing.len() as i64) as usize]
+            };
+            let mut hole = vec![anchor];
+            for _ in 0..2 + rnd(2) {
+                let p = if rnd(5) == 0 {
+                    existing[rnd(existing.len() as i64) as usize]
+                } else {
+                    (
+                        (anchor.0 + rnd(5) - 2).clamp(0, 8),
+                        (anchor.1 + rnd(5) - 2).clamp(0, 8),
+                    )
+                };
+                if !hole.contains(&p) {
+                    hole.push(p);
+                }
+            }
+            rings.push(hole);
+        }
+        let rings: Vec<&[(i64, i64)]> = rings.iter().map(Vec::as_slice).collect();
+        let (p, _) = Polygon::from_raw(&raw(&rings)).ok()?;
+        (p.touches() > 0).then_some(p)
+    }
+
+    #[test]
+    fn the_chord_sweep_matches_the_definition_on_touching_walks() {
+        let mut rnd = xorshift(0xc40d_5eed);
+        let (mut checked, mut one_walk, mut pairs) = (0, 0, 0);
+        while checked < 1500 {
+            let Some(p) = random_touching(&mut rnd) else {
+                continue;
+            };
+            checked += 1;
+            one_walk += usize::from(p.holes() == 0);
+            let table = ChordTable::new(&p);
+            for i in 0..p.len() {
+                for j in 0..p.len() {
+                    if i == j {
+                        continue;
+                    }
+                    pairs += 1;
+                    assert_eq!(
+                        table.is_chord(i, j),
+                        is_chord(&p, i, j),
+                        "{i}-{j} in {:?}",
+                        p.points()
+                    );
+                    for k in (0..p.len()).filter(|&k| k != i && k != j) {
+                        let (a, b, c) = (p.point(i), p.point(j), p.point(k));
+                        let collinear = a != b && a != c && cross(a, b, c) == 0;
+                        assert_eq!(
+                            table.line(i, k) == table.line(i, j),
+                            collinear,
+                            "lines {i} {j} {k} in {:?}",
+                            p.points()
+                        );
+                    }
+                }
+            }
+        }
+        assert!(
+            one_walk > 500 && checked - one_walk > 100 && pairs > 100_000,
+            "{checked} {one_walk} {pairs}"
+        );
+    }
 }

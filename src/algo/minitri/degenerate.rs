@@ -281,10 +281,27 @@ fn search_from<P: Coord>(
 /// The same triangles by an angular visibility sweep around every reflex vertex: O(r n log n).
 /// The reference for tests of [`minimally_degenerate`].
 pub fn minimally_degenerate_by_sweep<P: Coord>(polygon: &Polygon<P>) -> Vec<Degenerate> {
+    minimally_degenerate_by_sweep_until(polygon, None).0
+}
+
+/// [`minimally_degenerate_by_sweep`], stopping at `deadline` (read before every 16th middle
+/// vertex): the triangles found, and whether the search finished. It also takes the boundary
+/// walks of touching rings (`crate::algo::walks`): the chord sweep ([`visible_from`]) handles
+/// the copies of a touch point, and of the copies at the nearest point in a direction, the one
+/// seen is the triangle's end (at most one is: the copies' closed angles are disjoint away from
+/// the point). This is step 1 for touching rings, where the plain triangulation walked by
+/// [`minimally_degenerate`] would have to go round touch points.
+pub fn minimally_degenerate_by_sweep_until<P: Coord>(
+    polygon: &Polygon<P>,
+    deadline: Option<std::time::Instant>,
+) -> (Vec<Degenerate>, bool) {
     let mut out = Vec::new();
     let mut visible = Vec::new();
     let mut seen = vec![false; polygon.len()];
     for b in 0..polygon.len() {
+        if b % 16 == 0 && deadline.is_some_and(|d| std::time::Instant::now() >= d) {
+            return (out, false);
+        }
         if !reflex_or_flat(polygon, b, &mut out) {
             continue;
         }
@@ -292,17 +309,24 @@ pub fn minimally_degenerate_by_sweep<P: Coord>(polygon: &Polygon<P>) -> Vec<Dege
         for &u in &visible {
             seen[u] = true;
         }
-        // The nearest vertex of each direction around b, if it is seen along a chord.
+        // The nearest point of each direction around b, if a vertex there is seen along a
+        // chord (one of its copies, for a touch point).
         let c = polygon.point(b);
         let mut nearest: Vec<usize> = Vec::new();
-        let mut last: Option<usize> = None;
+        let mut first: Option<usize> = None;
         for &u in &order {
-            if last.is_some_and(|l| {
+            let same_direction = first.is_some_and(|l| {
                 cmp_angle(c, polygon.point(l), polygon.point(u)) == Ordering::Equal
-            }) {
+            });
+            if same_direction {
+                let at_first = first.is_some_and(|l| polygon.point(l) == polygon.point(u));
+                if at_first && seen[u] && nearest.last() != first.as_ref() {
+                    nearest.push(u);
+                    first = Some(u);
+                }
                 continue;
             }
-            last = Some(u);
+            first = Some(u);
             if seen[u] {
                 nearest.push(u);
             }
@@ -324,5 +348,5 @@ pub fn minimally_degenerate_by_sweep<P: Coord>(polygon: &Polygon<P>) -> Vec<Dege
             }
         }
     }
-    out
+    (out, true)
 }

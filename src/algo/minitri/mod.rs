@@ -29,7 +29,7 @@ pub mod partition;
 pub mod small;
 mod staircase;
 
-use super::{Algorithm, Stopped, TriangulateError, Triangulation};
+use super::{walks, Algorithm, Stopped, TriangulateError, Triangulation};
 use crate::geom::kernel::Coord;
 use crate::geom::polygon::Polygon;
 use std::time::{Duration, Instant};
@@ -57,7 +57,7 @@ pub fn triangulate_within<P: Coord>(
     deadline: Option<Instant>,
 ) -> Result<Triangulation, TriangulateError> {
     if polygon.touches() > 0 {
-        return super::touching(polygon, Algorithm::Minitri);
+        return super::touching(polygon, Algorithm::Minitri, walks::WALK_DP_LIMIT, deadline);
     }
     if polygon.holes() > 0 {
         return triangulate_general(polygon, deadline);
@@ -116,8 +116,45 @@ pub fn triangulate_general<P: Coord>(
     polygon: &Polygon<P>,
     deadline: Option<Instant>,
 ) -> Result<Triangulation, TriangulateError> {
-    let (mut mdts, base, complete) =
-        degenerate::minimally_degenerate_and_mesh_until(polygon, deadline);
+    let (mdts, base, complete) = degenerate::minimally_degenerate_and_mesh_until(polygon, deadline);
+    general_from(polygon, mdts, base, complete, deadline)
+}
+
+/// [`triangulate_general`] on the boundary walks of touching rings (`crate::algo::walks`,
+/// `docs/touching.md`): step 1 by the angular sweep around each possible middle vertex
+/// ([`degenerate::minimally_degenerate_by_sweep_until`], O(r n log n), which handles the copies
+/// of touch points), and the plain triangulation of the walks ([`walks::plain`]) as the one the
+/// chosen triangles are cut into. The dependency graph, the search and the cut step work on
+/// stored vertices (a copy is a vertex of its own) and take walks as they are: at a touch point
+/// at most one copy can be a middle (its angle is 180 degrees or more; the copies' angles are
+/// disjoint), and a triangle ending at another copy of a middle's point comes from the side
+/// that is not straight, so Theorem 1's cases apply unchanged. The count is
+/// `N + 2(w - t) - 2 - d` (`docs/touching.md`); the tests compare it with an exhaustive search.
+///
+/// # Errors
+/// [`TriangulateError::Touching`] if the walks' plain triangulation fails, and those of
+/// [`triangulate_general`] (neither seen in the tests).
+pub fn triangulate_walks<P: Coord>(
+    polygon: &Polygon<P>,
+    deadline: Option<Instant>,
+) -> Result<Triangulation, TriangulateError> {
+    let base = walks::plain(polygon).map_err(|detail| TriangulateError::Touching {
+        algorithm: Algorithm::Minitri,
+        detail,
+    })?;
+    let (mdts, complete) = degenerate::minimally_degenerate_by_sweep_until(polygon, deadline);
+    general_from(polygon, mdts, base, complete, deadline)
+}
+
+/// Steps 2 to 5 of [`triangulate_general`], from the minimally degenerate triangles found
+/// (`complete`: all of them) and a plain triangulation `base`.
+fn general_from<P: Coord>(
+    polygon: &Polygon<P>,
+    mut mdts: Vec<degenerate::Degenerate>,
+    base: Vec<[usize; 3]>,
+    complete: bool,
+    deadline: Option<Instant>,
+) -> Result<Triangulation, TriangulateError> {
     // Once the search may not see every minimally degenerate triangle, an upper bound on `d`
     // over ALL of them: every vertex that could be a middle (angle of 180 degrees or more) when
     // some were not looked for, else their distinct middles (taken before any is dropped).
