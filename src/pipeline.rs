@@ -447,10 +447,13 @@ fn verify_all<P: Coord>(
             Err(e) => skipped.push(format!("{other}: {e}")),
         }
     }
-    let exact: Vec<(Algorithm, usize)> = outputs
+    let exact: Vec<(Algorithm, usize, Option<usize>)> = outputs
         .iter()
         .filter(|t| t.algorithm.is_minimum())
-        .map(|t| (t.algorithm, t.triangles.len()))
+        .map(|t| {
+            let lower = (!t.optimal).then(|| t.lower_bound.unwrap_or(0));
+            (t.algorithm, t.triangles.len(), lower)
+        })
         .collect();
     let checks: Vec<AlgorithmCheck> = outputs
         .into_iter()

@@ -124,24 +124,47 @@ pub fn check<P: Coord>(polygon: &Polygon<P>, t: &Triangulation) -> Check {
     problems.finish()
 }
 
-/// Compares the triangle counts of exact minimum algorithms on one polygon: `None` when they all
-/// agree, else a sentence such as `asano gives 5 triangles but minitri gives 6`. Entries of
-/// algorithms that do not compute a minimum ([`Algorithm::is_minimum`]) are ignored.
-pub fn agreement(results: &[(Algorithm, usize)]) -> Option<String> {
-    let mut exact = results.iter().filter(|(a, _)| a.is_minimum());
-    let &(first, count) = exact.next()?;
-    let others: Vec<String> = exact
-        .filter(|&&(_, c)| c != count)
-        .map(|&(a, c)| format!("{a} gives {c}"))
-        .collect();
-    if others.is_empty() {
-        return None;
+/// Compares the results of exact minimum algorithms on one polygon, each given as (algorithm,
+/// triangle count, lower bound): the bound is `None` when the algorithm proved its count
+/// minimum (`optimal`), else the bound it proved. `None` when they are consistent, else a
+/// sentence such as `asano gives 5 triangles but minitri gives 6`: two proved minimums differ,
+/// or a count lies below what another result proved (an optimal count is its own bound; two
+/// results cut short by a time limit may differ, as long as neither goes below the other's
+/// bound). Entries of algorithms that do not compute a minimum ([`Algorithm::is_minimum`]) are
+/// ignored.
+pub fn agreement(results: &[(Algorithm, usize, Option<usize>)]) -> Option<String> {
+    let exact: Vec<&(Algorithm, usize, Option<usize>)> =
+        results.iter().filter(|(a, _, _)| a.is_minimum()).collect();
+    let mut optimal = exact.iter().filter(|(_, _, lower)| lower.is_none());
+    if let Some(&&(first, count, _)) = optimal.next() {
+        let others: Vec<String> = optimal
+            .filter(|&&&(_, c, _)| c != count)
+            .map(|&&(a, c, _)| format!("{a} gives {c}"))
+            .collect();
+        if !others.is_empty() {
+            return Some(format!(
+                "{first} gives {} but {}",
+                plural(count, "triangle"),
+                others.join(" and ")
+            ));
+        }
     }
-    Some(format!(
-        "{first} gives {} but {}",
-        plural(count, "triangle"),
-        others.join(" and ")
-    ))
+    for &&(a, count, _) in &exact {
+        for &&(b, other, lower) in &exact {
+            let bound = lower.unwrap_or(other);
+            if count < bound {
+                let claim = match lower {
+                    None => format!("gives {other} as the minimum"),
+                    Some(l) => format!("proves at least {l}"),
+                };
+                return Some(format!(
+                    "{a} gives {} but {b} {claim}",
+                    plural(count, "triangle")
+                ));
+            }
+        }
+    }
+    None
 }
 
 /// Collects problems up to [`MAX_PROBLEMS`], counting the rest without formatting them, and

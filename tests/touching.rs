@@ -432,7 +432,10 @@ fn every_algorithm_triangulates_touching_rings_and_the_minimum_is_exact() {
             } else {
                 // One walk: the walk DP; hole walks left: the general method on the walks,
                 // whose search always finishes on polygons this small.
-                assert!(t.optimal && t.lower_bound.is_none(), "{rings:?} {algorithm}");
+                assert!(
+                    t.optimal && t.lower_bound.is_none(),
+                    "{rings:?} {algorithm}"
+                );
                 assert_eq!(t.triangles.len(), minimum, "{rings:?} {algorithm}");
             }
         }
@@ -604,4 +607,40 @@ fn rejections_name_rings_and_points() {
         m.contains("rings cross at a touch point") || m.contains("outside"),
         "{m}"
     );
+}
+
+/// Large polygons of one boundary walk (beyond the size where `minitri` runs the walk DP
+/// first): combs of triangular holes touching the outer ring's bottom edge, some with a second
+/// hole touching the first's corner, their tops on few lines (many degenerate triangles).
+/// `minitri`'s search on the walks and `asano`'s walk DP both prove their counts, and agree.
+#[test]
+fn large_single_walks_the_search_and_the_walk_dp_agree() {
+    let mut rnd = xorshift(0x00c0_4b5e);
+    for _ in 0..6 {
+        let k = 60 + rnd(40);
+        let mut rings: Rings = vec![vec![(0, 0), (10 * k + 10, 0), (10 * k + 10, 40), (0, 40)]];
+        for i in 1..=k {
+            let (x, h) = (10 * i, 3 + rnd(3));
+            let (a, b) = (1 + rnd(4), 1 + rnd(4));
+            rings.push(vec![(x, 0), (x - b, h), (x + a, h)]);
+            if rnd(2) == 0 {
+                let c = x - b;
+                rings.push(vec![(c, h), (c - 1, h + 2 + rnd(2)), (c + 1, h + 2)]);
+            }
+        }
+        let (p, _) = Polygon::from_raw(&raw(&rings)).expect("valid");
+        assert_eq!(p.holes(), 0, "one walk");
+        assert!(p.len() > 300);
+        let counts: Vec<usize> = [Algorithm::Minitri, Algorithm::Asano]
+            .into_iter()
+            .map(|algorithm| {
+                let t = minitri::triangulate(&p, algorithm).expect("triangulated");
+                assert!(t.optimal, "{algorithm}");
+                assert!(verify::check(&p, &t).valid, "{algorithm}");
+                t.triangles.len()
+            })
+            .collect();
+        assert_eq!(counts[0], counts[1]);
+        assert!(counts[0] < p.len() - 2, "T-junctions saved triangles");
+    }
 }

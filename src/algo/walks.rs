@@ -68,6 +68,11 @@ pub type Triangles = Vec<[usize; 3]>;
 /// DP for simple polygons ([`super::asano::DEFAULT_LIMIT`]).
 pub const WALK_DP_LIMIT: usize = super::asano::DEFAULT_LIMIT;
 
+/// The largest walk on which `minitri` runs the walk DP before its search (a few milliseconds
+/// here); on larger walks the search usually proves the minimum much sooner than the DP's
+/// O(n^3) (`super::touching`).
+pub const DP_FIRST_UP_TO: usize = 300;
+
 /// The largest bridged cycle (positions) [`flattened`] clips in both orders, keeping the better;
 /// beyond, the greedy order only (each clipping costs O(n^2) in practice).
 pub const BOTH_ORDERS_UP_TO: usize = 2000;
@@ -451,19 +456,37 @@ mod tests {
     /// rings at one point, chains of holes, hole walks left). Only the valid ones with touches
     /// are kept.
     fn random_touching(rnd: &mut impl FnMut(i64) -> i64) -> Option<Polygon> {
-        let mut outer = vec![(0, 0), (8, 0), (8, 8), (0, 8)];
-        for _ in 0..rnd(5) {
+        random_touching_sized(rnd, 8, 4)
+    }
+
+    fn valid(rings: &[Vec<(i64, i64)>]) -> Option<Polygon> {
+        let rings: Vec<&[(i64, i64)]> = rings.iter().map(Vec::as_slice).collect();
+        Polygon::from_raw(&raw(&rings)).ok().map(|(p, _)| p)
+    }
+
+    /// [`random_touching`] on the grid `0..=size` with up to `holes` holes.
+    fn random_touching_sized(
+        rnd: &mut impl FnMut(i64) -> i64,
+        size: i64,
+        holes: i64,
+    ) -> Option<Polygon> {
+        let mut outer = vec![(0, 0), (size, 0), (size, size), (0, size)];
+        for _ in 0..rnd(size - 3) {
             let mut next = outer.clone();
-            next.insert(rnd(outer.len() as i64) as usize + 1, (rnd(9), rnd(9)));
+            next.insert(
+                rnd(outer.len() as i64) as usize + 1,
+                (rnd(size + 1), rnd(size + 1)),
+            );
             if Polygon::from_raw(&raw(&[&next])).is_ok() {
                 outer = next;
             }
         }
         let mut rings = vec![outer];
-        for _ in 0..1 + rnd(4) {
+        let tries = if holes > 4 { holes } else { 1 + rnd(holes) };
+        for _ in 0..tries {
             let existing: Vec<(i64, i64)> = rings.iter().flatten().copied().collect();
             let anchor = if rnd(2) == 0 {
-                (1 + rnd(7), 1 + rnd(7))
+                (1 + rnd(size - 1), 1 + rnd(size - 1))
             } else {
                 existing[rnd(existing.len() as i64) as usize]
             };
@@ -473,8 +496,8 @@ mod tests {
                     existing[rnd(existing.len() as i64) as usize]
                 } else {
                     (
-                        (anchor.0 + rnd(5) - 2).clamp(0, 8),
-                        (anchor.1 + rnd(5) - 2).clamp(0, 8),
+                        (anchor.0 + rnd(5) - 2).clamp(0, size),
+                        (anchor.1 + rnd(5) - 2).clamp(0, size),
                     )
                 };
                 if !hole.contains(&p) {
@@ -482,9 +505,13 @@ mod tests {
                 }
             }
             rings.push(hole);
+            // Large ones keep a hole only if the polygon stays valid (one bad hole of many
+            // would make almost every try invalid).
+            if holes > 4 && valid(&rings).is_none() {
+                rings.pop();
+            }
         }
-        let rings: Vec<&[(i64, i64)]> = rings.iter().map(Vec::as_slice).collect();
-        let (p, _) = Polygon::from_raw(&raw(&rings)).ok()?;
+        let p = valid(&rings)?;
         (p.touches() > 0).then_some(p)
     }
 
@@ -528,5 +555,37 @@ mod tests {
             one_walk > 500 && checked - one_walk > 100 && pairs > 100_000,
             "{checked} {one_walk} {pairs}"
         );
+    }
+
+    #[test]
+    fn step_one_over_the_walks_mesh_matches_the_sweep() {
+        use crate::algo::minitri::degenerate::{
+            minimally_degenerate_by_sweep, minimally_degenerate_over_until,
+        };
+        let mut rnd = xorshift(0x57e9_0001);
+        let (mut checked, mut found, mut flipped) = (0, 0, 0);
+        while checked < 1800 {
+            // Small ones, and larger ones whose mesh is flipped before walking (48 vertices on).
+            let p = if checked < 1500 {
+                random_touching(&mut rnd)
+            } else {
+                random_touching_sized(&mut rnd, 30, 150)
+            };
+            let Some(p) = p else {
+                continue;
+            };
+            flipped += usize::from(p.len() >= 48);
+            checked += 1;
+            let key = |m: &crate::algo::minitri::degenerate::Degenerate| (m.a, m.b, m.c);
+            let mut swept = minimally_degenerate_by_sweep(&p);
+            let base = plain(&p).expect("plain");
+            let (mut walked, _, complete) = minimally_degenerate_over_until(&p, base, None);
+            assert!(complete);
+            swept.sort_by_key(key);
+            walked.sort_by_key(key);
+            assert_eq!(walked, swept, "{:?}", p.points());
+            found += swept.len();
+        }
+        assert!(found > 1000 && flipped > 100, "{found} {flipped}");
     }
 }

@@ -383,17 +383,35 @@ fn a_fan_of_a_convex_200000_gon_is_checked_quickly() {
 fn agreement_of_exact_algorithms() {
     use Algorithm::*;
     assert_eq!(agreement(&[]), None);
-    assert_eq!(agreement(&[(Minitri, 5), (Asano, 5)]), None);
+    assert_eq!(agreement(&[(Minitri, 5, None), (Asano, 5, None)]), None);
     assert_eq!(
-        agreement(&[(Asano, 5), (Minitri, 6)]).as_deref(),
+        agreement(&[(Asano, 5, None), (Minitri, 6, None)]).as_deref(),
         Some("asano gives 5 triangles but minitri gives 6")
     );
     assert_eq!(
-        agreement(&[(Minitri, 1), (Asano, 2)]).as_deref(),
+        agreement(&[(Minitri, 1, None), (Asano, 2, None)]).as_deref(),
         Some("minitri gives 1 triangle but asano gives 2")
     );
     // A plain triangulation is not a minimum and is not compared.
-    assert_eq!(agreement(&[(Ear, 7), (Minitri, 5), (Asano, 5)]), None);
+    assert_eq!(
+        agreement(&[(Ear, 7, None), (Minitri, 5, None), (Asano, 5, None)]),
+        None
+    );
+    // Searches cut short by the time limit may differ within each other's bounds...
+    assert_eq!(
+        agreement(&[(Minitri, 9, Some(7)), (Asano, 8, Some(6))]),
+        None
+    );
+    assert_eq!(agreement(&[(Minitri, 9, Some(7)), (Asano, 7, None)]), None);
+    // ...but no count may go below a bound another proved, or below a proved minimum.
+    assert_eq!(
+        agreement(&[(Minitri, 9, Some(7)), (Asano, 6, Some(5))]).as_deref(),
+        Some("asano gives 6 triangles but minitri proves at least 7")
+    );
+    assert_eq!(
+        agreement(&[(Minitri, 8, None), (Asano, 7, Some(5))]).as_deref(),
+        Some("asano gives 7 triangles but minitri gives 8 as the minimum")
+    );
 }
 
 fn faults(p: &Polygon, triangles: &[[usize; 3]], degenerate: &[[usize; 3]]) -> Faults {

@@ -178,7 +178,23 @@ pub fn minimally_degenerate_and_mesh_until<P: Coord>(
     polygon: &Polygon<P>,
     deadline: Option<std::time::Instant>,
 ) -> (Vec<Degenerate>, Vec<[usize; 3]>, bool) {
-    let mut mesh = Mesh::new(polygon, crate::algo::plain_polygon_for_walking(polygon));
+    let plain = crate::algo::plain_polygon_for_walking(polygon);
+    minimally_degenerate_over_until(polygon, plain, deadline)
+}
+
+/// [`minimally_degenerate_and_mesh_until`] over a given plain triangulation `plain` of the
+/// polygon (counter-clockwise triangles of stored vertices covering it). For touching rings,
+/// the walks' plain triangulation ([`crate::algo::walks::plain`]): a copy of a touch point is a
+/// vertex of its own with its own fan of triangles inside its sector, so the mesh is that of the
+/// polygon with each copy moved into its sector, and the expansion never passes through a
+/// vertex (it stops at the nearest one in each direction); the tests compare the result with
+/// [`minimally_degenerate_by_sweep`] on random touching polygons.
+pub fn minimally_degenerate_over_until<P: Coord>(
+    polygon: &Polygon<P>,
+    plain: Vec<[usize; 3]>,
+    deadline: Option<std::time::Instant>,
+) -> (Vec<Degenerate>, Vec<[usize; 3]>, bool) {
+    let mut mesh = Mesh::new(polygon, plain);
     if polygon.len() >= FLIPS_FROM {
         mesh.flip_towards_delaunay(polygon, FLIPS_PER_VERTEX * polygon.len());
     }

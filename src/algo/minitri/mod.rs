@@ -121,10 +121,10 @@ pub fn triangulate_general<P: Coord>(
 }
 
 /// [`triangulate_general`] on the boundary walks of touching rings (`crate::algo::walks`,
-/// `docs/touching.md`): step 1 by the angular sweep around each possible middle vertex
-/// ([`degenerate::minimally_degenerate_by_sweep_until`], O(r n log n), which handles the copies
-/// of touch points), and the plain triangulation of the walks ([`walks::plain`]) as the one the
-/// chosen triangles are cut into. The dependency graph, the search and the cut step work on
+/// `docs/touching.md`): step 1 by triangular expansion over the plain triangulation of the
+/// walks ([`walks::plain`]; [`degenerate::minimally_degenerate_over_until`], where a copy of a
+/// touch point is a vertex with its own fan), which is also the one the chosen triangles are
+/// cut into. The dependency graph, the search and the cut step work on
 /// stored vertices (a copy is a vertex of its own) and take walks as they are: at a touch point
 /// at most one copy can be a middle (its angle is 180 degrees or more; the copies' angles are
 /// disjoint), and a triangle ending at another copy of a middle's point comes from the side
@@ -138,11 +138,12 @@ pub fn triangulate_walks<P: Coord>(
     polygon: &Polygon<P>,
     deadline: Option<Instant>,
 ) -> Result<Triangulation, TriangulateError> {
-    let base = walks::plain(polygon).map_err(|detail| TriangulateError::Touching {
+    let plain = walks::plain(polygon).map_err(|detail| TriangulateError::Touching {
         algorithm: Algorithm::Minitri,
         detail,
     })?;
-    let (mdts, complete) = degenerate::minimally_degenerate_by_sweep_until(polygon, deadline);
+    let (mdts, base, complete) =
+        degenerate::minimally_degenerate_over_until(polygon, plain, deadline);
     general_from(polygon, mdts, base, complete, deadline)
 }
 
