@@ -270,7 +270,15 @@ pub fn triangulate_with<P: Coord>(
     algorithm: Algorithm,
     options: &Options,
 ) -> Result<Triangulation, TriangulateError> {
+    let deadline = || {
+        options
+            .time_limit
+            .and_then(|limit| std::time::Instant::now().checked_add(limit))
+    };
     match algorithm {
+        Algorithm::Asano if polygon.touches() > 0 => {
+            crate::algo::touching(polygon, algorithm, options.dp_limit, deadline())
+        }
         Algorithm::Asano => asano::triangulate(polygon, options.dp_limit),
         Algorithm::Ear => ear::triangulate(polygon),
         Algorithm::Pseudo | Algorithm::PseudoHull => Err(TriangulateError::WrongFunction {
@@ -279,12 +287,7 @@ pub fn triangulate_with<P: Coord>(
             asked: "a triangulation",
             call: "pseudotriangulate",
         }),
-        Algorithm::Minitri => {
-            let deadline = options
-                .time_limit
-                .and_then(|limit| std::time::Instant::now().checked_add(limit));
-            minitri::triangulate_within(polygon, deadline)
-        }
+        Algorithm::Minitri => minitri::triangulate_within(polygon, deadline()),
     }
 }
 

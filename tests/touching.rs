@@ -430,8 +430,8 @@ fn every_algorithm_triangulates_touching_rings_and_the_minimum_is_exact() {
             if algorithm == Algorithm::Ear {
                 assert_eq!(t.triangles.len(), plain);
             } else {
-                // One walk: the walk DP; hole walks left: the general method on the walks,
-                // whose search always finishes on polygons this small.
+                // One walk: Chen & Chang's steps (minitri) or the walk DP (asano); hole walks
+                // left: the exact search on the walks, which finishes on polygons this small.
                 assert!(
                     t.optimal && t.lower_bound.is_none(),
                     "{rings:?} {algorithm}"
@@ -612,9 +612,10 @@ fn rejections_name_rings_and_points() {
 /// Large polygons of one boundary walk (beyond the size where `minitri` runs the walk DP
 /// first): combs of triangular holes touching the outer ring's bottom edge, some with a second
 /// hole touching the first's corner, their tops on few lines (many degenerate triangles).
-/// `minitri`'s search on the walks and `asano`'s walk DP both prove their counts, and agree.
+/// `minitri` (Chen & Chang's steps on the walk) and `asano`'s walk DP both prove their counts,
+/// and agree.
 #[test]
-fn large_single_walks_the_search_and_the_walk_dp_agree() {
+fn large_single_walks_minitri_and_the_walk_dp_agree() {
     let mut rnd = xorshift(0x00c0_4b5e);
     for _ in 0..6 {
         let k = 60 + rnd(40);

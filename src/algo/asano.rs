@@ -77,7 +77,10 @@ pub fn triangulate<P: Coord>(
 ) -> Result<Triangulation, TriangulateError> {
     let n = polygon.len();
     if polygon.touches() > 0 {
-        return super::touching(polygon, Algorithm::Asano, limit, None);
+        // The search on walks with hole walks left has the default time limit here; the
+        // command line passes its own (`--time-limit`) to `super::touching` directly.
+        let deadline = Instant::now().checked_add(super::minitri::DEFAULT_TIME_LIMIT);
+        return super::touching(polygon, Algorithm::Asano, limit, deadline);
     }
     if polygon.holes() > 0 {
         return super::asano_holes::triangulate(polygon, limit);

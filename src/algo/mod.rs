@@ -26,7 +26,6 @@ pub mod walks;
 use crate::geom::kernel::Coord;
 use std::cmp::Ordering;
 use std::fmt;
-use std::time::Instant;
 
 /// Which algorithm made (or should make) a triangulation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -161,8 +160,8 @@ pub enum Stopped {
     /// The dependency graph of all minimally degenerate triangles would have exceeded its size
     /// budget ([`minitri::dependency::pair_budget`]); the search used the shortest of them.
     GraphSize,
-    /// Rings that touch, beyond what the exact method for touching rings takes (all rings
-    /// joined into one boundary walk of at most [`walks::WALK_DP_LIMIT`] stored vertices).
+    /// Rings that touch, where the exact method on the walks failed a self-check (not seen in
+    /// the tests) and the walk DP did not apply: the flattened walk was given.
     Touching,
 }
 
@@ -369,61 +368,42 @@ pub(crate) fn plain_polygon_for_walking<P: Coord>(polygon: &crate::Polygon<P>) -
 
 /// A triangulation of a polygon with touching rings ([`walks`]).
 ///
-/// For `minitri`: the general method on the walks ([`minitri::triangulate_walks`]: Chen &
-/// Chang's steps with the exact search, `deadline`), kept when its search finishes; a polygon
-/// whose rings all join the outer ring (one walk) also has the walk DP ([`walks::minimum`],
-/// polynomial, up to `limit` stored vertices): first when the walk is small
-/// ([`walks::DP_FIRST_UP_TO`]), else after the search if it did not finish (the search gets at
-/// most [`SEARCH_BEFORE_DP`] of the time then). For `asano` (the reference `--verify` compares
-/// with): the walk DP first whenever it applies, then the general method. When neither proves a
-/// minimum, the better of the general method's triangulation and the flattened walk
-/// ([`walks::flattened`]), with the better lower bound and `stopped`. For `ear` (and on a failed
-/// self-check) the plain triangulation.
+/// For `minitri`: Chen & Chang's steps on the walks ([`minitri::triangulate_walks`]): on one
+/// walk (every ring joined to the outer ring) polynomial, as for a simple polygon; with hole
+/// walks left, the exact search until `deadline`. For `asano` (the reference `--verify`
+/// compares with): on one walk the walk DP ([`walks::minimum`], polynomial, up to `limit`
+/// stored vertices), else the same as `minitri`. When no minimum is proved, the better of the
+/// search's triangulation and the flattened walk ([`walks::flattened`]), with the better lower
+/// bound and `stopped`. For `ear` (and on a failed self-check) the plain triangulation.
 pub(crate) fn touching<P: Coord>(
     polygon: &crate::Polygon<P>,
     algorithm: Algorithm,
     limit: usize,
     deadline: Option<std::time::Instant>,
 ) -> Result<Triangulation, TriangulateError> {
-    let exact = |triangles, degenerate| Triangulation {
-        algorithm,
-        triangles,
-        degenerate,
-        optimal: true,
-        lower_bound: None,
-        stopped: None,
-    };
-    let one_walk = polygon.holes() == 0;
     let mut why = Stopped::Touching;
-    let dp_first = algorithm == Algorithm::Asano || polygon.len() <= walks::DP_FIRST_UP_TO;
-    if algorithm.is_minimum() && one_walk && dp_first {
+    if algorithm == Algorithm::Asano && polygon.holes() == 0 {
         match walks::minimum(polygon, limit, deadline) {
-            Ok((triangles, degenerate)) => return Ok(exact(triangles, degenerate)),
+            Ok((triangles, degenerate)) => {
+                return Ok(Triangulation {
+                    algorithm,
+                    triangles,
+                    degenerate,
+                    optimal: true,
+                    lower_bound: None,
+                    stopped: None,
+                })
+            }
             Err(stopped) => why = stopped,
         }
     }
-    let deadline = deadline.or_else(|| Instant::now().checked_add(minitri::DEFAULT_TIME_LIMIT));
-    let mut general = None;
-    if algorithm.is_minimum() {
-        // With the DP still to come, the search leaves it most of the time.
-        let search_until = if one_walk && !dp_first {
-            let now = Instant::now();
-            deadline.map(|d| now + d.saturating_duration_since(now).min(SEARCH_BEFORE_DP))
-        } else {
-            deadline
-        };
-        general = minitri::triangulate_walks(polygon, search_until)
-            .ok()
-            .map(|t| Triangulation { algorithm, ..t });
-    }
+    let mut general = algorithm
+        .is_minimum()
+        .then(|| minitri::triangulate_walks(polygon, deadline).ok())
+        .flatten()
+        .map(|t| Triangulation { algorithm, ..t });
     if let Some(t) = general.take_if(|t| t.optimal) {
         return Ok(t);
-    }
-    if algorithm.is_minimum() && one_walk && !dp_first {
-        match walks::minimum(polygon, limit, deadline) {
-            Ok((triangles, degenerate)) => return Ok(exact(triangles, degenerate)),
-            Err(stopped) => why = stopped,
-        }
     }
     let flattened = algorithm
         .is_minimum()
@@ -460,10 +440,6 @@ pub(crate) fn touching<P: Coord>(
         stopped: (algorithm.is_minimum() && !optimal).then_some(why),
     })
 }
-
-/// The most time `minitri`'s search takes on a polygon of one boundary walk before the walk DP
-/// (which then has the rest of the time limit).
-pub const SEARCH_BEFORE_DP: std::time::Duration = std::time::Duration::from_secs(1);
 
 /// Why an algorithm could not triangulate a (valid) polygon.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]

@@ -11,7 +11,7 @@
 //! `n + 2w - 2 - d` triangles and `d` degenerate ones (T-junctions), never more than [`plain`];
 //! [`minimum`] the exact minimum of a
 //! polygon whose rings all join the outer ring (one walk), by the DP of [`super::asano`] over the
-//! walk. Every decision is an exact orientation test.
+//! walk (`asano`'s method; `minitri` runs Chen & Chang's steps on the walks instead). Every decision is an exact orientation test.
 //!
 //! Method. A segment between two stored vertices is a *chord* of the walk when it leaves each end
 //! inside that copy's closed angle, crosses no edge properly, and passes each point it contains
@@ -48,8 +48,9 @@
 //! remaining vertices; the greedy order adds an O(n) round of O(1) tests per ear, the reading
 //! off O(T d)), O(n^3) worst case; [`flattened`] runs the plain order too only up to
 //! [`BOTH_ORDERS_UP_TO`] positions. O(n^3) time and O(n^2) memory for [`minimum`] (chord table
-//! by direct tests), hence its limit [`WALK_DP_LIMIT`]. Chen & Chang's steps and the O(n log n) monotone
-//! sweep do not yet run on walks.
+//! by the angular sweep of [`super::chords`], O(n^2 log n)), up to the DP's size limit
+//! (`--dp-limit`, 3,000 by default). Chen & Chang's steps run on walks too
+//! ([`super::minitri::triangulate_walks`]); the O(n log n) monotone sweep does not.
 
 use super::asano::solve_walk;
 use super::chords::ChordTable;
@@ -62,16 +63,6 @@ use std::time::Instant;
 
 /// Triangles as stored vertex indices.
 pub type Triangles = Vec<[usize; 3]>;
-
-/// The largest walk (stored vertices, copies counted) [`minimum`] ever takes: the DP's tables
-/// (`u16` entries; 8 n^2 bytes, 72 MB here) and O(n^3) time (about 6 s here), the limit of the
-/// DP for simple polygons ([`super::asano::DEFAULT_LIMIT`]).
-pub const WALK_DP_LIMIT: usize = super::asano::DEFAULT_LIMIT;
-
-/// The largest walk on which `minitri` runs the walk DP before its search (a few milliseconds
-/// here); on larger walks the search usually proves the minimum much sooner than the DP's
-/// O(n^3) (`super::touching`).
-pub const DP_FIRST_UP_TO: usize = 300;
 
 /// The largest bridged cycle (positions) [`flattened`] clips in both orders, keeping the better;
 /// beyond, the greedy order only (each clipping costs O(n^2) in practice).
@@ -371,7 +362,7 @@ pub fn minimum<P: Coord>(
     deadline: Option<Instant>,
 ) -> Result<(Triangles, Triangles), Stopped> {
     let n = polygon.len();
-    if polygon.holes() > 0 || n > limit.min(WALK_DP_LIMIT) {
+    if polygon.holes() > 0 || n > limit.min(65_000) {
         return Err(Stopped::Touching);
     }
     let chords = ChordTable::new(polygon);
@@ -587,5 +578,30 @@ mod tests {
             found += swept.len();
         }
         assert!(found > 1000 && flipped > 100, "{found} {flipped}");
+    }
+
+    #[test]
+    fn on_one_walk_minitri_without_search_equals_the_walk_dp() {
+        let mut rnd = xorshift(0x0e1a_3a1c);
+        let (mut checked, mut large, mut saved) = (0, 0, 0);
+        while checked < 200 {
+            let p = if checked % 2 == 0 {
+                random_touching(&mut rnd)
+            } else {
+                random_touching_sized(&mut rnd, 30, 150)
+            };
+            let Some(p) = p.filter(|p| p.holes() == 0) else {
+                continue;
+            };
+            checked += 1;
+            large += usize::from(p.len() >= 48);
+            let t = crate::algo::minitri::triangulate_walks(&p, None).expect("minitri");
+            assert!(t.optimal);
+            assert!(crate::verify::check(&p, &t).valid, "{:?}", p.points());
+            let (dp, _) = minimum(&p, super::super::asano::DEFAULT_LIMIT, None).expect("walk DP");
+            assert_eq!(t.triangles.len(), dp.len(), "{:?}", p.points());
+            saved += usize::from(!t.degenerate.is_empty());
+        }
+        assert!(large > 5 && saved > 100, "{large} {saved}");
     }
 }

@@ -57,7 +57,7 @@ pub fn triangulate_within<P: Coord>(
     deadline: Option<Instant>,
 ) -> Result<Triangulation, TriangulateError> {
     if polygon.touches() > 0 {
-        return super::touching(polygon, Algorithm::Minitri, walks::WALK_DP_LIMIT, deadline);
+        return super::touching(polygon, Algorithm::Minitri, 0, deadline);
     }
     if polygon.holes() > 0 {
         return triangulate_general(polygon, deadline);
@@ -120,16 +120,18 @@ pub fn triangulate_general<P: Coord>(
     general_from(polygon, mdts, base, complete, deadline)
 }
 
-/// [`triangulate_general`] on the boundary walks of touching rings (`crate::algo::walks`,
-/// `docs/touching.md`): step 1 by triangular expansion over the plain triangulation of the
-/// walks ([`walks::plain`]; [`degenerate::minimally_degenerate_over_until`], where a copy of a
-/// touch point is a vertex with its own fan), which is also the one the chosen triangles are
-/// cut into. The dependency graph, the search and the cut step work on
-/// stored vertices (a copy is a vertex of its own) and take walks as they are: at a touch point
-/// at most one copy can be a middle (its angle is 180 degrees or more; the copies' angles are
-/// disjoint), and a triangle ending at another copy of a middle's point comes from the side
-/// that is not straight, so Theorem 1's cases apply unchanged. The count is
-/// `N + 2(w - t) - 2 - d` (`docs/touching.md`); the tests compare it with an exhaustive search.
+/// Chen & Chang's steps on the boundary walks of touching rings (`crate::algo::walks`,
+/// `docs/touching.md`), a copy of a touch point being a vertex of its own. Step 1 by triangular
+/// expansion over the plain triangulation of the walks ([`walks::plain`];
+/// [`degenerate::minimally_degenerate_over_until`]: a copy has its own fan of triangles), which
+/// is also the one the chosen triangles are cut into ([`cut`]). On one walk (a weakly simple
+/// polygon, stored vertices in walk order), steps 2 and 3 as for a simple polygon, the walk
+/// read as the circle: polynomial, no search (the tests compare it with the walk DP and an
+/// exhaustive search). With hole walks left, the dependency graph and the exact search of
+/// [`triangulate_general`], until `deadline`: at a touch point at most one copy can be a middle
+/// (its angle is 180 degrees or more; the copies' angles are disjoint), and a triangle ending at
+/// another copy of a middle's point comes from the side that is not straight, so Theorem 1's
+/// cases apply unchanged. The count is `N + 2(w - t) - 2 - d` (`docs/touching.md`).
 ///
 /// # Errors
 /// [`TriangulateError::Touching`] if the walks' plain triangulation fails, and those of
@@ -144,7 +146,28 @@ pub fn triangulate_walks<P: Coord>(
     })?;
     let (mdts, base, complete) =
         degenerate::minimally_degenerate_over_until(polygon, plain, deadline);
-    general_from(polygon, mdts, base, complete, deadline)
+    if polygon.holes() > 0 || !complete {
+        return general_from(polygon, mdts, base, complete, deadline);
+    }
+    // One walk (a weakly simple polygon): steps 2 and 3 as for a simple polygon, the walk read
+    // as the circle (stored vertices are in walk order): polynomial, no search.
+    let chosen: Vec<degenerate::Degenerate> = {
+        let circle = circle::circle(polygon, &mdts);
+        let chains = chains::chains(polygon, &mdts);
+        mis::maximum_independent_set(&circle, &chains)
+            .into_iter()
+            .map(|t| mdts[t])
+            .collect()
+    };
+    let triangles = cut::triangulate_with_cuts(polygon, base, &chosen)?;
+    Ok(Triangulation {
+        algorithm: Algorithm::Minitri,
+        triangles,
+        degenerate: chosen.iter().map(|m| [m.a, m.b, m.c]).collect(),
+        optimal: true,
+        lower_bound: None,
+        stopped: None,
+    })
 }
 
 /// Steps 2 to 5 of [`triangulate_general`], from the minimally degenerate triangles found
