@@ -809,7 +809,7 @@ fn format_points_to_to_and_from() {
         let (code, _, err) = run(args, None);
         assert_eq!(code, 2, "{err}");
         assert!(
-            err.contains("there is no --format: the output format is --to (json, geojson, geojsonl, geojson-triangles, wkt, svg), the input format --from"),
+            err.contains("there is no --format: the output format is --to (json, geojson, geojsonl, geojson-triangles, wkt, csv, svg), the input format --from"),
             "{err}"
         );
     }
