@@ -5,8 +5,8 @@
 //! [`Polygon`](crate::geom::polygon::Polygon) and its triangles, counter-clockwise.
 //!
 //! Output guarantee: one line per input feature, in input order, whatever happened to it, so
-//! that line k of the output is feature k of the input (for several inputs, of their features
-//! in turn):
+//! that line k + 1 of the output is feature k of the input (features are numbered from 0; for
+//! several inputs, their features in turn):
 //!
 //! - a GeoJSON feature: `MULTIPOLYGON (((x y, x y, x y, x y)), ...)`, the triangles of all its
 //!   parts (a MultiPolygon's polygons, in order), like the geometry of its `--to geojson`
