@@ -17,6 +17,7 @@ macro_rules! examples {
   minitri --to svg --labels --verify big.wkt > b.svg   vertex numbers at any size, faults in red
   minitri --to geojson u_shape.wkt                 the triangles for a GIS (also --to wkt)
   minitri layer.geojson -o out.geojson             one Feature per input feature, id and properties kept
+  minitri layer.geojson -o out.csv                 a row per feature: WKT, id, properties (ogr2ogr, QGIS)
   minitri --from geojson - --to geojsonl < in.geojsonl   a filter: one GeoJSON line out per line in
   minitri --from vertices points.txt               one `x y` vertex per line (also --from wkt, geojson)
   minitri --verify shapes/                         a directory, every output checked by the DP too
@@ -48,7 +49,7 @@ NO_COLOR set to anything but the empty string turns colour off."
 /// Triangulate polygons with the minimum number of triangles, exactly.
 ///
 /// Reads WKT, GeoJSON or plain vertex lists (files, directories, or standard input) and writes
-/// JSON, GeoJSON, WKT or SVG. Coordinates are exact as written in decimal.
+/// JSON, GeoJSON, WKT, CSV or SVG. Coordinates are exact as written in decimal.
 #[derive(Parser, Debug)]
 #[command(name = "minitri", version, about, after_help = examples!(),
     after_long_help = concat!(examples!(), shell_examples!()))]
@@ -62,8 +63,8 @@ pub struct Flags {
     /// Input format; auto decides by extension, then by content
     #[arg(long, value_enum, default_value = "auto")]
     pub from: FromFlag,
-    /// Output format [default: from -o's extension (.json, .geojson, .geojsonl, .wkt, .svg),
-    /// else json]
+    /// Output format [default: from -o's extension (.json, .geojson, .geojsonl, .wkt, .csv,
+    /// .svg), else json]
     #[arg(short, long, value_enum)]
     pub to: Option<ToFlag>,
     /// Write the output to this file instead of standard output; with a directory input or
@@ -160,8 +161,11 @@ pub enum ToFlag {
     Geojsonl,
     /// A GeoJSON FeatureCollection, one Feature per triangle
     GeojsonTriangles,
-    /// WKT, one MULTIPOLYGON of triangles per line and polygon
+    /// WKT, one MULTIPOLYGON of triangles per line and input feature (EMPTY when it failed)
     Wkt,
+    /// CSV: one row per input feature, its triangles in a WKT column, its id and properties as
+    /// written, ok, counts, errors
+    Csv,
     /// A picture
     Svg,
 }
@@ -218,7 +222,7 @@ impl Flags {
         if format {
             cmd.error(
                 clap::error::ErrorKind::UnknownArgument,
-                "there is no --format: the output format is --to (json, geojson, geojsonl, geojson-triangles, wkt, svg), \
+                "there is no --format: the output format is --to (json, geojson, geojsonl, geojson-triangles, wkt, csv, svg), \
                  the input format --from (auto, wkt, geojson, vertices)",
             )
             .exit();
@@ -256,6 +260,7 @@ impl Flags {
             OutputFormat::GeoJson | OutputFormat::GeoJsonTriangles => ToFlag::Geojson,
             OutputFormat::GeoJsonLines => ToFlag::Geojsonl,
             OutputFormat::Wkt => ToFlag::Wkt,
+            OutputFormat::Csv => ToFlag::Csv,
             OutputFormat::Svg(_) => ToFlag::Svg,
         });
         let agrees = |to: ToFlag, named: ToFlag| {
@@ -304,6 +309,7 @@ impl Flags {
                 ToFlag::Geojsonl => OutputFormat::GeoJsonLines,
                 ToFlag::GeojsonTriangles => OutputFormat::GeoJsonTriangles,
                 ToFlag::Wkt => OutputFormat::Wkt,
+                ToFlag::Csv => OutputFormat::Csv,
                 ToFlag::Svg => OutputFormat::Svg(svg::Style {
                     labels: self.labels,
                 }),

@@ -134,11 +134,16 @@ pub struct Outcome {
     /// With `--repair`, when the polygon was split into several: this piece's position among
     /// them (from 0).
     pub piece: Option<usize>,
+    /// How many outcomes the polygon gave: with `--repair`, the pieces it was split into; 1
+    /// otherwise. With [`Outcome::piece`], it tells the writers which piece is the polygon's
+    /// last (so that a feature's line or Feature is written as soon as it is complete).
+    pub pieces: usize,
     /// The validated polygon, when it is valid (on the kernel chosen for it).
     pub polygon: Option<AnyPolygon>,
     /// The triangulation, or what went wrong.
     pub result: Result<Solved, Error>,
-    /// What the tool changed in the input (dropped duplicate vertices).
+    /// What the tool changed in the input (dropped duplicate vertices). For a polygon split into
+    /// pieces by `--repair`, the warnings about the input polygon are its first piece's.
     pub warnings: Vec<Warning>,
     /// With `--repair`: what was repaired in the input polygon (the same list for each of its
     /// pieces); `None` without `--repair`.
@@ -156,12 +161,10 @@ impl Outcome {
             for warning in &self.warnings {
                 lines.push(format!("warning: {self}: {warning}"));
             }
-            // Once for a polygon split into pieces, before its first piece's other messages.
+            // Once for a polygon split into pieces, before its first piece's other messages,
+            // naming the polygon (or feature) as read, without the piece.
             if self.piece.unwrap_or(0) == 0 {
-                let polygon = match self.index {
-                    Some(i) => format!("{}: polygon {i}", self.source),
-                    None => self.source.clone(),
-                };
+                let polygon = self.label(false);
                 for repair in self.repaired.iter().flatten() {
                     lines.push(format!("warning: {polygon}: repaired: {repair}"));
                 }
@@ -178,35 +181,36 @@ impl Outcome {
 
 impl fmt::Display for Outcome {
     /// `source: polygon 2` (or `source: feature 3`, `source: feature 3, part 1` for a
-    /// GeoJSON feature, `source: line 4` for a line of GeoJSON Lines) as a prefix for messages
-    /// about this outcome. A failure to read names its feature or line in its own message.
+    /// GeoJSON feature, `source: line 4` for a line of GeoJSON Lines; ` piece 1` added for a
+    /// piece of a polygon split by `--repair`) as a prefix for messages about this outcome. A
+    /// failure to read names its feature or line in its own message.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match (self.index, &self.feature) {
+        f.write_str(&self.label(true))
+    }
+}
+
+impl Outcome {
+    /// The name of [`Outcome`]'s `Display`, with or without ` piece k`.
+    fn label(&self, with_piece: bool) -> String {
+        let mut label = match (self.index, &self.feature) {
             (Some(_), Some(id)) => {
                 // GeoJSON Lines: by line, as their reading errors are.
-                match id.feature.line {
-                    Some(line) => write!(f, "{}: line {line}", self.source)?,
-                    None => write!(f, "{}: feature {}", self.source, id.feature.number)?,
-                }
+                let mut label = match id.feature.line {
+                    Some(line) => format!("{}: line {line}", self.source),
+                    None => format!("{}: feature {}", self.source, id.feature.number),
+                };
                 if id.multipart() {
-                    write!(f, ", part {}", id.part)?;
+                    label.push_str(&format!(", part {}", id.part));
                 }
-                if let Some(k) = self.piece {
-                    write!(f, " piece {k}")?;
-                }
-                Ok(())
+                label
             }
-            (Some(i), None) if self.piece.is_some() => {
-                write!(
-                    f,
-                    "{}: polygon {i} piece {}",
-                    self.source,
-                    self.piece.unwrap_or(0)
-                )
-            }
-            (Some(i), None) => write!(f, "{}: polygon {i}", self.source),
-            (None, _) => write!(f, "{}", self.source),
+            (Some(i), None) => format!("{}: polygon {i}", self.source),
+            (None, _) => return self.source.clone(),
+        };
+        if let Some(k) = self.piece.filter(|_| with_piece) {
+            label.push_str(&format!(" piece {k}"));
         }
+        label
     }
 }
 
@@ -485,6 +489,7 @@ pub fn unreadable(source: &str, error: Error) -> Outcome {
         source: source.to_string(),
         index: None,
         piece: None,
+        pieces: 1,
         polygon: None,
         result: Err(error),
         warnings: Vec::new(),
@@ -527,6 +532,7 @@ pub fn process_raw(source: &str, index: usize, raw: RawPolygon, options: &Option
         source: source.to_string(),
         index: Some(index),
         piece: None,
+        pieces: 1,
         polygon: None,
         result: Err(Error::Invalid(Vec::new())),
         warnings: Vec::new(),
@@ -546,15 +552,18 @@ pub fn process_raw(source: &str, index: usize, raw: RawPolygon, options: &Option
             }
             Ok(pieces) => pieces,
         };
-        let several = pieces.pieces.len() > 1;
+        let count = pieces.pieces.len();
+        // The input polygon's warnings are told once, with its first piece.
+        let mut input_warnings = Some(pieces.warnings);
         return pieces
             .pieces
             .into_iter()
             .enumerate()
             .map(|(k, piece)| {
-                let mut warnings = pieces.warnings.clone();
+                let mut warnings = input_warnings.take().unwrap_or_default();
                 let mut one = Outcome {
-                    piece: several.then_some(k),
+                    piece: (count > 1).then_some(k),
+                    pieces: count.max(1),
                     repaired: Some(pieces.repairs.clone()),
                     ..outcome.clone()
                 };

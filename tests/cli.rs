@@ -809,7 +809,7 @@ fn format_points_to_to_and_from() {
         let (code, _, err) = run(args, None);
         assert_eq!(code, 2, "{err}");
         assert!(
-            err.contains("there is no --format: the output format is --to (json, geojson, geojsonl, geojson-triangles, wkt, svg), the input format --from"),
+            err.contains("there is no --format: the output format is --to (json, geojson, geojsonl, geojson-triangles, wkt, csv, svg), the input format --from"),
             "{err}"
         );
     }
@@ -872,6 +872,59 @@ fn repair_splits_a_figure_eight_into_two_pieces_and_says_so() {
             p["repaired"],
             serde_json::json!([{"kind": "split_ring", "message": sentence}])
         );
+    }
+}
+
+#[test]
+fn repair_tells_an_input_warning_once_and_a_feature_stays_one_record() {
+    // A figure eight with a repeated vertex (2 0): split in two pieces, the vertex dropped.
+    let ring = "[0, 0], [2, 0], [2, 0], [2, 2], [4, 2], [4, 4], [2, 4], [2, 2], [0, 2], [0, 0]";
+    let feature = format!(
+        r#"{{"type": "Feature", "id": "eight", "geometry": {{"type": "Polygon", "coordinates": [[{ring}]]}}}}"#
+    );
+    let warning = "vertex 2 (2, 0) repeats vertex 1 and was dropped";
+    for to in ["json", "geojsonl", "wkt", "csv"] {
+        let (code, out, err) = run(&["--repair", "--to", to], Some(&feature));
+        assert_eq!(code, 0, "{to}: {err}");
+        assert_eq!(err.matches(warning).count(), 1, "{to}: {err}");
+        assert!(
+            err.contains(&format!(
+                "warning: -: feature 0 piece 0: outer ring: {warning}"
+            )),
+            "{to}: {err}"
+        );
+        assert!(
+            err.contains("warning: -: feature 0: repaired: outer ring touches itself"),
+            "{to}: {err}"
+        );
+        match to {
+            // The warning is the first piece's, in the JSON as on standard error.
+            "json" => {
+                let doc = json(&out);
+                let warnings: Vec<usize> = doc["polygons"]
+                    .as_array()
+                    .expect("polygons")
+                    .iter()
+                    .map(|p| p["warnings"].as_array().map_or(0, Vec::len))
+                    .collect();
+                assert_eq!(warnings, [1, 0], "{out}");
+            }
+            // Both pieces in the feature's one Feature, line and row.
+            "geojsonl" => {
+                assert_eq!(out.lines().count(), 1, "{out}");
+                assert_eq!(json(&out)["properties"]["minitri"]["triangle_count"], 4);
+            }
+            "wkt" => assert_eq!(
+                out,
+                "MULTIPOLYGON (((0 2, 0 0, 2 0, 0 2)), ((2 2, 0 2, 2 0, 2 2)), \
+                 ((2 4, 2 2, 4 2, 2 4)), ((4 4, 2 4, 4 2, 4 4)))\n"
+            ),
+            _ => assert_eq!(
+                out.matches("\r\n").count(),
+                2,
+                "a header and one row: {out}"
+            ),
+        }
     }
 }
 

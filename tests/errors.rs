@@ -163,7 +163,7 @@ fn empty_standard_input_and_auto_detected_formats_are_reported_alike() {
 #[test]
 fn a_failed_input_writes_no_output_file_in_any_format() {
     let dir = tempfile::tempdir().unwrap();
-    for to in ["json", "svg", "geojson", "wkt"] {
+    for to in ["json", "svg", "geojson", "wkt", "csv"] {
         for fixture in ["spike.wkt", "unclosed.wkt", "binary.wkt", "empty.wkt"] {
             let target = dir.path().join(format!("out.{to}"));
             let path = format!("fixtures/invalid/{fixture}");

@@ -1,4 +1,4 @@
-//! `--to geojson` and `--to wkt` (issue 6, item 3), read back with the `geojson` and `wkt`
+//! `--to geojson-triangles` and `--to wkt` (issue 6, item 3), read back with the `geojson` and `wkt`
 //! crates as a GIS tool would, and checked against the JSON output of the same run.
 //!
 //! The reading crates give `f64` coordinates, so the triangle areas summed from them are compared
@@ -265,7 +265,7 @@ fn geojson_output_reads_back_as_the_json_triangles() {
 }
 
 #[test]
-fn wkt_output_is_one_multipolygon_line_per_polygon_as_the_json_triangles() {
+fn wkt_output_is_one_multipolygon_line_per_input_polygon_as_the_json_triangles() {
     let (_dir, multi) = multi();
     let paths: Vec<&str> = INPUTS.iter().copied().chain([multi.as_str()]).collect();
     for path in paths {
@@ -274,15 +274,26 @@ fn wkt_output_is_one_multipolygon_line_per_polygon_as_the_json_triangles() {
         let text = output("wkt", path, code);
         let polygons = polygons(path);
         let solved = doc["polygons"].as_array().expect("polygons");
+        let failed: Vec<u64> = doc["errors"]
+            .as_array()
+            .expect("errors")
+            .iter()
+            .map(|e| e["index"].as_u64().expect("a polygon's error"))
+            .collect();
         // `wkt` ignores trailing text, so each line is parsed alone and the lines are counted.
         let lines: Vec<&str> = text.lines().collect();
         assert_eq!(
             lines.len(),
-            solved.len(),
-            "{path}: one line per solved polygon"
+            solved.len() + failed.len(),
+            "{path}: one line per input polygon (each a feature of its own)"
         );
-        for (line, p) in lines.iter().zip(solved) {
+        assert_eq!(failed, if path == multi { vec![1] } else { vec![] });
+        for &k in &failed {
+            assert_eq!(lines[k as usize], "MULTIPOLYGON EMPTY", "{path}: line {k}");
+        }
+        for p in solved {
             let index = p["index"].as_u64().expect("index");
+            let line = &lines[index as usize];
             let what = format!("{path}: polygon {index}");
             let polygon = &polygons[&index];
             let parts = match wkt::Wkt::<f64>::from_str(line) {
@@ -355,11 +366,14 @@ fn decimal_coordinates_come_out_exactly_in_geojson_and_wkt() {
 }
 
 #[test]
-fn failed_polygons_get_no_feature_and_no_line_and_nothing_at_all_gives_empty_documents() {
+fn failed_polygons_get_no_triangle_feature_and_an_empty_wkt_line() {
     let bowtie = "POLYGON ((0 0, 2 2, 2 0, 0 2))";
     let (code, out, err) = run(&["--to", "wkt"], Some(bowtie));
-    assert_eq!((code, out.as_str()), (1, ""), "{err}");
+    assert_eq!((code, out.as_str()), (1, "MULTIPOLYGON EMPTY\n"), "{err}");
     assert!(err.contains("self-intersection"), "{err}");
+    // An input that cannot be read at all has no polygon, so no line.
+    let (code, out, err) = run(&["--to", "wkt"], Some("POLYGON ((0 0, 1 0"));
+    assert_eq!((code, out.as_str()), (1, ""), "{err}");
     let (code, out, err) = run(&["--to", "geojson-triangles"], Some(bowtie));
     assert_eq!(code, 1, "{err}");
     assert!(err.contains("self-intersection"), "{err}");

@@ -261,6 +261,215 @@ fn geojsonl_is_a_filter_one_line_out_per_line_in() {
     assert_eq!(json(&whole)["features"].as_array().unwrap(), &out);
 }
 
+/// [`LAYER`] and a MultiPolygon whose second part is a bow tie (a partly failed feature).
+fn layer_with_a_partial_failure() -> Vec<&'static str> {
+    let mut layer = LAYER.to_vec();
+    layer.push(
+        r#"{"type": "Feature", "id": "half", "properties": {"note": "a, \"b\"\nc"}, "geometry": {"type": "MultiPolygon", "coordinates": [[[[0, 0], [1, 0], [0, 1]]], [[[0, 0], [1, 1], [1, 0], [0, 1]]]]}}"#,
+    );
+    layer
+}
+
+/// The `--to wkt` line of each feature of [`layer_with_a_partial_failure`].
+const LAYER_WKT: [&str; 6] = [
+    "MULTIPOLYGON (((0 2, 0 0, 2 0, 0 2)), ((2 2, 0 2, 2 0, 2 2)))",
+    "MULTIPOLYGON (((0 1, 0 0, 1 0, 0 1)), ((5 6, 5 5, 6 5, 5 6)), ((6 6, 5 6, 6 5, 6 6)))",
+    "MULTIPOLYGON EMPTY",
+    "MULTIPOLYGON EMPTY",
+    "MULTIPOLYGON EMPTY",
+    "MULTIPOLYGON (((0 1, 0 0, 1 0, 0 1)))",
+];
+
+/// The layer as a FeatureCollection and as GeoJSON Lines (with a line that is not JSON and a
+/// blank line, which is no feature).
+fn layer_inputs() -> [(String, bool); 2] {
+    let layer = layer_with_a_partial_failure();
+    [
+        (
+            format!(
+                "{{\"type\": \"FeatureCollection\", \"features\": [\n{}\n]}}\n",
+                layer.join(",\n")
+            ),
+            false,
+        ),
+        (layer.join("\n") + "\n\nnot json\n", true),
+    ]
+}
+
+#[test]
+fn wkt_is_one_line_per_input_feature_in_order_empty_where_nothing_was_triangulated() {
+    for (input, from_lines) in layer_inputs() {
+        let (code, out, err) = run(&["--from", "geojson", "-", "--to", "wkt"], Some(&input));
+        assert_eq!(code, 1, "{err}");
+        let mut want = LAYER_WKT.to_vec();
+        if from_lines {
+            want.push("MULTIPOLYGON EMPTY"); // the line that is not JSON
+        }
+        assert_eq!(out.lines().collect::<Vec<_>>(), want, "{out}");
+        // The failed part's error still goes to standard error.
+        assert!(
+            err.contains(if from_lines {
+                "minitri: -: line 6, part 1: self-intersection"
+            } else {
+                "minitri: -: feature 5, part 1: self-intersection"
+            }),
+            "{err}"
+        );
+        // Each line is the geometry of the feature's --to geojson Feature.
+        let (_, geo, _) = run(
+            &["--from", "geojson", "-", "--to", "geojsonl"],
+            Some(&input),
+        );
+        let features: Vec<Value> = geo.lines().map(json).collect();
+        assert_eq!(features.len(), want.len());
+        for (f, line) in features.iter().zip(&want) {
+            let triangles = f["geometry"]["coordinates"].as_array().map_or(0, Vec::len);
+            assert_eq!(line.matches("((").count(), triangles, "{line} vs {f}");
+        }
+    }
+}
+
+/// Reads RFC 4180 CSV: records ending in CRLF, fields in double quotes when they hold a comma,
+/// a quote or a line break, quotes doubled inside. Panics on anything else.
+fn read_csv(text: &str) -> Vec<Vec<String>> {
+    let mut records = Vec::new();
+    let (mut record, mut field) = (Vec::new(), String::new());
+    let mut chars = text.chars().peekable();
+    let mut quoted = false;
+    while let Some(c) = chars.next() {
+        match (quoted, c) {
+            (true, '"') if chars.peek() == Some(&'"') => {
+                chars.next();
+                field.push('"');
+            }
+            (true, '"') => {
+                quoted = false;
+                let next = chars.peek().copied();
+                assert!(matches!(next, Some(',' | '\r')), "text after a quote");
+            }
+            (true, c) => field.push(c),
+            (false, '"') => {
+                assert!(field.is_empty(), "a quote inside an unquoted field");
+                quoted = true;
+            }
+            (false, ',') => record.push(std::mem::take(&mut field)),
+            (false, '\r') => {
+                assert_eq!(chars.next(), Some('\n'), "records end in CRLF");
+                record.push(std::mem::take(&mut field));
+                records.push(std::mem::take(&mut record));
+            }
+            (false, '\n') => panic!("a bare LF outside quotes"),
+            (false, c) => field.push(c),
+        }
+    }
+    assert!(
+        !quoted && record.is_empty() && field.is_empty(),
+        "ends inside a record"
+    );
+    records
+}
+
+#[test]
+fn csv_is_one_row_per_input_feature_with_its_id_and_properties_as_written() {
+    for (input, from_lines) in layer_inputs() {
+        let (code, out, err) = run(&["--from", "geojson", "-", "--to", "csv"], Some(&input));
+        assert_eq!(code, 1, "{err}");
+        let records = read_csv(&out);
+        assert_eq!(
+            records[0].join(","),
+            "WKT,source,feature,line,id,properties,ok,algorithm,parts,triangle_count,\
+             degenerate_count,pseudotriangle_count,optimal,errors"
+        );
+        let rows = &records[1..];
+        assert_eq!(rows.len(), if from_lines { 7 } else { 6 }, "{out}");
+        let column = |name: &str| -> Vec<&str> {
+            let k = records[0].iter().position(|c| c == name).unwrap();
+            rows.iter().map(|r| r[k].as_str()).collect()
+        };
+        // The WKT column is --to wkt's lines; the ids and properties are the JSON as written.
+        assert_eq!(column("WKT")[..6], LAYER_WKT);
+        assert_eq!(column("feature")[..6], ["0", "1", "2", "3", "4", "5"]);
+        assert_eq!(
+            column("id")[..6],
+            ["\"b-1\"", "7", "8", "9", "[10]", "\"half\""]
+        );
+        assert_eq!(
+            column("properties")[..6],
+            [
+                r#"{"name": "Hôtel", "h": 12.50, "big": 1e400}"#,
+                "null",
+                r#"{"k": 2}"#,
+                "",
+                "{}",
+                r#"{"note": "a, \"b\"\nc"}"#,
+            ]
+        );
+        assert_eq!(
+            column("ok")[..6],
+            ["true", "true", "false", "false", "false", "false"]
+        );
+        assert_eq!(column("parts")[..6], ["1", "2", "1", "1", "1", "2"]);
+        assert_eq!(column("triangle_count")[..6], ["2", "3", "", "", "", "1"]);
+        assert_eq!(column("degenerate_count")[..6], ["1", "0", "", "", "", "0"]);
+        assert_eq!(column("optimal")[..6], ["true", "true", "", "", "", "true"]);
+        assert_eq!(column("algorithm")[0], "minitri");
+        assert!(column("pseudotriangle_count").iter().all(|c| c.is_empty()));
+        let errors = column("errors");
+        let name = |k: usize| match from_lines {
+            true => format!("line {}", k + 1),
+            false => format!("feature {k}"),
+        };
+        assert_eq!(
+            errors[2],
+            format!("{}: \"geometry\" is null: nothing to triangulate", name(2))
+        );
+        assert!(
+            errors[4].starts_with("self-intersection: "),
+            "{}",
+            errors[4]
+        );
+        assert!(
+            errors[5].starts_with("part 1: self-intersection: "),
+            "{}",
+            errors[5]
+        );
+        let lines = column("line");
+        if from_lines {
+            assert_eq!(lines, ["1", "2", "3", "4", "5", "6", "8"]);
+            assert_eq!(column("id")[6], "", "a line that is not JSON has no id");
+            assert_eq!(column("WKT")[6], "MULTIPOLYGON EMPTY");
+        } else {
+            assert!(lines.iter().all(|l| l.is_empty()));
+        }
+    }
+}
+
+#[test]
+fn csv_rows_of_wkt_input_are_its_polygons_and_pseudotriangles_have_their_column() {
+    let wkt = "GEOMETRYCOLLECTION (POLYGON ((0 0, 4 0, 2 1, 0 4)), POINT (1 2), \
+               POLYGON ((0 0, 2 2, 2 0, 0 2)))";
+    let (code, out, err) = run(&["--from", "wkt", "-a", "pseudo", "--to", "csv"], Some(wkt));
+    assert_eq!(code, 1, "{err}");
+    let records = read_csv(&out);
+    let rows: Vec<String> = records[1..].iter().map(|r| r[..13].join("|")).collect();
+    assert_eq!(
+        rows,
+        [
+            "MULTIPOLYGON (((0 0, 4 0, 2 1, 0 4, 0 0)))|-|0||||true|pseudo|1|||1|false",
+            // The Point is no polygon: a row about the input, without feature or geometry.
+            "|-|||||false||1||||",
+            "MULTIPOLYGON EMPTY|-|1||||false||1||||",
+        ]
+    );
+    assert!(records[2][13].contains("found POINT"), "{out}");
+    // --to wkt: a line per polygon, none for the Point.
+    let (_, out, _) = run(&["--from", "wkt", "-a", "pseudo", "--to", "wkt"], Some(wkt));
+    assert_eq!(
+        out,
+        "MULTIPOLYGON (((0 0, 4 0, 2 1, 0 4, 0 0)))\nMULTIPOLYGON EMPTY\n"
+    );
+}
+
 #[test]
 fn the_old_geojson_output_is_one_feature_per_triangle() {
     let (code, out, err) = run(&["--to", "geojson-triangles"], Some(LAYER[0]));
@@ -282,6 +491,8 @@ fn the_output_format_follows_the_file_name_unless_told_otherwise() {
         ("a.geojsonl", "{\"type\": \"Feature\""),
         ("a.ndjson", "{\"type\": \"Feature\""),
         ("a.wkt", "MULTIPOLYGON"),
+        ("a.csv", "WKT,source,feature,"),
+        ("a.CSV", "WKT,source,feature,"),
         ("a.svg", "<svg"),
         ("a.json", "{\n  \"polygons\""),
         ("a.out", "{\n  \"polygons\""),
@@ -308,6 +519,24 @@ fn the_output_format_follows_the_file_name_unless_told_otherwise() {
         "{err}"
     );
     assert!(!dir.path().join("c.svg").exists());
+    // .csv stands for --to csv: --to wkt contradicts it, --to csv agrees.
+    let (code, out, err) = run(&[input, "-o", &path("d.csv"), "--to", "wkt"], None);
+    assert_eq!((code, out.as_str()), (2, ""));
+    assert!(
+        err.contains(
+            "--to wkt conflicts with the output file's extension .csv (which stands for --to csv)"
+        ),
+        "{err}"
+    );
+    assert!(!dir.path().join("d.csv").exists());
+    let (code, _, err) = run(&[input, "-o", &path("e.csv"), "--to", "csv"], None);
+    assert_eq!(code, 0, "{err}");
+    let rows = std::fs::read_to_string(path("e.csv")).unwrap();
+    assert_eq!(
+        read_csv(&rows).len(),
+        3,
+        "a header and a row per feature: {rows}"
+    );
 }
 
 /// A building-like line: a rectangle with a notch (8 vertices), `k` as id.

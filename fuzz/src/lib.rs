@@ -177,6 +177,7 @@ pub fn write_all(outcomes: Vec<Outcome>) {
         OutputFormat::GeoJsonTriangles,
         OutputFormat::GeoJsonLines,
         OutputFormat::Wkt,
+        OutputFormat::Csv,
         OutputFormat::Svg(Style { labels: false }),
         OutputFormat::Svg(Style { labels: true }),
     ] {

@@ -17,21 +17,22 @@
 //! The geometry is a MultiPolygon of every triangle of every part (each a closed
 //! counter-clockwise ring, exact decimals as in the input), `null` when nothing was
 //! triangulated. A feature that failed (in any part, or a `null` geometry, or a line that is not
-//! JSON) still gets its Feature, with `"ok": false` and `errors` (the messages); an outcome with
-//! no input feature (WKT or vertex input, a syntax error that stops a FeatureCollection) gets a
-//! Feature of its own, without `id`. With `pseudo` and `pseudo-hull`, the pseudotriangles
+//! JSON) still gets its Feature, with `"ok": false` and `errors` (the messages); a polygon of an
+//! input without features (WKT or vertex input; with `--repair`, all its pieces) gets a Feature
+//! of its own, without `id`, and so does an outcome about an input as a whole (an unreadable
+//! file, a syntax error that stops a FeatureCollection). With `pseudo` and `pseudo-hull`, the pseudotriangles
 //! instead, counted in `pseudotriangle_count`.
 //!
-//! Streamed: a feature is written as soon as its last part is pushed (memory: one feature's
-//! outcomes); the part geometries are made ahead, in parallel, by [`render`].
+//! Streamed: a feature is written as soon as its last part is pushed ([`super::group`]; memory:
+//! one feature's outcomes); the part geometries are made ahead, in parallel, by [`render`].
 
+use super::group::{Records, Rendered, Summary};
 use super::json::json;
 use super::{Renderer, Sink};
-use crate::feature::{properties_with, Identity};
+use crate::feature::properties_with;
 use crate::pipeline::Outcome;
 use std::fmt::Write as _;
 use std::io::{self, Write};
-use std::sync::Arc;
 
 /// Writes one Feature per input feature, as a FeatureCollection or as GeoJSON Lines.
 pub struct FeatureWriter<W: Write> {
@@ -39,7 +40,7 @@ pub struct FeatureWriter<W: Write> {
     lines: bool,
     written: usize,
     /// The outcomes of the feature being gathered, each with its rendered geometry.
-    pending: Vec<(Outcome, Option<String>)>,
+    records: Records,
 }
 
 impl<W: Write> FeatureWriter<W> {
@@ -55,7 +56,7 @@ impl<W: Write> FeatureWriter<W> {
             out,
             lines,
             written: 0,
-            pending: Vec::new(),
+            records: Records::new(),
         })
     }
 
@@ -64,44 +65,15 @@ impl<W: Write> FeatureWriter<W> {
     /// # Errors
     /// Any I/O error of the output.
     pub fn push_rendered(&mut self, outcome: Outcome, rendered: Option<String>) -> io::Result<()> {
-        let same = |a: &Option<Identity>, b: &Option<Identity>| match (a, b) {
-            (Some(a), Some(b)) => Arc::ptr_eq(&a.feature, &b.feature),
-            _ => false,
-        };
-        if let Some((last, _)) = self.pending.last() {
-            if !same(&last.feature, &outcome.feature) {
-                self.write_pending()?;
-            }
-        }
-        let complete = outcome
-            .feature
-            .as_ref()
-            .is_none_or(|id| self.pending.len() + 1 >= id.feature.outcomes());
-        self.pending.push((outcome, rendered));
-        if complete {
-            self.write_pending()?;
-        }
-        Ok(())
-    }
-
-    /// Writes the gathered feature.
-    fn write_pending(&mut self) -> io::Result<()> {
-        let pending = std::mem::take(&mut self.pending);
-        let Some((first, _)) = pending.first() else {
-            return Ok(());
-        };
-        let text = feature_text(first, &pending);
-        let separator = match (self.lines, self.written) {
-            (true, _) => "",
-            (false, 0) => "\n",
-            (false, _) => ",\n",
-        };
-        self.written += 1;
-        write!(self.out, "{separator}{text}")?;
-        if self.lines {
-            writeln!(self.out)?;
-        }
-        Ok(())
+        let FeatureWriter {
+            out,
+            lines,
+            written,
+            records,
+        } = self;
+        records.push(outcome, rendered, |record| {
+            write_feature(out, *lines, written, &record)
+        })
     }
 
     /// Writes what is gathered, ends the document and flushes.
@@ -109,7 +81,9 @@ impl<W: Write> FeatureWriter<W> {
     /// # Errors
     /// Any I/O error of the output.
     pub fn finish(mut self) -> io::Result<()> {
-        self.write_pending()?;
+        if let Some(record) = self.records.finish() {
+            write_feature(&mut self.out, self.lines, &mut self.written, &record)?;
+        }
         if !self.lines {
             writeln!(self.out, "\n]}}")?;
         }
@@ -117,8 +91,32 @@ impl<W: Write> FeatureWriter<W> {
     }
 }
 
+/// Writes the Feature of one input feature's outcomes (`written` Features before it).
+fn write_feature(
+    out: &mut impl Write,
+    lines: bool,
+    written: &mut usize,
+    record: &[Rendered],
+) -> io::Result<()> {
+    let Some((first, _)) = record.first() else {
+        return Ok(());
+    };
+    let text = feature_text(first, record);
+    let separator = match (lines, *written) {
+        (true, _) => "",
+        (false, 0) => "\n",
+        (false, _) => ",\n",
+    };
+    *written += 1;
+    write!(out, "{separator}{text}")?;
+    if lines {
+        writeln!(out)?;
+    }
+    Ok(())
+}
+
 /// One Feature's text for the outcomes of one input feature (`first` among them).
-fn feature_text(first: &Outcome, outcomes: &[(Outcome, Option<String>)]) -> String {
+fn feature_text(first: &Outcome, outcomes: &[Rendered]) -> String {
     let identity = first.feature.as_ref();
     let mut facts = format!("{{\"source\": {}", json(&first.source));
     match identity {
@@ -134,60 +132,35 @@ fn feature_text(first: &Outcome, outcomes: &[(Outcome, Option<String>)]) -> Stri
             }
         }
     }
-    let mut errors: Vec<String> = Vec::new();
-    let mut geometries: Vec<&str> = Vec::new();
-    let (mut triangles, mut degenerate, mut faces) = (0, 0, 0);
-    let mut optimal = true;
-    let mut algorithm = None;
-    let mut pseudo = false;
-    for (outcome, rendered) in outcomes {
-        match &outcome.result {
-            Ok(solved) => {
-                let t = &solved.triangulation;
-                algorithm = Some(t.algorithm.name());
-                triangles += t.triangles.len();
-                degenerate += t.degenerate.len();
-                if let Some(p) = &solved.pseudo {
-                    pseudo = true;
-                    faces += p.faces.len();
-                    optimal &= p.hull.is_some(); // as in the JSON output
-                } else {
-                    optimal &= t.optimal;
-                }
-            }
-            Err(e) => {
-                let part = outcome
-                    .feature
-                    .as_ref()
-                    .filter(|id| id.multipart())
-                    .map(|id| format!("part {}: ", id.part))
-                    .unwrap_or_default();
-                errors.extend(e.messages().into_iter().map(|m| format!("{part}{m}")));
-            }
-        }
-        geometries.extend(rendered.as_deref().filter(|g| !g.is_empty()));
-    }
-    let _ = write!(facts, ", \"ok\": {}", errors.is_empty());
-    if let Some(name) = algorithm {
+    let summary = Summary::of(outcomes);
+    let _ = write!(facts, ", \"ok\": {}", summary.ok());
+    if let Some(name) = summary.algorithm {
         let _ = write!(facts, ", \"algorithm\": {}", json(name));
     }
-    let parts = identity.map_or(1, |id| id.feature.outcomes());
-    let _ = write!(facts, ", \"parts\": {parts}");
-    if algorithm.is_some() {
-        if pseudo {
-            let _ = write!(facts, ", \"pseudotriangle_count\": {faces}");
-        } else {
-            let _ = write!(
-                facts,
-                ", \"triangle_count\": {triangles}, \"degenerate_count\": {degenerate}"
-            );
+    let _ = write!(facts, ", \"parts\": {}", summary.parts);
+    if summary.algorithm.is_some() {
+        match summary.faces {
+            Some(faces) => {
+                let _ = write!(facts, ", \"pseudotriangle_count\": {faces}");
+            }
+            None => {
+                let _ = write!(
+                    facts,
+                    ", \"triangle_count\": {}, \"degenerate_count\": {}",
+                    summary.triangles, summary.degenerate
+                );
+            }
         }
-        let _ = write!(facts, ", \"optimal\": {optimal}");
+        let _ = write!(facts, ", \"optimal\": {}", summary.optimal);
     }
-    if !errors.is_empty() {
-        let _ = write!(facts, ", \"errors\": {}", json(&errors));
+    if !summary.ok() {
+        let _ = write!(facts, ", \"errors\": {}", json(&summary.errors));
     }
     facts.push('}');
+    let geometries: Vec<&str> = outcomes
+        .iter()
+        .filter_map(|(_, rendered)| rendered.as_deref().filter(|g| !g.is_empty()))
+        .collect();
     let geometry = if geometries.is_empty() {
         "null".to_string()
     } else {

@@ -1,10 +1,14 @@
-//! Writers: JSON, GeoJSON, WKT and SVG. They consume results and never call algorithms.
+//! Writers: JSON, GeoJSON, WKT, CSV and SVG. They consume results and never call algorithms.
 //!
-//! [`OutputFormat::sink`] gives a [`Sink`] that takes outcomes one at a time, in order: the JSON,
-//! GeoJSON and WKT sinks write each polygon at once (streamed); the SVG sink keeps them and draws the picture at
-//! the end (a layout needs every panel, and a picture of a huge batch is not useful anyway).
+//! [`OutputFormat::sink`] gives a [`Sink`] that takes outcomes one at a time, in order: the JSON
+//! and per-triangle GeoJSON sinks write each polygon at once, the per-feature sinks (GeoJSON,
+//! GeoJSON Lines, WKT, CSV) each input feature as soon as its last part is in ([`group`]), all
+//! streamed; the SVG sink keeps them and draws the picture at the end (a layout needs every
+//! panel, and a picture of a huge batch is not useful anyway).
+pub mod csv;
 pub mod features;
 pub mod geojson;
+pub mod group;
 pub mod json;
 pub mod svg;
 pub mod wkt;
@@ -24,21 +28,25 @@ pub enum OutputFormat {
     GeoJsonLines,
     /// A GeoJSON FeatureCollection, one Feature per triangle ([`geojson`]).
     GeoJsonTriangles,
-    /// WKT, one MULTIPOLYGON of triangles per line and polygon.
+    /// WKT, one MULTIPOLYGON of triangles per line and input feature ([`wkt`]).
     Wkt,
+    /// CSV, one row per input feature: its triangles as WKT, its id and properties, minitri's
+    /// facts ([`csv`]).
+    Csv,
     /// An SVG picture, drawn in this style.
     Svg(svg::Style),
 }
 
 impl OutputFormat {
     /// The format a file name's extension stands for (`None` for an unknown one): `json`,
-    /// `geojson`, `geojsonl` (or `geojsons`, `ndjson`, `jsonl`), `wkt`, `svg`.
+    /// `geojson`, `geojsonl` (or `geojsons`, `ndjson`, `jsonl`), `wkt`, `csv`, `svg`.
     pub fn from_extension(extension: &str) -> Option<OutputFormat> {
         Some(match extension.to_ascii_lowercase().as_str() {
             "json" => OutputFormat::Json,
             "geojson" => OutputFormat::GeoJson,
             "geojsonl" | "geojsons" | "ndjson" | "jsonl" => OutputFormat::GeoJsonLines,
             "wkt" => OutputFormat::Wkt,
+            "csv" => OutputFormat::Csv,
             "svg" => OutputFormat::Svg(svg::Style::default()),
             _ => return None,
         })
@@ -51,6 +59,7 @@ impl OutputFormat {
             OutputFormat::GeoJson | OutputFormat::GeoJsonTriangles => "geojson",
             OutputFormat::GeoJsonLines => "geojsonl",
             OutputFormat::Wkt => "wkt",
+            OutputFormat::Csv => "csv",
             OutputFormat::Svg(_) => "svg",
         }
     }
@@ -58,7 +67,7 @@ impl OutputFormat {
     /// A sink writing this format to `out`.
     ///
     /// # Errors
-    /// Any I/O error of `out` (the JSON and GeoJSON sinks write their first line at once).
+    /// Any I/O error of `out` (the JSON, GeoJSON and CSV sinks write their first line at once).
     pub fn sink<'w, W: Write + 'w>(self, out: W) -> io::Result<Box<dyn Sink + 'w>> {
         Ok(match self {
             OutputFormat::Json => Box::new(json::JsonWriter::new(out)?),
@@ -66,6 +75,7 @@ impl OutputFormat {
             OutputFormat::GeoJsonLines => Box::new(features::FeatureWriter::new(out, true)?),
             OutputFormat::GeoJsonTriangles => Box::new(geojson::GeoJsonWriter::new(out)?),
             OutputFormat::Wkt => Box::new(wkt::WktWriter::new(out)),
+            OutputFormat::Csv => Box::new(csv::CsvWriter::new(out)?),
             OutputFormat::Svg(style) => Box::new(SvgSink {
                 out,
                 style,

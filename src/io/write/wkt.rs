@@ -1,83 +1,157 @@
-//! The WKT writer: one `MULTIPOLYGON` of triangles per line, one line per triangulated polygon.
+//! The WKT writer: one `MULTIPOLYGON` of triangles per line, one line per input feature.
 //!
-//! Input contract: outcomes in order; a solved outcome carries its
-//! [`Polygon`](crate::geom::polygon::Polygon) and its
-//! triangles, counter-clockwise.
+//! Input contract: outcomes in order, the outcomes of one input feature together
+//! ([`super::group`]); a solved outcome carries its
+//! [`Polygon`](crate::geom::polygon::Polygon) and its triangles, counter-clockwise.
 //!
-//! Output guarantee: for each solved polygon, in input order, one line
-//! `MULTIPOLYGON (((x y, x y, x y, x y)), ...)`: its triangles in the order of the JSON output,
-//! each a closed counter-clockwise ring (first corner repeated), coordinates the input decimals
-//! exactly ([`crate::geom::polygon::Grid::format`]); for `pseudo` and `pseudo-hull`, its
-//! pseudotriangles instead, in the order of the JSON output. A polygon that failed has no line (its
-//! error goes to standard error); with nothing triangulated the output is empty.
+//! Output guarantee: one line per input feature, in input order, whatever happened to it, so
+//! that line k + 1 of the output is feature k of the input (features are numbered from 0; for
+//! several inputs, their features in turn):
+//!
+//! - a GeoJSON feature: `MULTIPOLYGON (((x y, x y, x y, x y)), ...)`, the triangles of all its
+//!   parts (a MultiPolygon's polygons, in order), like the geometry of its `--to geojson`
+//!   Feature; an input without features (WKT, vertex lists): one line per polygon;
+//! - each triangle a closed counter-clockwise ring (first corner repeated), in the order of
+//!   the JSON output, coordinates the input decimals exactly
+//!   ([`crate::geom::polygon::Grid::format`]); for `pseudo` and `pseudo-hull`, the
+//!   pseudotriangles instead, in the order of the JSON output; with `--repair`, every piece's;
+//! - `MULTIPOLYGON EMPTY` when nothing of the feature was triangulated: an invalid polygon, a
+//!   feature that is not a polygon, a `null` geometry, a line that is not JSON, a feature all
+//!   of whose parts failed;
+//! - a feature with some failed parts: the triangles of the parts that were triangulated, as
+//!   in its GeoJSON Feature (the line alone does not say that a part is missing: the errors go
+//!   to standard error, the exit status is 1, and `--to csv` says it in `ok` and `errors`).
+//!
+//! A failure about an input as a whole (an unreadable file, a syntax error that stops a
+//! FeatureCollection, a member of a WKT collection that is not a polygon) is no feature and
+//! has no line; its error goes to standard error. The format has no place for identity: the
+//! `id` and `properties` are in `--to csv` ([`super::csv`]), whose `WKT` column holds the same
+//! lines.
 //!
 //! Why lines and not one `GEOMETRYCOLLECTION`: each line is a complete WKT geometry standing for
-//! one input polygon, the one-geometry-per-record form of WKT-lines files and of WKT columns in
-//! delimited text (which GIS tools import), and what shell tools (`wc -l`, `grep`, `split`)
-//! take; it streams with nothing to close at the end, and an empty result stays an empty file
-//! (a batch input with no polygon triangulated gets no output file at all, as for every format).
-//! A collection would put a whole run on one line and lose the polygon boundaries.
+//! one input feature, the one-geometry-per-record form of WKT-lines files and of WKT columns in
+//! delimited text (which GIS tools import), and what shell tools (`wc -l`, `grep`, `split`,
+//! `paste` with the input's ids) take; it streams with nothing to close at the end. A
+//! collection would put a whole run on one line and lose the feature boundaries.
 //!
-//! Streamed: each line is written when its polygon is pushed. Complexity: linear in the output.
+//! Streamed: each line is written when its feature's last outcome is pushed; the triangles'
+//! text is made ahead, in parallel, by [`render`]. Complexity: linear in the output.
 
-use super::Sink;
+use super::group::{Records, Rendered};
+use super::{Renderer, Sink};
 use crate::pipeline::Outcome;
 use std::io::{self, Write};
 
-/// Writes one `MULTIPOLYGON` line per solved polygon.
+/// Writes one `MULTIPOLYGON` line per input feature.
 pub struct WktWriter<W: Write> {
     out: W,
+    records: Records,
 }
 
 impl<W: Write> WktWriter<W> {
     /// Starts the (headerless) document.
     pub fn new(out: W) -> WktWriter<W> {
-        WktWriter { out }
+        WktWriter {
+            out,
+            records: Records::new(),
+        }
     }
 
-    /// Writes the line of one outcome (none for a failed polygon).
+    /// Takes the next outcome with its rendered triangles ([`render`]).
     ///
     /// # Errors
     /// Any I/O error of the output.
-    pub fn push(&mut self, outcome: &Outcome) -> io::Result<()> {
-        let (Ok(solved), Some(polygon)) = (&outcome.result, &outcome.polygon) else {
-            return Ok(());
-        };
-        let coordinate = |i: usize| {
-            let [x, y] = polygon.coordinates(i);
-            format!("{} {}", x, y)
-        };
-        write!(self.out, "MULTIPOLYGON (")?;
-        if let Some(p) = &solved.pseudo {
-            // A pseudotriangulation: its faces, each a closed counter-clockwise ring.
-            for (k, face) in p.faces.iter().enumerate() {
-                let separator = if k == 0 { "" } else { ", " };
-                let ring: Vec<String> = face.cycle.iter().map(|&v| coordinate(v)).collect();
-                let first = ring.first().cloned().unwrap_or_default();
-                write!(self.out, "{separator}(({}, {first}))", ring.join(", "))?;
-            }
-            return writeln!(self.out, ")");
-        }
-        for (k, tri) in solved.triangulation.triangles.iter().enumerate() {
-            let [a, b, c] = tri.map(coordinate);
-            let separator = if k == 0 { "" } else { ", " };
-            write!(self.out, "{separator}(({a}, {b}, {c}, {a}))")?;
-        }
-        writeln!(self.out, ")")
+    pub fn push_rendered(&mut self, outcome: Outcome, rendered: Option<String>) -> io::Result<()> {
+        let WktWriter { out, records } = self;
+        records.push(outcome, rendered, |record| write_line(out, &record))
     }
 
-    /// Ends the document and flushes.
+    /// Writes what is gathered and flushes.
     ///
     /// # Errors
     /// Any I/O error of the output.
     pub fn finish(mut self) -> io::Result<()> {
+        if let Some(record) = self.records.finish() {
+            write_line(&mut self.out, &record)?;
+        }
         self.out.flush()
     }
 }
 
+/// Writes the line of one record: none for a failure about an input as a whole.
+fn write_line(out: &mut impl Write, record: &[Rendered]) -> io::Result<()> {
+    match record.first() {
+        Some((first, _)) if is_feature(first) => writeln!(out, "{}", multipolygon(record)),
+        _ => Ok(()),
+    }
+}
+
+/// Whether an outcome belongs to an input feature (a GeoJSON feature, or a polygon of an
+/// input without features), not to an input as a whole.
+pub fn is_feature(outcome: &Outcome) -> bool {
+    outcome.feature.is_some() || outcome.index.is_some()
+}
+
+/// The `MULTIPOLYGON` of a record's rendered outcomes: every triangle of every solved outcome,
+/// in order, or `MULTIPOLYGON EMPTY` when none was solved.
+pub fn multipolygon(record: &[Rendered]) -> String {
+    let members: Vec<&str> = record
+        .iter()
+        .filter_map(|(_, rendered)| rendered.as_deref().filter(|m| !m.is_empty()))
+        .collect();
+    if members.is_empty() {
+        "MULTIPOLYGON EMPTY".to_string()
+    } else {
+        format!("MULTIPOLYGON ({})", members.join(", "))
+    }
+}
+
+/// The `MULTIPOLYGON` members of a solved outcome: its triangles (or pseudotriangles) as
+/// `((x y, x y, x y, x y))`, comma-separated; `None` for a failed outcome.
+pub fn render(outcome: &Outcome) -> Option<String> {
+    let (Ok(solved), Some(polygon)) = (&outcome.result, &outcome.polygon) else {
+        return None;
+    };
+    let coordinate = |i: usize| {
+        let [x, y] = polygon.coordinates(i);
+        format!("{x} {y}")
+    };
+    let rings: Vec<String> = match &solved.pseudo {
+        // A pseudotriangulation: its faces, each a closed counter-clockwise ring.
+        Some(p) => p
+            .faces
+            .iter()
+            .map(|face| {
+                let ring: Vec<String> = face.cycle.iter().map(|&v| coordinate(v)).collect();
+                let first = ring.first().cloned().unwrap_or_default();
+                format!("(({}, {first}))", ring.join(", "))
+            })
+            .collect(),
+        None => solved
+            .triangulation
+            .triangles
+            .iter()
+            .map(|tri| {
+                let [a, b, c] = tri.map(coordinate);
+                format!("(({a}, {b}, {c}, {a}))")
+            })
+            .collect(),
+    };
+    Some(rings.join(", "))
+}
+
 impl<W: Write> Sink for WktWriter<W> {
     fn push(&mut self, outcome: Outcome) -> io::Result<()> {
-        WktWriter::push(self, &outcome)
+        let rendered = render(&outcome);
+        self.push_rendered(outcome, rendered)
+    }
+
+    fn renderer(&self) -> Option<Renderer> {
+        Some(render)
+    }
+
+    fn push_rendered(&mut self, outcome: Outcome, rendered: Option<String>) -> io::Result<()> {
+        WktWriter::push_rendered(self, outcome, rendered)
     }
 
     fn finish(self: Box<Self>) -> io::Result<()> {
