@@ -357,6 +357,125 @@ fn endless_and_binary_inputs_fail_at_once() {
     assert!(text(&out.stdout).contains("\"triangle_count\": 1"));
 }
 
+/// Runs the binary on standard input `head` then `unit` repeated until it stops reading, with
+/// the cap on one input or feature lowered to 100,000 bytes: (code, stdout, stderr). A run
+/// still going after 60 s is a hang.
+fn endless(args: &[&str], head: &[u8], unit: &[u8]) -> (i32, String, String) {
+    let mut child = bin()
+        .args(args)
+        .env("MINITRI_INPUT_LIMIT_FOR_TESTS", "100000")
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut stdin = child.stdin.take().unwrap();
+    let (head, unit) = (head.to_vec(), unit.repeat(4096 / unit.len().max(1) + 1));
+    // Stops at the first failed write: the binary closed its input (or exited).
+    let writer = std::thread::spawn(move || {
+        if stdin.write_all(&head).is_ok() {
+            while stdin.write_all(&unit).is_ok() {}
+        }
+    });
+    let mut out = child.stdout.take().unwrap();
+    let mut err = child.stderr.take().unwrap();
+    let out = std::thread::spawn(move || {
+        let mut text = Vec::new();
+        std::io::Read::read_to_end(&mut out, &mut text).map(|_| text)
+    });
+    let err = std::thread::spawn(move || {
+        let mut text = Vec::new();
+        std::io::Read::read_to_end(&mut err, &mut text).map(|_| text)
+    });
+    let code = wait_at_most(child, Duration::from_secs(60));
+    writer.join().unwrap();
+    let (out, err) = (out.join().unwrap().unwrap(), err.join().unwrap().unwrap());
+    (code, text(&out), text(&err))
+}
+
+const TRIANGLE: &str = r#"{"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 1]]]}"#;
+
+#[test]
+fn an_endless_geojson_feature_or_line_stops_at_the_cap() {
+    let cap = "too large: more than 100000 bytes in";
+    // A FeatureCollection whose second feature never ends (valid JSON so far): the first is
+    // triangulated and written, the second named, with the byte where reading stopped.
+    let head = format!(
+        r#"{{"type": "FeatureCollection", "features": [{{"type": "Feature", "geometry": {TRIANGLE}}},
+        {{"type": "Feature", "geometry": {{"type": "Polygon", "coordinates": [[[0, 0]"#
+    );
+    let (code, out, err) = endless(&["--from", "geojson"], head.as_bytes(), b", [0, 0]");
+    assert_eq!(code, 1, "{err}");
+    assert!(out.contains("\"triangle_count\": 1"), "{out}");
+    // Counted from the end of feature 0.
+    let byte = head.find(",\n").unwrap() + 100_001;
+    let message = format!("-: feature 1: {cap} one GeoJSON feature (the most read before it is parsed); reading stopped at byte {byte} of the input");
+    assert!(err.contains(&message), "{err}");
+    // A single value, a line of GeoJSON Lines without its end, blank space after a value.
+    let head = r#"{"type": "Polygon", "coordinates": [[[0, 0]"#;
+    let (code, _, err) = endless(&[], head.as_bytes(), b", [0, 0]");
+    assert_eq!(code, 1);
+    assert!(
+        err.contains(&format!("-: line 1, column 1: {cap} one GeoJSON value")),
+        "{err}"
+    );
+    let lines = format!("{TRIANGLE}\n{TRIANGLE}\n{head}");
+    let (code, out, err) = endless(&[], lines.as_bytes(), b", [0, 0]");
+    assert_eq!(code, 1);
+    assert_eq!(out.matches("\"triangle_count\": 1").count(), 2, "{out}");
+    assert!(
+        err.contains(&format!("-: line 3: {cap} one line of GeoJSON Lines")),
+        "{err}"
+    );
+    let (code, out, err) = endless(&[], TRIANGLE.as_bytes(), b" ");
+    assert_eq!(code, 1);
+    assert!(out.contains("\"triangle_count\": 1"), "{out}");
+    assert!(
+        err.contains("in the blank space after a GeoJSON value"),
+        "{err}"
+    );
+    // WKT, by the same cap.
+    let (code, _, err) = endless(&[], b"POLYGON ((0 0", b", 1 1");
+    assert_eq!(code, 1);
+    assert!(
+        err.contains("-: input too large: more than 100000 bytes"),
+        "{err}"
+    );
+}
+
+#[test]
+fn binary_data_stops_a_geojson_input_at_once() {
+    for device in ["/dev/zero", "/dev/urandom"] {
+        let (code, _, err) = run_in(Path::new("/"), &["--from", "geojson", device]);
+        assert_eq!(code, 1, "{device}");
+        assert!(
+            err.contains("not text") || err.contains("not UTF-8"),
+            "{device}: {err}"
+        );
+    }
+    // After two good lines of GeoJSON Lines: they are triangulated, the third line is named.
+    let lines = format!("{TRIANGLE}\n{TRIANGLE}\n");
+    let (code, out, err) = endless(&[], lines.as_bytes(), b"\0");
+    assert_eq!(code, 1);
+    assert_eq!(out.matches("\"triangle_count\": 1").count(), 2, "{out}");
+    assert!(
+        err.contains("-: line 3, column 1: binary data, not text (a NUL byte)"),
+        "{err}"
+    );
+    // GeoJSON is judged on its first 64 KiB; later, streamed, a NUL byte is a syntax error.
+    let (code, _, err) = endless(&["--from", "geojson"], TRIANGLE.as_bytes(), b"\0");
+    assert_eq!(code, 1);
+    assert!(err.contains("-: line 1, column 63: binary data"), "{err}");
+    let late = format!("{TRIANGLE}{}", " ".repeat(70_000));
+    let (code, out, err) = endless(&["--from", "geojson"], late.as_bytes(), b"\0");
+    assert_eq!(code, 1);
+    assert!(out.contains("\"triangle_count\": 1"), "{out}");
+    assert!(
+        err.contains("-: line 1, column 70063: invalid JSON"),
+        "{err}"
+    );
+}
+
 fn code_of(out: &std::process::Output) -> i32 {
     code(out.status)
 }
