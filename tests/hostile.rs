@@ -476,6 +476,74 @@ fn binary_data_stops_a_geojson_input_at_once() {
     );
 }
 
+/// Runs the binary in `dir` under an address-space limit of `kb` KiB (`ulimit -v`), one
+/// worker thread: (code, stdout, stderr).
+fn run_limited(dir: &Path, kb: u64, args: &[&str]) -> (i32, String, String) {
+    let script = format!("ulimit -v {kb} && exec \"$0\" --jobs 1 \"$@\"");
+    let out = Command::new("sh")
+        .current_dir(dir)
+        .args(["-c", &script, env!("CARGO_BIN_EXE_minitri")])
+        .args(args)
+        .output()
+        .unwrap();
+    (code(out.status), text(&out.stdout), text(&out.stderr))
+}
+
+/// A zigzag polygon of `n + 2` vertices: `(i, i mod 2)` along the bottom, closed at height 10.
+fn zigzag(n: usize) -> Vec<(usize, usize)> {
+    let mut points: Vec<_> = (0..n).map(|i| (i, i % 2)).collect();
+    points.extend([(n - 1, 10), (0, 10)]);
+    points
+}
+
+#[test]
+fn a_polygon_too_large_for_memory_is_reported_and_the_next_goes_on() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    // 2 x 10^6 vertices: 128 MB once read (64 bytes a vertex), more to triangulate.
+    let points = zigzag(2_000_000);
+    let ring: Vec<String> = points.iter().map(|(x, y)| format!("[{x},{y}]")).collect();
+    let big = format!(
+        r#"{{"type":"Polygon","coordinates":[[{}]]}}"#,
+        ring.join(",")
+    );
+    fs::write(dir.join("big.geojsonl"), format!("{big}\n{TRIANGLE}\n")).unwrap();
+    let ring: Vec<String> = points.iter().map(|(x, y)| format!("{x} {y}")).collect();
+    let wkt = format!(
+        "GEOMETRYCOLLECTION (POLYGON (({})), POLYGON ((0 0, 1 0, 0 1)))",
+        ring.join(", ")
+    );
+    fs::write(dir.join("big.wkt"), wkt).unwrap();
+    // Memory refused while reading the polygon (200 MB) or before validating it (320 MB):
+    // either way the polygon is reported and the triangle after it is triangulated.
+    for kb in [200_000, 320_000] {
+        for file in ["big.geojsonl", "big.wkt"] {
+            let (code, out, err) = run_limited(dir, kb, &[file]);
+            assert_eq!(code, 1, "{file} at {kb} KiB: {err}");
+            assert!(
+                err.contains("not enough memory"),
+                "{file} at {kb} KiB: {err}"
+            );
+            assert!(out.contains("\"triangle_count\": 1,"), "{file}: {out}");
+        }
+    }
+    // The asano tables of 20,000 vertices (3.2 GB) are reserved, not assumed.
+    let convex: Vec<String> = (0..20_000).map(|i: u64| format!("{i} {}", i * i)).collect();
+    let wkt = format!(
+        "GEOMETRYCOLLECTION (POLYGON (({})), POLYGON ((0 0, 1 0, 0 1)))",
+        convex.join(", ")
+    );
+    fs::write(dir.join("convex.wkt"), wkt).unwrap();
+    let args = ["--algorithm", "asano", "--dp-limit", "65000", "convex.wkt"];
+    let (code, out, err) = run_limited(dir, 1_000_000, &args);
+    assert_eq!(code, 1, "{err}");
+    assert!(
+        err.contains("convex.wkt: polygon 0: not enough memory: the asano algorithm's tables for 20000 vertices take 3.2 GB"),
+        "{err}"
+    );
+    assert!(out.contains("\"triangle_count\": 1,"), "{out}");
+}
+
 fn code_of(out: &std::process::Output) -> i32 {
     code(out.status)
 }

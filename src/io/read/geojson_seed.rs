@@ -763,6 +763,14 @@ impl Level for RingLevel {
         let mut ring = Vec::new();
         while let Some(position) = seq.next_element_seed(LevelSeed(PositionLevel))? {
             match position {
+                // Memory refused is this polygon's failure (reading goes on), not an abort.
+                Ok(_) if ring.try_reserve(1).is_err() => {
+                    let index = ring.len();
+                    drop(ring);
+                    skip_rest(seq)?;
+                    let message = format!("not enough memory to hold the ring: {index} positions read, no room for more");
+                    return Ok(Err(Failure::new(message).within("position", index)));
+                }
                 Ok(position) => ring.push(position),
                 Err(failure) => {
                     let index = ring.len();
