@@ -11,6 +11,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use minitri::batch::{
     discover_counting, plan, run_document, run_tree, AtomicFile, Observer, Settings, Tally, TreeJob,
 };
+use minitri::io::read::limits;
 use std::io::{self, IsTerminal, Write};
 use std::path::Path;
 use std::process::ExitCode;
@@ -137,6 +138,8 @@ fn run() -> anyhow::Result<ExitCode> {
         options: config.options.clone(),
         from: config.from,
         quiet: config.quiet,
+        // The cap on what one input (WKT) or feature (GeoJSON) may hold; lowered by tests only.
+        limit: limits::limit_from(std::env::var_os(limits::LIMIT_FOR_TESTS).as_deref()),
     };
     let show_progress = !config.quiet && !typing && io::stderr().is_terminal();
     let progress = Progress::new(show_progress, inputs.len());

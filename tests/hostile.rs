@@ -357,6 +357,193 @@ fn endless_and_binary_inputs_fail_at_once() {
     assert!(text(&out.stdout).contains("\"triangle_count\": 1"));
 }
 
+/// Runs the binary on standard input `head` then `unit` repeated until it stops reading, with
+/// the cap on one input or feature lowered to 100,000 bytes: (code, stdout, stderr). A run
+/// still going after 60 s is a hang.
+fn endless(args: &[&str], head: &[u8], unit: &[u8]) -> (i32, String, String) {
+    let mut child = bin()
+        .args(args)
+        .env("MINITRI_INPUT_LIMIT_FOR_TESTS", "100000")
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut stdin = child.stdin.take().unwrap();
+    let (head, unit) = (head.to_vec(), unit.repeat(4096 / unit.len().max(1) + 1));
+    // Stops at the first failed write: the binary closed its input (or exited).
+    let writer = std::thread::spawn(move || {
+        if stdin.write_all(&head).is_ok() {
+            while stdin.write_all(&unit).is_ok() {}
+        }
+    });
+    let mut out = child.stdout.take().unwrap();
+    let mut err = child.stderr.take().unwrap();
+    let out = std::thread::spawn(move || {
+        let mut text = Vec::new();
+        std::io::Read::read_to_end(&mut out, &mut text).map(|_| text)
+    });
+    let err = std::thread::spawn(move || {
+        let mut text = Vec::new();
+        std::io::Read::read_to_end(&mut err, &mut text).map(|_| text)
+    });
+    let code = wait_at_most(child, Duration::from_secs(60));
+    writer.join().unwrap();
+    let (out, err) = (out.join().unwrap().unwrap(), err.join().unwrap().unwrap());
+    (code, text(&out), text(&err))
+}
+
+const TRIANGLE: &str = r#"{"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 1]]]}"#;
+
+#[test]
+fn an_endless_geojson_feature_or_line_stops_at_the_cap() {
+    let cap = "too large: more than 100000 bytes in";
+    // A FeatureCollection whose second feature never ends (valid JSON so far): the first is
+    // triangulated and written, the second named, with the byte where reading stopped.
+    let head = format!(
+        r#"{{"type": "FeatureCollection", "features": [{{"type": "Feature", "geometry": {TRIANGLE}}},
+        {{"type": "Feature", "geometry": {{"type": "Polygon", "coordinates": [[[0, 0]"#
+    );
+    let (code, out, err) = endless(&["--from", "geojson"], head.as_bytes(), b", [0, 0]");
+    assert_eq!(code, 1, "{err}");
+    assert!(out.contains("\"triangle_count\": 1"), "{out}");
+    // Counted from the end of feature 0.
+    let byte = head.find(",\n").unwrap() + 100_001;
+    let message = format!("-: feature 1: {cap} one GeoJSON feature (the most read before it is parsed); reading stopped at byte {byte} of the input");
+    assert!(err.contains(&message), "{err}");
+    // A single value, a line of GeoJSON Lines without its end, blank space after a value.
+    let head = r#"{"type": "Polygon", "coordinates": [[[0, 0]"#;
+    let (code, _, err) = endless(&[], head.as_bytes(), b", [0, 0]");
+    assert_eq!(code, 1);
+    assert!(
+        err.contains(&format!("-: line 1, column 1: {cap} one GeoJSON value")),
+        "{err}"
+    );
+    let lines = format!("{TRIANGLE}\n{TRIANGLE}\n{head}");
+    let (code, out, err) = endless(&[], lines.as_bytes(), b", [0, 0]");
+    assert_eq!(code, 1);
+    assert_eq!(out.matches("\"triangle_count\": 1").count(), 2, "{out}");
+    assert!(
+        err.contains(&format!("-: line 3: {cap} one line of GeoJSON Lines")),
+        "{err}"
+    );
+    let (code, out, err) = endless(&[], TRIANGLE.as_bytes(), b" ");
+    assert_eq!(code, 1);
+    assert!(out.contains("\"triangle_count\": 1"), "{out}");
+    assert!(
+        err.contains("in the blank space after a GeoJSON value"),
+        "{err}"
+    );
+    // WKT, by the same cap.
+    let (code, _, err) = endless(&[], b"POLYGON ((0 0", b", 1 1");
+    assert_eq!(code, 1);
+    assert!(
+        err.contains("-: input too large: more than 100000 bytes"),
+        "{err}"
+    );
+}
+
+#[test]
+fn binary_data_stops_a_geojson_input_at_once() {
+    for device in ["/dev/zero", "/dev/urandom"] {
+        let (code, _, err) = run_in(Path::new("/"), &["--from", "geojson", device]);
+        assert_eq!(code, 1, "{device}");
+        assert!(
+            err.contains("not text") || err.contains("not UTF-8"),
+            "{device}: {err}"
+        );
+    }
+    // After two good lines of GeoJSON Lines: they are triangulated, the third line is named.
+    let lines = format!("{TRIANGLE}\n{TRIANGLE}\n");
+    let (code, out, err) = endless(&[], lines.as_bytes(), b"\0");
+    assert_eq!(code, 1);
+    assert_eq!(out.matches("\"triangle_count\": 1").count(), 2, "{out}");
+    assert!(
+        err.contains("-: line 3, column 1: binary data, not text (a NUL byte)"),
+        "{err}"
+    );
+    // GeoJSON is judged on its first 64 KiB; later, streamed, a NUL byte is a syntax error.
+    let (code, _, err) = endless(&["--from", "geojson"], TRIANGLE.as_bytes(), b"\0");
+    assert_eq!(code, 1);
+    assert!(err.contains("-: line 1, column 63: binary data"), "{err}");
+    let late = format!("{TRIANGLE}{}", " ".repeat(70_000));
+    let (code, out, err) = endless(&["--from", "geojson"], late.as_bytes(), b"\0");
+    assert_eq!(code, 1);
+    assert!(out.contains("\"triangle_count\": 1"), "{out}");
+    assert!(
+        err.contains("-: line 1, column 70063: invalid JSON"),
+        "{err}"
+    );
+}
+
+/// Runs the binary in `dir` under an address-space limit of `kb` KiB (`ulimit -v`), one
+/// worker thread: (code, stdout, stderr).
+fn run_limited(dir: &Path, kb: u64, args: &[&str]) -> (i32, String, String) {
+    let script = format!("ulimit -v {kb} && exec \"$0\" --jobs 1 \"$@\"");
+    let out = Command::new("sh")
+        .current_dir(dir)
+        .args(["-c", &script, env!("CARGO_BIN_EXE_minitri")])
+        .args(args)
+        .output()
+        .unwrap();
+    (code(out.status), text(&out.stdout), text(&out.stderr))
+}
+
+/// A zigzag polygon of `n + 2` vertices: `(i, i mod 2)` along the bottom, closed at height 10.
+fn zigzag(n: usize) -> Vec<(usize, usize)> {
+    let mut points: Vec<_> = (0..n).map(|i| (i, i % 2)).collect();
+    points.extend([(n - 1, 10), (0, 10)]);
+    points
+}
+
+#[test]
+fn a_polygon_too_large_for_memory_is_reported_and_the_next_goes_on() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    // 2 x 10^6 vertices: 128 MB once read (64 bytes a vertex), more to triangulate.
+    let points = zigzag(2_000_000);
+    let ring: Vec<String> = points.iter().map(|(x, y)| format!("[{x},{y}]")).collect();
+    let big = format!(
+        r#"{{"type":"Polygon","coordinates":[[{}]]}}"#,
+        ring.join(",")
+    );
+    fs::write(dir.join("big.geojsonl"), format!("{big}\n{TRIANGLE}\n")).unwrap();
+    let ring: Vec<String> = points.iter().map(|(x, y)| format!("{x} {y}")).collect();
+    let wkt = format!(
+        "GEOMETRYCOLLECTION (POLYGON (({})), POLYGON ((0 0, 1 0, 0 1)))",
+        ring.join(", ")
+    );
+    fs::write(dir.join("big.wkt"), wkt).unwrap();
+    // Memory refused while reading the polygon (200 MB) or before validating it (320 MB):
+    // either way the polygon is reported and the triangle after it is triangulated.
+    for kb in [200_000, 320_000] {
+        for file in ["big.geojsonl", "big.wkt"] {
+            let (code, out, err) = run_limited(dir, kb, &[file]);
+            assert_eq!(code, 1, "{file} at {kb} KiB: {err}");
+            assert!(
+                err.contains("not enough memory"),
+                "{file} at {kb} KiB: {err}"
+            );
+            assert!(out.contains("\"triangle_count\": 1,"), "{file}: {out}");
+        }
+    }
+    // The asano tables of 20,000 vertices (3.2 GB) are reserved, not assumed.
+    let convex: Vec<String> = (0..20_000).map(|i: u64| format!("{i} {}", i * i)).collect();
+    let wkt = format!(
+        "GEOMETRYCOLLECTION (POLYGON (({})), POLYGON ((0 0, 1 0, 0 1)))",
+        convex.join(", ")
+    );
+    fs::write(dir.join("convex.wkt"), wkt).unwrap();
+    let args = ["--algorithm", "asano", "--dp-limit", "65000", "convex.wkt"];
+    let (code, out, err) = run_limited(dir, 1_000_000, &args);
+    assert_eq!(code, 1, "{err}");
+    assert!(
+        err.contains("convex.wkt: polygon 0: not enough memory: the asano algorithm's tables for 20000 vertices take 3.2 GB"),
+        "{err}"
+    );
+    assert!(out.contains("\"triangle_count\": 1,"), "{out}");
+}
+
 fn code_of(out: &std::process::Output) -> i32 {
     code(out.status)
 }

@@ -95,8 +95,18 @@ pub fn triangulate<P: Coord>(
             time,
         });
     }
-    let chords = ChordTable::new(polygon);
-    let walk = solve_walk(
+    // The tables are reserved, not assumed: a polygon whose tables cannot be had (an address
+    // space limit, `--dp-limit` raised far) is reported, and the run goes on.
+    let no_room = || TriangulateError::OutOfMemory {
+        algorithm: Algorithm::Asano,
+        n,
+        memory: estimate(n).0,
+    };
+    // The DP's tables first: they are the larger (6 n^2 bytes), and take no time to make.
+    let tables = Tables::try_new(n).ok_or_else(no_room)?;
+    let chords = ChordTable::try_new(polygon).ok_or_else(no_room)?;
+    let walk = solve_walk_in(
+        tables,
         n,
         |i| polygon.point(i),
         |i, j| chords.is_chord(i, j),
@@ -146,11 +156,53 @@ pub(crate) fn solve_walk<'a, P: Coord>(
     lines_through: impl Fn(usize) -> &'a [u16],
     deadline: Option<Instant>,
 ) -> Option<WalkTriangulation> {
+    solve_walk_in(Tables::new(m), m, point, is_chord, lines_through)
+}
+
+/// The DP's tables for a walk of `m` positions, `6 m^2` bytes: the cost of each sub-walk
+/// (row-major, and transposed) and the apex chosen for it.
+pub(crate) struct Tables {
+    cost: Vec<u16>,
+    cost_t: Vec<u16>,
+    choice: Vec<u16>,
+}
+
+impl Tables {
+    /// The tables, allocated as usual (an allocation failure aborts).
+    fn new(m: usize) -> Tables {
+        Tables {
+            cost: vec![INF; m * m],
+            cost_t: vec![INF; m * m],
+            choice: vec![0; m * m],
+        }
+    }
+
+    /// The tables, or `None` when their memory cannot be had.
+    pub(crate) fn try_new(m: usize) -> Option<Tables> {
+        let cells = m.checked_mul(m)?;
+        Some(Tables {
+            cost: super::try_filled(cells, INF)?,
+            cost_t: super::try_filled(cells, INF)?,
+            choice: super::try_filled(cells, 0)?,
+        })
+    }
+}
+
+/// [`solve_walk`] in `tables` (made for `m` positions).
+pub(crate) fn solve_walk_in<'a, P: Coord>(
+    tables: Tables,
+    m: usize,
+    point: impl Fn(usize) -> P,
+    is_chord: impl Fn(usize, usize) -> bool,
+    lines_through: impl Fn(usize) -> &'a [u16],
+) -> Option<WalkTriangulation> {
     let n = m;
     let at = |i: usize, j: usize| i * n + j;
-    let mut cost = vec![INF; n * n]; // cost[i][j], row-major
-    let mut cost_t = vec![INF; n * n]; // the same, transposed: cost_t[j][i] = cost[i][j]
-    let mut choice = vec![0u16; n * n];
+    let Tables {
+        mut cost,   // cost[i][j], row-major
+        mut cost_t, // the same, transposed: cost_t[j][i] = cost[i][j]
+        mut choice,
+    } = tables;
     for i in 0..n - 1 {
         cost[at(i, i + 1)] = 0;
         cost_t[at(i + 1, i)] = 0;

@@ -49,11 +49,25 @@ impl ChordTable {
             n <= 1 << 16,
             "the chord table is for polygons up to 65,536 vertices"
         );
-        let mut table = ChordTable {
-            n,
-            bits: vec![0; (n * n).div_ceil(64)],
-            lines: vec![0; n * n],
-        };
+        ChordTable::fill(polygon, vec![0; (n * n).div_ceil(64)], vec![0; n * n])
+    }
+
+    /// [`ChordTable::new`], or `None` when the memory of its tables (`n^2 (2 + 1/8)` bytes)
+    /// cannot be had, or above 65,536 vertices.
+    pub fn try_new<P: Coord>(polygon: &Polygon<P>) -> Option<ChordTable> {
+        let n = polygon.len();
+        if n > 1 << 16 {
+            return None;
+        }
+        let bits = super::try_filled((n * n).div_ceil(64), 0)?;
+        let lines = super::try_filled(n * n, 0)?;
+        Some(ChordTable::fill(polygon, bits, lines))
+    }
+
+    /// The table for `polygon`, in `bits` and `lines` (zeroed, of the right sizes).
+    fn fill<P: Coord>(polygon: &Polygon<P>, bits: Vec<u64>, lines: Vec<u16>) -> ChordTable {
+        let n = polygon.len();
+        let mut table = ChordTable { n, bits, lines };
         let mut visible = Vec::new();
         for v in 0..n {
             let order = visible_from(polygon, v, &mut visible);

@@ -529,4 +529,25 @@ pub enum TriangulateError {
         /// Estimated time, in words.
         time: String,
     },
+    /// The memory for the algorithm's tables could not be had (a reservation failed): the
+    /// polygon is reported instead of aborting the run.
+    #[error("not enough memory: the {algorithm} algorithm's tables for {n} vertices take {memory}, and that memory could not be had")]
+    OutOfMemory {
+        /// The algorithm.
+        algorithm: Algorithm,
+        /// Number of vertices.
+        n: usize,
+        /// The memory asked for, in words.
+        memory: String,
+    },
+}
+
+/// A vector of `len` copies of `value`, or `None` when that memory cannot be had (a failed
+/// reservation, instead of the abort of `vec!`). The reservation is of address space: on a
+/// system that overcommits memory, a later shortage of physical memory is not seen here.
+pub(crate) fn try_filled<T: Clone>(len: usize, value: T) -> Option<Vec<T>> {
+    let mut v = Vec::new();
+    v.try_reserve_exact(len).ok()?;
+    v.resize(len, value);
+    Some(v)
 }

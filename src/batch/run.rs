@@ -33,7 +33,7 @@ pub const CHUNK_POLYGONS: usize = 4096;
 pub const CHUNK_VERTICES: usize = 1 << 22;
 
 /// What a run computes and how it reads.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug)]
 pub struct Settings {
     /// What to compute for every polygon.
     pub options: Options,
@@ -41,6 +41,21 @@ pub struct Settings {
     pub from: Option<Format>,
     /// Leave warnings out of the messages.
     pub quiet: bool,
+    /// The most bytes read as one WKT or vertex-list input, one streamed GeoJSON feature or
+    /// top-level value, or one line of GeoJSON Lines, before it is parsed (default
+    /// [`read::limits::MAX_TEXT`], 4 GiB).
+    pub limit: u64,
+}
+
+impl Default for Settings {
+    fn default() -> Settings {
+        Settings {
+            options: Options::default(),
+            from: None,
+            quiet: false,
+            limit: read::limits::MAX_TEXT,
+        }
+    }
 }
 
 /// Told what a run does as it goes; called from worker threads.
@@ -108,7 +123,7 @@ pub fn run_document(
         let mut chunker = Chunker::new(&settings.options, renderer, &mut deliver, observer);
         for input in inputs {
             complete &= match input {
-                Ok(input) => read_input(input, settings.from, &mut chunker)?,
+                Ok(input) => read_input(input, settings, &mut chunker)?,
                 Err(e) => {
                     chunker.push(Item::Failed(Box::new(unreadable(
                         &e.name,
@@ -263,7 +278,7 @@ fn run_file(
                 sink.push_rendered(outcome, rendered)
             };
             let mut chunker = Chunker::new(&settings.options, renderer, &mut deliver, observer);
-            let complete = read_input(input, settings.from, &mut chunker)?;
+            let complete = read_input(input, settings, &mut chunker)?;
             chunker.flush()?;
             complete
         };
@@ -481,7 +496,7 @@ impl<'a> Chunker<'a> {
 /// Reads one input into the chunker; returns whether it was read to its end.
 ///
 /// Errors of the input become outcomes; the `Err` is the output's (from delivering).
-fn read_input(input: &Input, from: Option<Format>, chunker: &mut Chunker) -> io::Result<bool> {
+fn read_input(input: &Input, settings: &Settings, chunker: &mut Chunker) -> io::Result<bool> {
     let source: Arc<str> = Arc::from(input.name());
     let failed = |chunker: &mut Chunker, error: Error| {
         chunker
@@ -504,32 +519,34 @@ fn read_input(input: &Input, from: Option<Format>, chunker: &mut Chunker) -> io:
         Ok(start) => start,
         Err(e) => return failed(chunker, Error::Read(e.to_string())),
     };
-    let format = from.or_else(|| detect_start(extension, &String::from_utf8_lossy(start)));
+    let format = settings
+        .from
+        .or_else(|| detect_start(extension, &String::from_utf8_lossy(start)));
     if format == Some(Format::GeoJson) {
         let lines_by_name = extension.is_some_and(|e| {
             ["ndjson", "geojsonl", "geojsons"].contains(&e.to_ascii_lowercase().as_str())
         });
         if lines_by_name || geojson_stream::looks_line_delimited(start) {
-            return read_lines(&source, reader, chunker);
+            return read_lines(&source, reader, settings.limit, chunker);
         }
         // Binary data is named as such, not as a JSON syntax error (judged on the start only).
         if let Some(error) = read::not_text(start, false) {
             return failed(chunker, Error::Parse(error));
         }
-        return stream_geojson(&source, reader, chunker);
+        return stream_geojson(&source, reader, settings.limit, chunker);
     }
     // Read chunk by chunk, stopping at the first byte that cannot be text (io/read/limits.rs).
     let size = (!input.is_stdin())
         .then(|| std::fs::metadata(&input.path).map(|m| m.len()).ok())
         .flatten();
-    let text = match read::limits::read_text(reader, read::limits::MAX_TEXT, size.unwrap_or(0)) {
+    let text = match read::limits::read_text(reader, settings.limit, size.unwrap_or(0)) {
         Ok(text) => text,
         Err(read::limits::NotRead::Io(e)) => return failed(chunker, Error::Read(e.to_string())),
         Err(read::limits::NotRead::Parse(e)) => return failed(chunker, Error::Parse(e)),
     };
     let format = format.unwrap_or_else(|| read::detect(extension, &text));
     if format == Format::GeoJson {
-        return stream_geojson(&source, text.as_bytes(), chunker);
+        return stream_geojson(&source, text.as_bytes(), settings.limit, chunker);
     }
     // A member of a collection that is not a polygon is reported in its place; the polygons
     // are numbered without it.
@@ -561,43 +578,60 @@ fn read_input(input: &Input, from: Option<Format>, chunker: &mut Chunker) -> io:
 
 /// Reads a GeoJSON Lines input into the chunker, line by line (the lines are parsed in parallel
 /// with their chunk); returns whether it was read to its end. Each line stands alone: a line that
-/// is not JSON, or not a polygon, is reported and the others go on.
+/// is not JSON, or not a polygon, is reported and the others go on. Reading stops at a line of
+/// more than `limit` bytes (an endless line), and at a line holding a NUL byte (binary data,
+/// never text: an endless stream of it would be reported line after line).
 fn read_lines(
     source: &Arc<str>,
     mut reader: impl BufRead,
+    limit: u64,
     chunker: &mut Chunker,
 ) -> io::Result<bool> {
     let mut number = 0;
     let mut features = 0;
     let mut any = false;
+    let mut offset = 0u64; // bytes of the input before this line
+    let mut bytes = Vec::new();
     loop {
-        let mut bytes = Vec::new();
-        match reader.read_until(b'\n', &mut bytes) {
-            Ok(0) => break,
-            Ok(_) => {}
+        let read = match read::limits::read_line(&mut reader, &mut bytes, limit) {
+            Ok(read) if read.bytes == 0 => break,
+            Ok(read) => read,
             Err(e) => {
                 let error = Error::Read(e.to_string());
                 chunker.push(Item::Failed(Box::new(unreadable(source, error))))?;
                 return Ok(false);
             }
-        }
+        };
         number += 1;
-        // A line of binary data is reported alone, like any other bad line.
+        let mut failed = |error: ParseError| {
+            let feature = Arc::new(Feature {
+                number: features,
+                line: Some(number),
+                id: None,
+                properties: None,
+                geometry: Geometry::Failed,
+            });
+            features += 1;
+            let outcome = unreadable(source, Error::Parse(error));
+            chunker.push(failed_feature(outcome, &feature))
+        };
+        if read.too_long && !read.binary {
+            let what = "one line of GeoJSON Lines";
+            let message = read::limits::too_large(limit, what, offset + limit + 1);
+            failed(ParseError::new(format!("line {number}: {message}")))?;
+            return Ok(false);
+        }
+        offset += read.bytes;
+        // A line that is not UTF-8 is reported alone, like any other bad line.
         let text = match read::not_text(&bytes, true) {
             Some(mut error) => {
                 if let Some(location) = &mut error.location {
                     location.line = number;
                 }
-                let feature = Arc::new(Feature {
-                    number: features,
-                    line: Some(number),
-                    id: None,
-                    properties: None,
-                    geometry: Geometry::Failed,
-                });
-                features += 1;
-                let outcome = unreadable(source, Error::Parse(error));
-                chunker.push(failed_feature(outcome, &feature))?;
+                failed(error)?;
+                if read.binary {
+                    return Ok(false);
+                }
                 continue;
             }
             None => String::from_utf8_lossy(&bytes).into_owned(),
@@ -626,10 +660,12 @@ fn read_lines(
     Ok(true)
 }
 
-/// Streams a GeoJSON input into the chunker; returns whether it was read to its end.
+/// Streams a GeoJSON input into the chunker, at most `limit` bytes a feature or top-level
+/// value; returns whether it was read to its end.
 fn stream_geojson(
     source: &Arc<str>,
     reader: impl BufRead,
+    limit: u64,
     chunker: &mut Chunker,
 ) -> io::Result<bool> {
     let mut index = 0;
@@ -683,7 +719,7 @@ fn stream_geojson(
             }
         },
     };
-    let stop = match geojson_stream::stream(reader, &mut emit) {
+    let stop = match geojson_stream::stream_within(reader, limit, &mut emit) {
         Ok(()) => return Ok(true),
         Err(Stop::Output(e)) => return Err(e),
         Err(Stop::Parse(e)) => Error::Parse(e),

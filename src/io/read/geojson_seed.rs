@@ -158,6 +158,11 @@ pub(super) enum Coordinates {
 pub(super) trait FeatureSink {
     /// Element `index` of `features`. An `Err` stops reading (its text is the `serde` error).
     fn feature(&mut self, index: usize, feature: Node) -> Result<(), String>;
+
+    /// What the bytes read from now on belong to: element `index` of `features` (`Some`,
+    /// before each element and before the array's end), or the rest of the collection (`None`,
+    /// after the array). A reader that bounds one feature's size starts counting here.
+    fn reading(&mut self, _index: Option<usize>) {}
 }
 
 /// What becomes of arrays.
@@ -233,10 +238,13 @@ impl<'de> Visitor<'de> for NodeSeed<'_> {
             (Arrays::Rings, _) => Ok(Node::Rings(PolygonLevel.array(seq)?)),
             (Arrays::Stream, Some(sink)) => {
                 let mut index = 0;
+                sink.reading(Some(index));
                 while let Some(feature) = seq.next_element_seed(NodeSeed::skip())? {
                     sink.feature(index, feature).map_err(de::Error::custom)?;
                     index += 1;
+                    sink.reading(Some(index));
                 }
+                sink.reading(None);
                 Ok(Node::Streamed)
             }
             (Arrays::List | Arrays::Stream, _) => {
@@ -755,6 +763,14 @@ impl Level for RingLevel {
         let mut ring = Vec::new();
         while let Some(position) = seq.next_element_seed(LevelSeed(PositionLevel))? {
             match position {
+                // Memory refused is this polygon's failure (reading goes on), not an abort.
+                Ok(_) if ring.try_reserve(1).is_err() => {
+                    let index = ring.len();
+                    drop(ring);
+                    skip_rest(seq)?;
+                    let message = format!("not enough memory to hold the ring: {index} positions read, no room for more");
+                    return Ok(Err(Failure::new(message).within("position", index)));
+                }
                 Ok(position) => ring.push(position),
                 Err(failure) => {
                     let index = ring.len();

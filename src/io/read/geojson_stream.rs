@@ -28,12 +28,19 @@
 //! parallel, and a syntax error costs only its line), and [`looks_line_delimited`] recognises
 //! such an input by its start.
 //!
+//! Size: one feature of a streamed FeatureCollection, or one top-level value (with the blank
+//! space before it), may take at most a cap of bytes ([`super::limits::MAX_TEXT`] by default,
+//! [`stream_within`] to choose): past it reading stops with an error naming the feature (or the
+//! line and column where the value starts) and the byte of the input where it stopped, so that
+//! an endless input, even valid JSON (`[[[0,0],[0,0],...`), does not grow memory without bound.
+//!
 //! Complexity: linear in the input size; memory proportional to the largest feature.
 
 use super::geojson::{
     collection_feature, json_message, top_level, type_of, Failure, Part, JSON_WHITESPACE,
 };
 use super::geojson_seed::{FeatureSink, Node, NodeSeed, Object};
+use super::limits::{too_large, MAX_TEXT};
 use super::{locate, Location, ParseError, RawPolygon};
 use crate::feature::{Feature, Geometry};
 use serde::de::{self, DeserializeSeed};
@@ -72,12 +79,13 @@ pub enum Stop {
     Output(io::Error),
 }
 
-/// Reads a GeoJSON input, pushing each polygon (or failure) to `emit` as it is read.
+/// Reads a GeoJSON input, pushing each polygon (or failure) to `emit` as it is read: as
+/// [`stream_within`] with the default cap, [`MAX_TEXT`] bytes a feature or top-level value.
 ///
 /// # Errors
-/// [`Stop::Parse`] for a JSON syntax error (with line and column), an empty input, or an input
-/// that holds no polygon and no failure; [`Stop::Read`] for an I/O error of `reader`;
-/// [`Stop::Output`] when `emit` fails.
+/// [`Stop::Parse`] for a JSON syntax error (with line and column), an empty input, an input
+/// that holds no polygon and no failure, or a feature or value above the cap; [`Stop::Read`]
+/// for an I/O error of `reader`; [`Stop::Output`] when `emit` fails.
 ///
 /// # Examples
 /// ```
@@ -95,17 +103,56 @@ pub enum Stop {
 /// # Ok::<(), String>(())
 /// ```
 pub fn stream<R: BufRead>(
-    mut reader: R,
+    reader: R,
     emit: &mut dyn FnMut(Event) -> io::Result<()>,
 ) -> Result<(), Stop> {
-    if reader
+    stream_within(reader, MAX_TEXT, emit)
+}
+
+/// [`stream`] with a cap of `limit` bytes for one feature of a streamed FeatureCollection, or
+/// one top-level value and the blank space before it.
+///
+/// # Errors
+/// Those of [`stream`]; past the cap, [`Stop::Parse`] naming the feature (or the line and
+/// column where the value starts) and the byte of the input where reading stopped, after the
+/// events of what came before.
+///
+/// # Examples
+/// ```
+/// use minitri::io::read::geojson_stream::{stream_within, Event, Stop};
+/// use std::io::Read;
+/// // A FeatureCollection whose second feature never ends, though valid so far.
+/// let head = r#"{"type": "FeatureCollection", "features": [
+///   {"type": "Feature", "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 1]]]}},
+///   {"type": "Feature", "geometry": {"type": "Polygon", "coordinates": [[[0, 0]"#;
+/// let endless = head.as_bytes().chain(std::io::repeat(b' ').take(1 << 40));
+/// let mut polygons = 0;
+/// let stop = stream_within(std::io::BufReader::new(endless), 1000, &mut |e| {
+///     polygons += usize::from(matches!(e, Event::Polygon(_)));
+///     Ok(())
+/// });
+/// let Err(Stop::Parse(error)) = stop else { panic!("{stop:?}") };
+/// assert!(error.to_string().starts_with("feature 1: too large: more than 1000 bytes"));
+/// assert_eq!(polygons, 1, "the first feature was read");
+/// # Ok::<(), std::io::Error>(())
+/// ```
+pub fn stream_within<R: BufRead>(
+    mut reader: R,
+    limit: u64,
+    emit: &mut dyn FnMut(Event) -> io::Result<()>,
+) -> Result<(), Stop> {
+    let bom = "\u{feff}".len();
+    let skipped = reader
         .fill_buf()
         .map_err(Stop::Read)?
-        .starts_with("\u{feff}".as_bytes())
-    {
-        reader.consume("\u{feff}".len());
+        .starts_with("\u{feff}".as_bytes());
+    if skipped {
+        reader.consume(bom);
     }
-    let position = Rc::new(RefCell::new(Position::default()));
+    let mut position = Position::default();
+    position.budget.limit = limit;
+    position.budget.total = if skipped { bom as u64 } else { 0 };
+    let position = Rc::new(RefCell::new(position));
     let counting = Counting {
         inner: reader,
         position: Rc::clone(&position),
@@ -117,25 +164,29 @@ pub fn stream<R: BufRead>(
         polygons: 0,
         failures: 0,
         features: 0,
+        position: Rc::clone(&position),
+        within: None,
     };
     // The first value's parts wait until we know whether the input holds several values,
     // which decides whether its failures carry a location (as in `geojson::read`).
     let mut held: Option<(Location, Vec<Deferred>)> = None;
     let mut values = 0usize;
     loop {
+        // The blank space before a value counts with it.
+        position.borrow_mut().budget.start();
         match de.end() {
             Ok(()) => break,
-            Err(e) if e.is_io() => return Err(Stop::Read(e.into())),
+            Err(e) if e.is_io() => {
+                // The value before stands (alone so far: its failures without location).
+                if let Some((_, parts)) = held.take() {
+                    sink.parts(parts, None).map_err(Stop::Output)?;
+                }
+                let here = position.borrow().location();
+                return Err(sink.stopped(e, here, "the blank space after a GeoJSON value"));
+            }
             Err(_) => {} // trailing characters: another value starts here
         }
-        let (line, column) = {
-            let p = position.borrow();
-            (p.line, p.chars)
-        };
-        let start = Location {
-            line,
-            column: column.max(1),
-        };
+        let start = position.borrow().location();
         if let Some((location, parts)) = held.take() {
             sink.parts(parts, Some(location)).map_err(Stop::Output)?;
         }
@@ -148,10 +199,10 @@ pub fn stream<R: BufRead>(
                     sink.parts(parts, Some(start)).map_err(Stop::Output)?;
                 }
             }
+            Err(e) if e.is_io() => return Err(sink.stopped(e, start, "one GeoJSON value")),
             Err(e) => {
                 return Err(match sink.output_error.take() {
                     Some(output) => Stop::Output(output),
-                    None if e.is_io() => Stop::Read(e.into()),
                     None => Stop::Parse(syntax_error(&e, &position.borrow())),
                 })
             }
@@ -353,6 +404,44 @@ struct Position {
     /// The previous line's length in bytes and in characters, without its newline.
     previous: (usize, usize),
     recent: VecDeque<u8>,
+    /// The bytes delivered, against the cap on one feature or value.
+    budget: Budget,
+}
+
+/// How many bytes one feature or top-level value may take ([`stream_within`]), counted from
+/// where it starts.
+#[derive(Debug)]
+struct Budget {
+    /// The cap, in bytes.
+    limit: u64,
+    /// Bytes of the input read so far (a skipped byte-order mark included).
+    total: u64,
+    /// `total` where the current feature or value started.
+    mark: u64,
+    /// The byte of the input (from 1) that went past the cap, once one did.
+    over: Option<u64>,
+}
+
+impl Budget {
+    /// A feature or value starts after the bytes read so far.
+    fn start(&mut self) {
+        self.mark = self.total;
+    }
+
+    /// Counts `count` more bytes; an error (and [`Budget::over`] set) past the cap.
+    fn take(&mut self, count: usize) -> io::Result<()> {
+        let total = self.total + count as u64;
+        if total - self.mark > self.limit {
+            let byte = self.mark + self.limit + 1;
+            self.over = Some(byte);
+            return Err(io::Error::other(format!(
+                "more than {} bytes in one feature, at byte {byte}",
+                self.limit
+            )));
+        }
+        self.total = total;
+        Ok(())
+    }
 }
 
 impl Default for Position {
@@ -363,11 +452,25 @@ impl Default for Position {
             chars: 0,
             previous: (0, 0),
             recent: VecDeque::with_capacity(RECENT),
+            budget: Budget {
+                limit: MAX_TEXT,
+                total: 0,
+                mark: 0,
+                over: None,
+            },
         }
     }
 }
 
 impl Position {
+    /// Where the next byte is: the line and (character) column.
+    fn location(&self) -> Location {
+        Location {
+            line: self.line,
+            column: self.chars.max(1),
+        }
+    }
+
     fn push(&mut self, byte: u8) {
         if self.recent.len() == RECENT {
             self.recent.pop_front();
@@ -434,6 +537,7 @@ impl<R: Read> Read for Counting<R> {
     fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
         let n = self.inner.read(buf)?;
         let mut position = self.position.borrow_mut();
+        position.budget.take(n)?;
         for &byte in buf.get(..n).unwrap_or_default() {
             position.push(byte);
         }
@@ -448,6 +552,10 @@ struct Sink<'e> {
     polygons: usize,
     failures: usize,
     features: usize,
+    /// What the reader delivered (for the cap on one feature or value).
+    position: Rc<RefCell<Position>>,
+    /// The element of a streamed `features` array being read, if one is.
+    within: Option<usize>,
 }
 
 /// A part of a top-level value not pushed yet: a polygon, or the message of a failure (a failed
@@ -456,6 +564,27 @@ struct Sink<'e> {
 type Deferred = Result<RawPolygon, String>;
 
 impl Sink<'_> {
+    /// Why reading stopped on `error`, an I/O error of the deserializer: the cap on one
+    /// feature (the one being read, by its index) or on `what` (at `start`) when that was
+    /// reached, else the reader's error.
+    fn stopped(&mut self, error: serde_json::Error, start: Location, what: &str) -> Stop {
+        if let Some(output) = self.output_error.take() {
+            return Stop::Output(output);
+        }
+        let position = self.position.borrow();
+        let budget = &position.budget;
+        let Some(byte) = budget.over else {
+            return Stop::Read(error.into());
+        };
+        Stop::Parse(match self.within {
+            Some(index) => ParseError::new(format!(
+                "feature {index}: {}",
+                too_large(budget.limit, "one GeoJSON feature", byte)
+            )),
+            None => ParseError::at(start, too_large(budget.limit, what, byte)),
+        })
+    }
+
     /// Announces the next feature ([`Event::Feature`]).
     fn announce(
         &mut self,
@@ -561,6 +690,12 @@ impl FeatureSink for Sink<'_> {
             self.output_error = Some(e);
             "the output failed".to_string()
         })
+    }
+
+    /// Starts counting the next feature's bytes (or the rest of the collection's).
+    fn reading(&mut self, index: Option<usize>) {
+        self.within = index;
+        self.position.borrow_mut().budget.start();
     }
 }
 
@@ -900,6 +1035,53 @@ mod tests {
             read_line_feature("{", 4, 9).0.is_none(),
             "not JSON: no feature"
         );
+    }
+
+    /// Polygons read and the stop, with a cap of `limit` bytes.
+    fn capped(text: &str, limit: u64) -> (usize, Option<String>) {
+        let mut polygons = 0;
+        let stop = stream_within(text.as_bytes(), limit, &mut |e| {
+            polygons += usize::from(matches!(e, Event::Polygon(_)));
+            Ok(())
+        });
+        let stop = stop.err().map(|s| match s {
+            Stop::Parse(e) => e.to_string(),
+            other => format!("{other:?}"),
+        });
+        (polygons, stop)
+    }
+
+    #[test]
+    fn a_feature_or_value_above_the_cap_stops_reading() {
+        let feature = format!(r#"{{"type": "Feature", "geometry": {A}}}"#);
+        let collection =
+            format!(r#"{{"type": "FeatureCollection", "features": [{feature}, {feature}]}}"#);
+        // Each feature is counted alone: a cap just above one feature's size reads them all.
+        let each = feature.len() as u64 + 2;
+        assert_eq!(capped(&collection, each), (2, None));
+        let (polygons, stop) = capped(&collection, each - 3);
+        assert_eq!(polygons, 0);
+        let stop = stop.unwrap();
+        assert!(
+            stop.starts_with("feature 0: too large: more than"),
+            "{stop}"
+        );
+        // The byte where reading stopped, counted in the input (a byte-order mark included).
+        let start = collection.find('[').unwrap() as u64 + 1;
+        let expected = format!("reading stopped at byte {} of the input", start + each - 2);
+        assert!(stop.ends_with(&expected), "{stop}");
+        let marked = format!("\u{feff}{collection}");
+        let expected = format!("reading stopped at byte {} of the input", start + each + 1);
+        assert!(capped(&marked, each - 3).1.unwrap().ends_with(&expected));
+        // Several values: each counted alone, the one too large named by where it starts.
+        let lines = format!("{A}\n{A}\n  {B}\n");
+        assert_eq!(capped(&lines, A.len() as u64 + 1), (2, Some(format!(
+            "line 3, column 3: too large: more than {} bytes in one GeoJSON value (the most read before it is parsed); reading stopped at byte {} of the input",
+            A.len() + 1,
+            // After the second value's last byte, the blank space before the third counted.
+            (2 * A.len() + 1) + (A.len() + 1) + 1
+        ))));
+        assert_eq!(capped(&lines, B.len() as u64 + 3), (4, None));
     }
 
     #[test]

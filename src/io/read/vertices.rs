@@ -140,6 +140,14 @@ pub fn read(text: &str) -> Result<Vec<RawPolygon>, ParseError> {
             let vertex = parse_vertex(content).map_err(|(offset, message)| {
                 ParseError::at(locate(text, start + offset), message)
             })?;
+            // Memory refused is this input's error (the run goes on), not an abort.
+            if ring.try_reserve(1).is_err() {
+                let message = format!(
+                    "not enough memory to hold this polygon: {} vertices of the ring read, no room for more",
+                    ring.len()
+                );
+                return Err(ParseError::at(locate(text, start), message));
+            }
             ring.push(vertex);
         }
     }

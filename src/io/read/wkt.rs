@@ -109,6 +109,7 @@ pub fn read_parts(text: &str) -> Result<Vec<Result<RawPolygon, ParseError>>, Par
         pos: 0,
         parts: Vec::new(),
         dimensions: None,
+        no_room: None,
     };
     if parser.peek().kind == Tok::End {
         return Err(ParseError::new("empty input: no polygon found"));
@@ -215,6 +216,10 @@ struct Parser<'a> {
     /// How many coordinates the current polygon's first point has: every point of a polygon
     /// must have as many (a point with more is most likely a missing comma).
     dimensions: Option<usize>,
+    /// The current polygon could not be stored (memory refused): its error, at the point where
+    /// it happened. The polygon is read to its end (its syntax still checked) and becomes a
+    /// failed part.
+    no_room: Option<ParseError>,
 }
 
 impl<'a> Parser<'a> {
@@ -364,14 +369,16 @@ impl<'a> Parser<'a> {
         match kind {
             Kind::Polygon => {
                 let polygon = self.polygon("'(' or EMPTY after POLYGON")?;
-                self.parts.push(Ok(polygon));
+                let part = self.stored(polygon);
+                self.parts.push(part);
             }
             Kind::MultiPolygon => {
                 self.expect(Tok::Open, "'(' or EMPTY after MULTIPOLYGON")?;
                 loop {
                     if !self.eat_word("EMPTY") {
                         let polygon = self.polygon("'(' opening a polygon, or EMPTY")?;
-                        self.parts.push(Ok(polygon));
+                        let part = self.stored(polygon);
+                        self.parts.push(part);
                     }
                     if !self.list_continues()? {
                         break;
@@ -428,7 +435,12 @@ impl<'a> Parser<'a> {
         self.dimensions = None;
         let mut rings = Vec::new();
         loop {
-            rings.push(self.ring()?);
+            let ring = self.ring()?;
+            if self.no_room.is_none() {
+                rings.push(ring);
+            } else {
+                rings.clear(); // the polygon is dropped: its memory goes back at once
+            }
             if !self.list_continues()? {
                 break;
             }
@@ -457,13 +469,34 @@ impl<'a> Parser<'a> {
         }
         let mut ring = Vec::new();
         loop {
-            ring.push(self.point()?);
+            let token = self.peek();
+            let point = self.point()?;
+            // Memory refused: the polygon is dropped and read on without storing its points.
+            if self.no_room.is_none() && ring.try_reserve(1).is_err() {
+                let message = format!(
+                    "not enough memory to hold this polygon: {} vertices of the ring read, no room for more",
+                    ring.len()
+                );
+                ring = Vec::new();
+                self.no_room = Some(self.error(token, message));
+            }
+            if self.no_room.is_none() {
+                ring.push(point);
+            }
             if !self.list_continues()? {
                 break;
             }
         }
         drop_closing_vertex(&mut ring);
         Ok(ring)
+    }
+
+    /// The part a polygon read makes: the polygon, or the error of memory refused for it.
+    fn stored(&mut self, polygon: RawPolygon) -> Result<RawPolygon, ParseError> {
+        match self.no_room.take() {
+            Some(error) => Err(error),
+            None => Ok(polygon),
+        }
     }
 
     /// Reads `x y [z [m]]`, keeping `x` and `y`.
