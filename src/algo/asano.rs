@@ -156,7 +156,7 @@ pub(crate) fn solve_walk<'a, P: Coord>(
     lines_through: impl Fn(usize) -> &'a [u16],
     deadline: Option<Instant>,
 ) -> Option<WalkTriangulation> {
-    solve_walk_in(Tables::new(m), m, point, is_chord, lines_through)
+    solve_walk_in(Tables::new(m), m, point, is_chord, lines_through, deadline)
 }
 
 /// The DP's tables for a walk of `m` positions, `6 m^2` bytes: the cost of each sub-walk
@@ -195,6 +195,7 @@ pub(crate) fn solve_walk_in<'a, P: Coord>(
     point: impl Fn(usize) -> P,
     is_chord: impl Fn(usize, usize) -> bool,
     lines_through: impl Fn(usize) -> &'a [u16],
+    deadline: Option<Instant>,
 ) -> Option<WalkTriangulation> {
     let n = m;
     let at = |i: usize, j: usize| i * n + j;

@@ -15,7 +15,8 @@
 //! | `source` | the input name (`-` for standard input) |
 //! | `feature` | the feature's number in its source, from 0; for an input without features (WKT, vertex lists) the polygon's; empty for a failure of an input as a whole |
 //! | `line` | for GeoJSON Lines, the feature's line (from 1) |
-//! | `id`, `properties` | the feature's `id` and `properties`, the JSON text exactly as written (a string id keeps its quotes, so `"17"` and `17` stay apart); empty when the feature has none |
+//! | `id` | the feature's `id`: a string as its text (`b-1`), a number exactly as written (`12.50`); empty when the feature has none (the JSON output keeps the id's JSON text, where `"17"` and `17` differ) |
+//! | `properties` | the feature's `properties`, the JSON text exactly as written; empty when it has none |
 //! | `ok` | `true` when every part was triangulated, else `false` |
 //! | `algorithm`, `parts`, `triangle_count`, `degenerate_count`, `pseudotriangle_count`, `optimal` | as the members of the same name of `--to geojson`'s `properties.minitri`: empty where that member is absent (no part triangulated; `triangle_count` and `degenerate_count` for `pseudo` and `pseudo-hull`, `pseudotriangle_count` for the others) |
 //! | `errors` | the messages, joined by `; ` (each prefixed with `part k: ` for a feature of several parts, `piece k: ` for a piece of a polygon that `--repair` split) |
@@ -99,6 +100,15 @@ fn write_record(out: &mut impl Write, record: &[Rendered]) -> io::Result<()> {
     }
 }
 
+/// The `id` field: a string id as its text (`b-1`, what a join in a GIS compares with), any
+/// other id (a number) as written (`12.50` stays `12.50`).
+fn id_text(value: Option<&serde_json::value::RawValue>) -> String {
+    let Some(value) = value else {
+        return String::new();
+    };
+    serde_json::from_str::<String>(value.get()).unwrap_or_else(|_| value.get().to_string())
+}
+
 /// The fields of one record's row (`first` its first outcome), in the order of [`COLUMNS`].
 fn row(first: &Outcome, record: &[Rendered]) -> [String; COLUMNS.len()] {
     let identity = first.feature.as_ref();
@@ -128,7 +138,7 @@ fn row(first: &Outcome, record: &[Rendered]) -> [String; COLUMNS.len()] {
             .and_then(|id| id.feature.line)
             .map(|l| l.to_string())
             .unwrap_or_default(),
-        raw(identity.and_then(|id| id.feature.id.as_deref())),
+        id_text(identity.and_then(|id| id.feature.id.as_deref())),
         raw(identity.and_then(|id| id.feature.properties.as_deref())),
         summary.ok().to_string(),
         summary.algorithm.unwrap_or_default().to_string(),
