@@ -236,22 +236,9 @@ impl Fields {
     }
 }
 
-/// Appends `value` in decimal, as `serde_json` writes an unsigned number.
-pub(crate) fn push_number(out: &mut String, mut value: usize) {
-    let mut digits = [0u8; 20];
-    let mut at = digits.len();
-    loop {
-        at -= 1;
-        // A remainder below 10: the cast cannot truncate.
-        digits[at] = b'0' + (value % 10) as u8;
-        value /= 10;
-        if value == 0 {
-            break;
-        }
-    }
-    for &digit in &digits[at..] {
-        out.push(char::from(digit));
-    }
+/// Appends `value` in decimal, as `serde_json` writes an unsigned number (with the same `itoa`).
+pub(crate) fn push_number(out: &mut String, value: usize) {
+    out.push_str(itoa::Buffer::new().format(value));
 }
 
 /// The fields of a triangulated polygon after its identity and `piece`, in order.
