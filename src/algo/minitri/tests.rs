@@ -8,6 +8,7 @@ use super::ladder::LadderPolicy;
 use super::mis::{crossing_components, maximum_independent_set_with, Effort, Method};
 use super::triangulate;
 use crate::algo::asano;
+use crate::geom::kernel::Coord;
 use crate::geom::polygon::Polygon;
 use crate::test_support::{plain_problems, polygon, vertex_at, U_SHAPE};
 
@@ -1003,12 +1004,13 @@ fn chord_ends_sort_like_the_reference_stable_sort() {
     let mut rnd = crate::test_support::xorshift(0x50e7_e4d5);
     let mut longest = 0;
     for k in 0..3000 {
+        let size = 6 + rnd(30) as usize;
         let ring = if k % 3 == 0 {
-            random_star(&mut rnd, 6 + rnd(30) as usize, 8)
+            random_star(&mut rnd, size, 8)
         } else {
             random_ring(&mut rnd, 40)
         };
-        let Ok(p) = Polygon::from_raw(&crate::test_support::raw(&[&ring])) else {
+        let Ok((p, _)) = Polygon::from_raw(&crate::test_support::raw(&[&ring])) else {
             continue;
         };
         let mdts = minimally_degenerate(&p);
