@@ -17,12 +17,6 @@ use std::process::ExitCode;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
-/// mimalloc rather than the system allocator: a batch of small polygons allocates and frees
-/// many small vectors per polygon, where the system's malloc and free took about a seventh of
-/// all instructions (docs/benchmarks.md, "Small polygons").
-#[global_allocator]
-static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
-
 fn main() -> ExitCode {
     match run() {
         Ok(code) => code,
