@@ -5,8 +5,11 @@
 //! Run (release build, as every `cargo bench`):
 //!
 //! ```text
-//! cargo bench --bench batch -- [--count 100000] [--threads 1,2] [--seed 1]
+//! cargo bench --bench batch -- [--count 100000] [--threads 1,2] [--seed 1] [--write PATH]
 //! ```
+//!
+//! `--write PATH` also keeps the GeoJSON Lines file at `PATH` (to time the `minitri` binary on
+//! it: `minitri --jobs 1 -q PATH -o out.json`).
 //!
 //! What is measured, wall time of one run each:
 //!
@@ -33,6 +36,7 @@ struct Args {
     count: usize,
     threads: Vec<usize>,
     seed: u64,
+    write: Option<std::path::PathBuf>,
 }
 
 fn parse_args() -> Result<Args, String> {
@@ -40,6 +44,7 @@ fn parse_args() -> Result<Args, String> {
         count: 100_000,
         threads: vec![1, 2],
         seed: 1,
+        write: None,
     };
     let mut it = std::env::args().skip(1);
     while let Some(flag) = it.next() {
@@ -53,10 +58,11 @@ fn parse_args() -> Result<Args, String> {
                     .map(|t| t.parse().map_err(|e| format!("--threads: {e}")))
                     .collect::<Result<_, _>>()?;
             }
+            "--write" => args.write = Some(value()?.into()),
             "--bench" => {} // passed by `cargo bench`
             "--help" | "-h" => {
                 return Err(
-                    "usage: cargo bench --bench batch -- [--count N] [--threads 1,2] [--seed S]"
+                    "usage: cargo bench --bench batch -- [--count N] [--threads 1,2] [--seed S] [--write PATH]"
                         .into(),
                 )
             }
@@ -84,6 +90,9 @@ fn main() -> Result<(), String> {
         text.push_str("]]}\n");
     }
     std::fs::write(&path, &text).map_err(|e| e.to_string())?;
+    if let Some(keep) = &args.write {
+        std::fs::write(keep, &text).map_err(|e| format!("{}: {e}", keep.display()))?;
+    }
     eprintln!(
         "{} polygons, {} vertices ({:.1} per polygon), {:.1} MB of GeoJSON Lines",
         args.count,

@@ -39,6 +39,60 @@ pub fn chords_cross((a, b): (usize, usize), (c, d): (usize, usize)) -> bool {
     (a < c && c < b && b < d) || (c < a && a < d && d < b)
 }
 
+/// Sorts the chord ends `(vertex, triangle, middle)` by vertex, the ends at one vertex by the
+/// angle of their chord from the direction of `next(vertex)`, furthest first, equal angles in
+/// triangle order: the order of a stable sort by (vertex, angle) of the ends listed by triangle.
+/// Done as a counting sort by vertex (stable, so each vertex's ends stay in triangle order), then
+/// a stable sort of each vertex's ends by angle (by insertion: they are few).
+pub(super) fn sort_ends<P: Coord>(polygon: &Polygon<P>, ends: &mut Vec<(usize, usize, usize)>) {
+    let mut start = vec![0usize; polygon.len() + 1];
+    for &(v, _, _) in ends.iter() {
+        start[v + 1] += 1;
+    }
+    for v in 0..polygon.len() {
+        start[v + 1] += start[v];
+    }
+    let mut sorted = vec![(0, 0, 0); ends.len()];
+    let mut fill = start.clone();
+    for &end in ends.iter() {
+        sorted[fill[end.0]] = end;
+        fill[end.0] += 1;
+    }
+    for (v, bounds) in start.windows(2).enumerate() {
+        let run = &mut sorted[bounds[0]..bounds[1]];
+        if run.len() < 2 {
+            continue;
+        }
+        let (c, r) = (polygon.point(v), polygon.point(polygon.next(v)));
+        sort_stable(run, |&(_, _, x), &(_, _, y)| {
+            cmp_angle_from(c, r, polygon.point(x), polygon.point(y)).reverse()
+        });
+    }
+    *ends = sorted;
+}
+
+/// The runs up to this length are sorted by insertion ([`sort_stable`]).
+const INSERTION_UP_TO: usize = 16;
+
+/// A stable sort of `items` by `cmp`: by insertion (no allocation) for a short run, as the chord
+/// ends at one vertex nearly always are, else the standard stable sort; both give the one order
+/// of a stable sort.
+fn sort_stable<T: Copy>(items: &mut [T], cmp: impl Fn(&T, &T) -> std::cmp::Ordering) {
+    if items.len() > INSERTION_UP_TO {
+        items.sort_by(cmp);
+        return;
+    }
+    for k in 1..items.len() {
+        let item = items[k];
+        let mut at = k;
+        while at > 0 && cmp(&items[at - 1], &item) == std::cmp::Ordering::Greater {
+            items[at] = items[at - 1];
+            at -= 1;
+        }
+        items[at] = item;
+    }
+}
+
 /// Builds C(P) for the triangles `mdts` of `polygon`.
 pub fn circle<P: Coord>(polygon: &Polygon<P>, mdts: &[Degenerate]) -> Circle {
     // (vertex at the endpoint, triangle, middle vertex the chord heads to)
@@ -47,12 +101,7 @@ pub fn circle<P: Coord>(polygon: &Polygon<P>, mdts: &[Degenerate]) -> Circle {
         ends.push((m.a, t, m.b));
         ends.push((m.c, t, m.b));
     }
-    ends.sort_by(|&(v, _, x), &(w, _, y)| {
-        v.cmp(&w).then_with(|| {
-            let (c, r) = (polygon.point(v), polygon.point(polygon.next(v)));
-            cmp_angle_from(c, r, polygon.point(x), polygon.point(y)).reverse()
-        })
-    });
+    sort_ends(polygon, &mut ends);
     let mut chords = vec![(usize::MAX, usize::MAX); mdts.len()];
     let mut owner = Vec::with_capacity(ends.len());
     for (position, &(_, t, _)) in ends.iter().enumerate() {

@@ -8,6 +8,7 @@ use super::ladder::LadderPolicy;
 use super::mis::{crossing_components, maximum_independent_set_with, Effort, Method};
 use super::triangulate;
 use crate::algo::asano;
+use crate::geom::kernel::Coord;
 use crate::geom::polygon::Polygon;
 use crate::test_support::{plain_problems, polygon, vertex_at, U_SHAPE};
 
@@ -976,4 +977,59 @@ fn the_dependency_graph_keeps_to_its_budget() {
     assert_eq!(dependency::graph_within(&p, &mdts, 100, None), None);
     let past = Some(std::time::Instant::now());
     assert_eq!(dependency::graph_within(&p, &mdts, u64::MAX, past), None);
+}
+
+/// `circle::sort_ends` (a counting sort by vertex, then the ends at each vertex by angle) gives
+/// the order of the reference: one stable sort of the ends, listed by triangle, by vertex then
+/// angle. On 3000 random grid polygons (many degenerate triangles sharing ends) and random stars,
+/// and on a list with one vertex holding more ends than an insertion run (the standard sort's
+/// branch).
+#[test]
+fn chord_ends_sort_like_the_reference_stable_sort() {
+    use crate::geom::kernel::cmp_angle_from;
+    fn reference<P: Coord>(polygon: &Polygon<P>, ends: &mut [(usize, usize, usize)]) {
+        ends.sort_by(|&(v, _, x), &(w, _, y)| {
+            v.cmp(&w).then_with(|| {
+                let (c, r) = (polygon.point(v), polygon.point(polygon.next(v)));
+                cmp_angle_from(c, r, polygon.point(x), polygon.point(y)).reverse()
+            })
+        });
+    }
+    let check = |p: &Polygon, mut ends: Vec<(usize, usize, usize)>| {
+        let mut expected = ends.clone();
+        reference(p, &mut expected);
+        super::circle::sort_ends(p, &mut ends);
+        assert_eq!(ends, expected);
+    };
+    let mut rnd = crate::test_support::xorshift(0x50e7_e4d5);
+    let mut longest = 0;
+    for k in 0..3000 {
+        let size = 6 + rnd(30) as usize;
+        let ring = if k % 3 == 0 {
+            random_star(&mut rnd, size, 8)
+        } else {
+            random_ring(&mut rnd, 40)
+        };
+        let Ok((p, _)) = Polygon::from_raw(&crate::test_support::raw(&[&ring])) else {
+            continue;
+        };
+        let mdts = minimally_degenerate(&p);
+        let ends: Vec<(usize, usize, usize)> = mdts
+            .iter()
+            .enumerate()
+            .flat_map(|(t, m)| [(m.a, t, m.b), (m.c, t, m.b)])
+            .collect();
+        check(&p, ends);
+        // Every pair of distinct vertices as an end and a direction: long runs at each vertex,
+        // equal angles included (collinear vertices).
+        let n = p.len();
+        let all: Vec<(usize, usize, usize)> = (0..n)
+            .flat_map(|v| (0..n).filter(move |&x| x != v).map(move |x| (v, 0, x)))
+            .enumerate()
+            .map(|(t, (v, _, x))| (v, t, x))
+            .collect();
+        longest = longest.max(n - 1);
+        check(&p, all);
+    }
+    assert!(longest > 16, "a run longer than the insertion sort's");
 }

@@ -125,97 +125,157 @@ impl<W: Write> JsonWriter<W> {
 
 /// The text of a solved outcome in the `polygons` list (`None` for an error, which goes to the
 /// `errors` list at the end). Depends on the outcome only, so a batch makes it in parallel.
+/// Written field by field into one string (numbers and triangle lists without `format!` or
+/// intermediate strings: this is most of a small polygon's output cost).
 pub fn render(outcome: &Outcome) -> Option<String> {
-    use std::fmt::Write as _;
     let (Ok(solved), Some(polygon), Some(index)) =
         (&outcome.result, &outcome.polygon, outcome.index)
     else {
         return None;
     };
     let t = &solved.triangulation;
-    let fields: Vec<(&str, String)> = match &solved.pseudo {
-        Some(p) => {
-            crate::with_polygon!(polygon, q => pseudo_fields(outcome, index, q, t.algorithm, p))
-        }
-        None => crate::with_polygon!(polygon, q => triangle_fields(outcome, index, q, t)),
-    };
-    let mut fields = fields;
+    let mut out = Fields(String::with_capacity(512 + 24 * t.triangles.len()));
+    out.0.push_str("    {\n");
+    out.text("source", &json(&outcome.source));
+    out.number("index", index);
     if let Some(feature) = &outcome.feature {
         // Which input feature this is, right after `index`.
-        let mut identity = vec![("feature", json(&feature.feature.number))];
+        out.number("feature", feature.feature.number);
         if feature.multipart() {
-            identity.push(("part", json(&feature.part)));
+            out.number("part", feature.part);
         }
         if let Some(line) = feature.feature.line {
-            identity.push(("line", json(&line)));
+            out.number("line", line);
         }
         if let Some(id) = &feature.feature.id {
-            identity.push(("id", id.get().to_string()));
+            out.text("id", id.get());
         }
         if let Some(properties) = &feature.feature.properties {
-            identity.push(("properties", properties.get().to_string()));
+            out.text("properties", properties.get());
         }
-        fields.splice(2..2, identity);
     }
-    let mut out = String::from("    {\n");
     // `piece` only for a repaired polygon split into several.
-    for (name, value) in fields.iter().filter(|(_, value)| !value.is_empty()) {
-        let _ = writeln!(out, "      \"{name}\": {value},");
+    if let Some(piece) = outcome.piece {
+        out.number("piece", piece);
     }
-    let warnings: Vec<String> = outcome.warnings.iter().map(ToString::to_string).collect();
-    let _ = write!(out, "      \"warnings\": {}", json(&warnings));
+    match &solved.pseudo {
+        Some(p) => {
+            let fields = crate::with_polygon!(polygon, q => pseudo_fields(q, t.algorithm, p));
+            for (name, value) in &fields {
+                out.text(name, value);
+            }
+        }
+        None => crate::with_polygon!(polygon, q => triangle_fields(&mut out, q, t)),
+    }
+    let mut out = out.0;
+    out.push_str("      \"warnings\": ");
+    if outcome.warnings.is_empty() {
+        out.push_str("[]");
+    } else {
+        let warnings: Vec<String> = outcome.warnings.iter().map(ToString::to_string).collect();
+        out.push_str(&json(&warnings));
+    }
     if let Some(repaired) = &outcome.repaired {
-        let _ = write!(out, ",\n      \"repaired\": {}", json(repaired));
+        out.push_str(",\n      \"repaired\": ");
+        out.push_str(&json(repaired));
     }
     if let Some(v) = &solved.verification {
-        let _ = write!(out, ",\n      \"verification\": {}", json(v));
+        out.push_str(",\n      \"verification\": ");
+        out.push_str(&json(v));
     }
     out.push_str("\n    }");
     Some(out)
 }
 
-/// The fields of a triangulated polygon, in order.
+/// The lines `      "name": value,` of a polygon's object, written into one string.
+struct Fields(String);
+
+impl Fields {
+    /// The field `name` with `value`, JSON text already.
+    fn text(&mut self, name: &str, value: &str) {
+        self.name(name);
+        self.0.push_str(value);
+        self.0.push_str(",\n");
+    }
+
+    /// The field `name` with a number.
+    fn number(&mut self, name: &str, value: usize) {
+        self.name(name);
+        push_number(&mut self.0, value);
+        self.0.push_str(",\n");
+    }
+
+    /// The field `name` with `true` or `false`.
+    fn boolean(&mut self, name: &str, value: bool) {
+        self.text(name, if value { "true" } else { "false" });
+    }
+
+    /// The field `name` with triangles as input vertex numbers: `[[a,b,c],...]`, as
+    /// `json(&ids(polygon, triangles))` writes it.
+    fn triangles<P: Coord>(&mut self, name: &str, polygon: &Polygon<P>, triangles: &[[usize; 3]]) {
+        self.name(name);
+        self.0.push('[');
+        for (k, triangle) in triangles.iter().enumerate() {
+            self.0.push_str(if k == 0 { "[" } else { ",[" });
+            for (j, &v) in triangle.iter().enumerate() {
+                if j > 0 {
+                    self.0.push(',');
+                }
+                push_number(&mut self.0, polygon.id(v));
+            }
+            self.0.push(']');
+        }
+        self.0.push_str("],\n");
+    }
+
+    /// The start of a line: `      "name": `.
+    fn name(&mut self, name: &str) {
+        self.0.push_str("      \"");
+        self.0.push_str(name);
+        self.0.push_str("\": ");
+    }
+}
+
+/// Appends `value` in decimal, as `serde_json` writes an unsigned number (with the same `itoa`).
+pub(crate) fn push_number(out: &mut String, value: usize) {
+    out.push_str(itoa::Buffer::new().format(value));
+}
+
+/// The fields of a triangulated polygon after its identity and `piece`, in order.
 fn triangle_fields<P: Coord>(
-    outcome: &Outcome,
-    index: usize,
+    out: &mut Fields,
     polygon: &Polygon<P>,
     t: &crate::algo::Triangulation,
-) -> Vec<(&'static str, String)> {
-    let mut fields: Vec<(&str, String)> = vec![
-        ("source", json(&outcome.source)),
-        ("index", json(&index)),
-        ("piece", outcome.piece.map_or(String::new(), |k| json(&k))),
-        ("algorithm", json(t.algorithm.name())),
-        ("vertices", json(&polygon.len())),
-        ("holes", json(&polygon.input_holes())),
-        ("triangle_count", json(&t.triangles.len())),
-        ("degenerate_count", json(&t.degenerate.len())),
-        ("triangles", json(&ids(polygon, &t.triangles))),
-        ("degenerate_triangles", json(&ids(polygon, &t.degenerate))),
-        ("optimal", json(&t.optimal)),
-        ("input_vertices", json(&polygon.input_vertices())),
-        ("flat_vertices", json(&polygon.flat_vertices())),
-        ("bounds", {
-            let (lower, upper) = polygon.minimum_bounds();
-            format!("{{\"lower\": {lower}, \"upper\": {upper}}}")
-        }),
-    ];
-    touches_field(&mut fields, polygon);
+) {
+    out.text("algorithm", &json(t.algorithm.name()));
+    out.number("vertices", polygon.len());
+    out.number("holes", polygon.input_holes());
+    // How many touches join rings into boundary walks, for a polygon whose rings touch (absent
+    // otherwise, so outputs without touches are unchanged).
+    if polygon.touches() > 0 {
+        out.number("touches", polygon.touches());
+    }
+    out.number("triangle_count", t.triangles.len());
+    out.number("degenerate_count", t.degenerate.len());
+    out.triangles("triangles", polygon, &t.triangles);
+    out.triangles("degenerate_triangles", polygon, &t.degenerate);
+    out.boolean("optimal", t.optimal);
+    // A search cut short: what is proved about the minimum, and why it is not proved minimum.
     if let Some(lower) = t.lower_bound {
-        // A search cut short: what is proved about the minimum, right after `optimal`.
-        let after = fields.iter().position(|(name, _)| *name == "optimal");
-        let at = after.map_or(fields.len(), |i| i + 1);
-        fields.insert(at, ("lower_bound", json(&lower)));
+        out.number("lower_bound", lower);
     }
     if let Some(stopped) = t.stopped {
-        // Why the count is not proved minimum, right after `optimal` (and `lower_bound`).
-        let after = ["lower_bound", "optimal"]
-            .iter()
-            .find_map(|field| fields.iter().position(|(name, _)| name == field));
-        let at = after.map_or(fields.len(), |i| i + 1);
-        fields.insert(at, ("stopped_by", json(stopped.name())));
+        out.text("stopped_by", &json(stopped.name()));
     }
-    fields
+    out.number("input_vertices", polygon.input_vertices());
+    out.number("flat_vertices", polygon.flat_vertices());
+    let (lower, upper) = polygon.minimum_bounds();
+    out.name("bounds");
+    out.0.push_str("{\"lower\": ");
+    push_number(&mut out.0, lower);
+    out.0.push_str(", \"upper\": ");
+    push_number(&mut out.0, upper);
+    out.0.push_str("},\n");
 }
 
 /// `touches` (how many touches join rings into boundary walks), right after `holes`, for a
@@ -230,15 +290,13 @@ fn touches_field<P: Coord>(fields: &mut Vec<(&'static str, String)>, polygon: &P
     }
 }
 
-/// The fields of a pseudotriangulated polygon (`pseudo`, `pseudo-hull`), in order: no triangle
-/// fields, but `pseudotriangle_count`, `edge_count` and `pseudotriangles` (each `cycle`
-/// counter-clockwise from a corner, and its three `corners`); for `pseudo-hull` also
-/// `reflex_vertices` (r), `big_angles` (N), `corollary_count` (2n - r - 2) and `minimum_count`
-/// (2n - N - 2, the same in general position). `optimal` says whether the count is proved minimum (`pseudo-hull`) rather than
-/// only minimal (`pseudo`).
+/// The fields of a pseudotriangulated polygon (`pseudo`, `pseudo-hull`) after its identity and
+/// `piece`, in order: no triangle fields, but `pseudotriangle_count`, `edge_count` and
+/// `pseudotriangles` (each `cycle` counter-clockwise from a corner, and its three `corners`); for
+/// `pseudo-hull` also `reflex_vertices` (r), `big_angles` (N), `corollary_count` (2n - r - 2) and
+/// `minimum_count` (2n - N - 2, the same in general position). `optimal` says whether the count
+/// is proved minimum (`pseudo-hull`) rather than only minimal (`pseudo`).
 fn pseudo_fields<P: Coord>(
-    outcome: &Outcome,
-    index: usize,
     polygon: &Polygon<P>,
     algorithm: crate::algo::Algorithm,
     p: &crate::algo::Pseudotriangulation,
@@ -258,9 +316,6 @@ fn pseudo_fields<P: Coord>(
         .collect();
     let n = polygon.len();
     let mut fields: Vec<(&str, String)> = vec![
-        ("source", json(&outcome.source)),
-        ("index", json(&index)),
-        ("piece", outcome.piece.map_or(String::new(), |k| json(&k))),
         ("algorithm", json(algorithm.name())),
         ("vertices", json(&n)),
         ("holes", json(&polygon.input_holes())),
