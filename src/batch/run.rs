@@ -635,7 +635,7 @@ fn read_lines(
                 continue;
             }
             // Valid UTF-8 (checked just above): taken as it is, without a copy.
-            None => String::from_utf8(bytes)
+            None => String::from_utf8(std::mem::take(&mut bytes))
                 .unwrap_or_else(|e| String::from_utf8_lossy(e.as_bytes()).into_owned()),
         };
         if text.trim_matches(JSON_WHITESPACE).is_empty() {
