@@ -285,14 +285,7 @@ fn walk_out<P: Coord>(
     nearest: Option<&Cut<P>>,
     out: &mut Vec<usize>,
 ) {
-    let wedge = |u: usize, target: P| {
-        in_closed_wedge(
-            polygon.point(polygon.prev(u)),
-            polygon.point(u),
-            polygon.point(polygon.next(u)),
-            target,
-        )
-    };
+    let wedge = |v: usize, target: P| polygon.angle_holds(v, target);
     let mut start = 0;
     while start < group.len() {
         let p = polygon.point(group[start]);
@@ -324,14 +317,7 @@ fn walk_out<P: Coord>(
 pub(crate) fn is_chord_naive<P: Coord>(polygon: &Polygon<P>, v: usize, u: usize) -> bool {
     use crate::geom::kernel::{properly_cross, strictly_between};
     let (a, b) = (polygon.point(v), polygon.point(u));
-    let wedge = |w: usize, target: P| {
-        in_closed_wedge(
-            polygon.point(polygon.prev(w)),
-            polygon.point(w),
-            polygon.point(polygon.next(w)),
-            target,
-        )
-    };
+    let wedge = |v: usize, target: P| polygon.angle_holds(v, target);
     if !wedge(v, b) || !wedge(u, a) {
         return false;
     }

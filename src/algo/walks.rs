@@ -324,14 +324,7 @@ pub(crate) fn is_chord<P: Coord>(polygon: &Polygon<P>, i: usize, j: usize) -> bo
     if a == b {
         return false;
     }
-    let wedge = |v: usize, t: P| {
-        in_closed_wedge(
-            polygon.point(polygon.prev(v)),
-            polygon.point(v),
-            polygon.point(polygon.next(v)),
-            t,
-        )
-    };
+    let wedge = |v: usize, target: P| polygon.angle_holds(v, target);
     if !wedge(i, b) || !wedge(j, a) {
         return false;
     }
@@ -405,14 +398,7 @@ fn junctions_among<P: Coord>(
     triangles: &[[usize; 3]],
     candidates: &[usize],
 ) -> Vec<[usize; 3]> {
-    let wedge = |v: usize, t: P| {
-        in_closed_wedge(
-            polygon.point(polygon.prev(v)),
-            polygon.point(v),
-            polygon.point(polygon.next(v)),
-            t,
-        )
-    };
+    let wedge = |v: usize, target: P| polygon.angle_holds(v, target);
     let mut out = Vec::new();
     for t in triangles {
         for k in 0..3 {

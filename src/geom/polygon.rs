@@ -637,6 +637,15 @@ impl<P: Coord> Polygon<P> {
         }
     }
 
+    /// Whether the direction from stored vertex `v` towards `target` lies in `v`'s closed
+    /// interior angle ([`super::kernel::in_closed_wedge`]; for a copy of a touch point, its
+    /// sector).
+    #[inline]
+    pub fn angle_holds(&self, v: usize, target: P) -> bool {
+        let (prev, next) = (self.point(self.prev(v)), self.point(self.next(v)));
+        super::kernel::in_closed_wedge(prev, self.point(v), next, target)
+    }
+
     /// The previous vertex along the boundary.
     #[inline]
     pub fn prev(&self, i: usize) -> usize {

@@ -63,14 +63,7 @@ pub fn triangulate_within<P: Coord>(
         return triangulate_general(polygon, deadline);
     }
     let (mdts, base) = degenerate::minimally_degenerate_and_mesh(polygon);
-    let chosen: Vec<degenerate::Degenerate> = {
-        let circle = circle::circle(polygon, &mdts);
-        let chains = chains::chains(polygon, &mdts);
-        mis::maximum_independent_set(&circle, &chains)
-            .into_iter()
-            .map(|t| mdts[t])
-            .collect()
-    };
+    let chosen = circle_mis(polygon, &mdts);
     drop(mdts);
     // With nothing chosen the only piece is P itself, and step 1's plain triangulation is one;
     // otherwise it is dropped before the pieces are made (peak memory).
@@ -151,14 +144,7 @@ pub fn triangulate_walks<P: Coord>(
     }
     // One walk (a weakly simple polygon): steps 2 and 3 as for a simple polygon, the walk read
     // as the circle (stored vertices are in walk order): polynomial, no search.
-    let chosen: Vec<degenerate::Degenerate> = {
-        let circle = circle::circle(polygon, &mdts);
-        let chains = chains::chains(polygon, &mdts);
-        mis::maximum_independent_set(&circle, &chains)
-            .into_iter()
-            .map(|t| mdts[t])
-            .collect()
-    };
+    let chosen = circle_mis(polygon, &mdts);
     let triangles = cut::triangulate_with_cuts(polygon, base, &chosen)?;
     Ok(Triangulation {
         algorithm: Algorithm::Minitri,
@@ -168,6 +154,20 @@ pub fn triangulate_walks<P: Coord>(
         lower_bound: None,
         stopped: None,
     })
+}
+
+/// Steps 2 and 3 without holes (one boundary): the circle, its 3b-chains, and a maximum
+/// independent set on them, as triangles.
+fn circle_mis<P: Coord>(
+    polygon: &Polygon<P>,
+    mdts: &[degenerate::Degenerate],
+) -> Vec<degenerate::Degenerate> {
+    let circle = circle::circle(polygon, mdts);
+    let chains = chains::chains(polygon, mdts);
+    mis::maximum_independent_set(&circle, &chains)
+        .into_iter()
+        .map(|t| mdts[t])
+        .collect()
 }
 
 /// Steps 2 to 5 of [`triangulate_general`], from the minimally degenerate triangles found
