@@ -127,7 +127,7 @@ pub fn read_parts(text: &str) -> Result<Vec<Result<RawPolygon, ParseError>>, Par
 /// let parts = wkt::read_parts_within(text, 3)?;
 /// assert_eq!(
 ///     parts[0].as_ref().unwrap_err().to_string(),
-///     "line 1, column 34: too many vertices: more than 3 in one polygon (the most held while \
+///     "line 1, column 32: too many vertices: more than 3 in one polygon (the most held while \
 ///      reading; --max-vertices raises it); the rest of it was read but not kept"
 /// );
 /// assert!(parts[1].is_ok());
