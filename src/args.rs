@@ -96,6 +96,12 @@ pub struct Flags {
     /// false, a lower bound and "stopped_by": "time limit"
     #[arg(long, value_name = "SECONDS", default_value_t = 10.0, value_parser = seconds)]
     pub time_limit: f64,
+    /// Most vertices one polygon may hold while it is read, all its rings together (GeoJSON: one
+    /// feature, all its polygons together), about 64 bytes each; past it the polygon is an error
+    /// and the others go on
+    #[arg(long, value_name = "N", default_value_t = minitri::io::read::limits::MAX_VERTICES as u64,
+        value_parser = clap::value_parser!(u64).range(1..))]
+    pub max_vertices: u64,
     /// No warnings, summary or progress bar on standard error (errors are still reported)
     #[arg(short, long)]
     pub quiet: bool,
@@ -196,6 +202,8 @@ pub struct Config {
     pub jobs: Option<usize>,
     /// Suppress warnings, the summary and the progress bar.
     pub quiet: bool,
+    /// The most vertices one polygon (GeoJSON: one feature) may hold while it is read.
+    pub max_vertices: usize,
 }
 
 impl Flags {
@@ -325,6 +333,7 @@ impl Flags {
             },
             jobs: self.jobs.map(|n| n as usize),
             quiet: self.quiet,
+            max_vertices: usize::try_from(self.max_vertices).unwrap_or(usize::MAX),
         }
     }
 }

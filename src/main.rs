@@ -140,6 +140,7 @@ fn run() -> anyhow::Result<ExitCode> {
         quiet: config.quiet,
         // The cap on what one input (WKT) or feature (GeoJSON) may hold; lowered by tests only.
         limit: limits::limit_from(std::env::var_os(limits::LIMIT_FOR_TESTS).as_deref()),
+        max_vertices: config.max_vertices,
     };
     let show_progress = !config.quiet && !typing && io::stderr().is_terminal();
     let progress = Progress::new(show_progress, inputs.len());

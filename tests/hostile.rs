@@ -643,3 +643,83 @@ fn fault_injection_short() {
 fn fault_injection_full() {
     kill_batches(1000, 50, 2024);
 }
+
+/// The message of a polygon (or GeoJSON feature: `what`) past `--max-vertices max`.
+fn too_many(max: &str, what: &str) -> String {
+    format!(
+        "too many vertices: more than {max} in {what} (the most held while reading; \
+         --max-vertices raises it); the rest of it was read but not kept"
+    )
+}
+
+#[test]
+fn a_polygon_with_too_many_vertices_is_reported_and_the_others_go_on() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    // 2 x 10^6 vertices, 128 MB once read: under 200 MB of address space with a cap of 10,000
+    // vertices, each reader stops keeping them (memory refused would say "not enough memory").
+    let points = zigzag(2_000_000);
+    let ring: Vec<String> = points.iter().map(|(x, y)| format!("[{x},{y}]")).collect();
+    let big = format!(
+        r#"{{"type":"Polygon","coordinates":[[{}]]}}"#,
+        ring.join(",")
+    );
+    fs::write(dir.join("big.geojsonl"), format!("{big}\n{TRIANGLE}\n")).unwrap();
+    let collection = format!(
+        r#"{{"type":"FeatureCollection","features":[{{"type":"Feature","geometry":{big}}},
+        {{"type":"Feature","geometry":{TRIANGLE}}}]}}"#
+    );
+    fs::write(dir.join("big.geojson"), collection).unwrap();
+    let ring: Vec<String> = points.iter().map(|(x, y)| format!("{x} {y}")).collect();
+    let wkt = format!("MULTIPOLYGON ((({})), ((0 0, 1 0, 0 1)))", ring.join(", "));
+    fs::write(dir.join("big.wkt"), wkt).unwrap();
+    let list = format!("{}\n---\n0 0\n1 0\n0 1\n", ring.join("\n"));
+    fs::write(dir.join("big.txt"), list).unwrap();
+    let feature = too_many("10,000", "one feature");
+    let polygon = too_many("10,000", "one polygon");
+    let expected = [
+        (
+            "big.geojsonl",
+            format!("big.geojsonl: line 1, column 1: ring 0, position 10000: {feature}"),
+        ),
+        (
+            "big.geojson",
+            format!("big.geojson: feature 0, ring 0, position 10000: {feature}"),
+        ),
+        // "MULTIPOLYGON (((" then vertices 0 to 9,999: "0 0, " (5 characters) to "9999 1, " (8).
+        (
+            "big.wkt",
+            format!(
+                "big.wkt: line 1, column {}: {polygon}",
+                17 + 50 + 540 + 6300 + 72_000
+            ),
+        ),
+        (
+            "big.txt",
+            format!("big.txt: line 10001, column 1: {polygon}"),
+        ),
+    ];
+    for (file, message) in expected {
+        let (code, out, err) = run_limited(dir, 200_000, &["--max-vertices", "10000", file]);
+        assert_eq!(code, 1, "{file}: {err}");
+        assert!(err.contains(&message), "{file}: {err}");
+        assert!(out.contains("\"triangle_count\": 1,"), "{file}: {out}");
+    }
+    // Endless valid coordinates: the polygon is dropped at the cap on vertices, the rest read
+    // without being kept until the cap on bytes stops the input.
+    let head = format!(
+        r#"{{"type": "FeatureCollection", "features": [{{"type": "Feature", "geometry": {TRIANGLE}}},
+        {{"type": "Feature", "geometry": {{"type": "Polygon", "coordinates": [[[0, 0]"#
+    );
+    let args = ["--from", "geojson", "--max-vertices", "100"];
+    let (code, out, err) = endless(&args, head.as_bytes(), b", [0, 0]");
+    assert_eq!(code, 1, "{err}");
+    assert!(out.contains("\"triangle_count\": 1"), "{out}");
+    assert!(
+        err.contains("-: feature 1: too large: more than 100000 bytes"),
+        "{err}"
+    );
+    // A bad value is a command-line error.
+    let (code, _, err) = run_in(dir, &["--max-vertices", "0", "big.wkt"]);
+    assert_eq!(code, 2, "{err}");
+}

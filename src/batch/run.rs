@@ -45,6 +45,10 @@ pub struct Settings {
     /// top-level value, or one line of GeoJSON Lines, before it is parsed (default
     /// [`read::limits::MAX_TEXT`], 4 GiB).
     pub limit: u64,
+    /// The most vertices held while reading one polygon of a WKT or vertex-list input, or one
+    /// GeoJSON feature or line (all its polygons together); past it the polygon or feature is
+    /// an error and the others go on (default [`read::limits::MAX_VERTICES`], 2^25).
+    pub max_vertices: usize,
 }
 
 impl Default for Settings {
@@ -54,6 +58,7 @@ impl Default for Settings {
             from: None,
             quiet: false,
             limit: read::limits::MAX_TEXT,
+            max_vertices: read::limits::MAX_VERTICES,
         }
     }
 }
@@ -315,6 +320,7 @@ enum Item {
         number: usize,
         feature: usize,
         text: String,
+        max_vertices: usize,
     },
 }
 
@@ -384,8 +390,14 @@ impl<'a> Chunker<'a> {
                     number,
                     feature,
                     text,
+                    max_vertices,
                 } => {
-                    let (read, result) = geojson_stream::read_line_feature(&text, number, feature);
+                    let (read, result) = geojson_stream::read_line_feature_within(
+                        &text,
+                        number,
+                        feature,
+                        max_vertices,
+                    );
                     // Not JSON: a feature of which nothing is known but its place.
                     let read = read.unwrap_or(Feature {
                         number: feature,
@@ -527,13 +539,13 @@ fn read_input(input: &Input, settings: &Settings, chunker: &mut Chunker) -> io::
             ["ndjson", "geojsonl", "geojsons"].contains(&e.to_ascii_lowercase().as_str())
         });
         if lines_by_name || geojson_stream::looks_line_delimited(start) {
-            return read_lines(&source, reader, settings.limit, chunker);
+            return read_lines(&source, reader, settings, chunker);
         }
         // Binary data is named as such, not as a JSON syntax error (judged on the start only).
         if let Some(error) = read::not_text(start, false) {
             return failed(chunker, Error::Parse(error));
         }
-        return stream_geojson(&source, reader, settings.limit, chunker);
+        return stream_geojson(&source, reader, settings, chunker);
     }
     // Read chunk by chunk, stopping at the first byte that cannot be text (io/read/limits.rs).
     let size = (!input.is_stdin())
@@ -546,11 +558,11 @@ fn read_input(input: &Input, settings: &Settings, chunker: &mut Chunker) -> io::
     };
     let format = format.unwrap_or_else(|| read::detect(extension, &text));
     if format == Format::GeoJson {
-        return stream_geojson(&source, text.as_bytes(), settings.limit, chunker);
+        return stream_geojson(&source, text.as_bytes(), settings, chunker);
     }
     // A member of a collection that is not a polygon is reported in its place; the polygons
     // are numbered without it.
-    match read::read_parts(format, &text) {
+    match read::read_parts_within(format, &text, settings.max_vertices) {
         Ok(parts) => {
             drop(text);
             let mut index = 0;
@@ -579,14 +591,16 @@ fn read_input(input: &Input, settings: &Settings, chunker: &mut Chunker) -> io::
 /// Reads a GeoJSON Lines input into the chunker, line by line (the lines are parsed in parallel
 /// with their chunk); returns whether it was read to its end. Each line stands alone: a line that
 /// is not JSON, or not a polygon, is reported and the others go on. Reading stops at a line of
-/// more than `limit` bytes (an endless line), and at a line holding a NUL byte (binary data,
-/// never text: an endless stream of it would be reported line after line).
+/// more than `settings.limit` bytes (an endless line), and at a line holding a NUL byte (binary
+/// data, never text: an endless stream of it would be reported line after line). A line of more
+/// than `settings.max_vertices` positions fails alone.
 fn read_lines(
     source: &Arc<str>,
     mut reader: impl BufRead,
-    limit: u64,
+    settings: &Settings,
     chunker: &mut Chunker,
 ) -> io::Result<bool> {
+    let limit = settings.limit;
     let mut number = 0;
     let mut features = 0;
     let mut any = false;
@@ -648,6 +662,7 @@ fn read_lines(
             number,
             feature: features,
             text,
+            max_vertices: settings.max_vertices,
         })?;
         features += 1;
     }
@@ -662,12 +677,13 @@ fn read_lines(
     Ok(true)
 }
 
-/// Streams a GeoJSON input into the chunker, at most `limit` bytes a feature or top-level
-/// value; returns whether it was read to its end.
+/// Streams a GeoJSON input into the chunker, at most `settings.limit` bytes and
+/// `settings.max_vertices` positions a feature or top-level value; returns whether it was read
+/// to its end.
 fn stream_geojson(
     source: &Arc<str>,
     reader: impl BufRead,
-    limit: u64,
+    settings: &Settings,
     chunker: &mut Chunker,
 ) -> io::Result<bool> {
     let mut index = 0;
@@ -721,7 +737,8 @@ fn stream_geojson(
             }
         },
     };
-    let stop = match geojson_stream::stream_within(reader, limit, &mut emit) {
+    let (limit, max_vertices) = (settings.limit, settings.max_vertices);
+    let stop = match geojson_stream::stream_within(reader, limit, max_vertices, &mut emit) {
         Ok(()) => return Ok(true),
         Err(Stop::Output(e)) => return Err(e),
         Err(Stop::Parse(e)) => Error::Parse(e),

@@ -55,8 +55,9 @@ pub fn graph<P: Coord>(polygon: &Polygon<P>, mdts: &[Degenerate]) -> Vec<Vec<usi
 }
 
 /// How many pairs of triangles [`graph_within`] may compare for a polygon of `n` vertices
-/// before it gives up: `2^24 + 64 n` (a few tenths of a second, some 100 MB at most on a
-/// 15 x 15 grid of small holes), far above what polygons whose triangles are short need (O(K)
+/// before it gives up: `2^24 + 64 n` (a few tenths of a second; at most 8 bytes a pair while
+/// they are compared, 128 MiB for 2^24 dependent pairs, then 16 bytes a pair for a graph that
+/// fits), far above what polygons whose triangles are short need (O(K)
 /// pairs), below the Θ(K^2) pairs of polygons in which most triangles cross most others (in a
 /// grid of small holes `K` itself is Θ(n^2)). The graph's memory is at most proportional to the
 /// pairs compared.
@@ -65,9 +66,14 @@ pub fn pair_budget(n: usize) -> u64 {
 }
 
 /// [`graph`], or `None` as soon as it has compared more than `budget` pairs of triangles or
-/// `deadline` has passed (checked every 4096 pairs), so that neither its time nor its memory
-/// (proportional to the pairs compared) runs away on polygons where most triangles depend on
-/// most others.
+/// `deadline` has passed (checked every 4096 pairs), or memory for its pairs is refused, so
+/// that neither its time nor its memory (proportional to the pairs compared) runs away on
+/// polygons where most triangles depend on most others.
+///
+/// Memory: the dependent pairs are gathered first as 8 bytes each ([`Pairs`], growth capped at
+/// the budget), and only a graph that fits is turned into adjacency lists (16 bytes a pair,
+/// each list allocated at its size while the pairs are given back), so that a try that runs
+/// out of budget holds 8 bytes per pair found, not the 16 to 32 of growing lists.
 pub fn graph_within<P: Coord>(
     polygon: &Polygon<P>,
     mdts: &[Degenerate],
@@ -83,7 +89,7 @@ pub fn graph_within<P: Coord>(
             && (before >> 12 == pairs >> 12
                 || deadline.is_none_or(|d| std::time::Instant::now() < d))
     };
-    let mut adjacent: Vec<Vec<usize>> = vec![Vec::new(); k];
+    let mut found = Pairs::new(k, budget)?;
     // Pairs meeting at a vertex that is a middle of one of them.
     let mut at_vertex: Vec<Vec<usize>> = vec![Vec::new(); polygon.len()];
     for (t, m) in mdts.iter().enumerate() {
@@ -97,8 +103,7 @@ pub fn graph_within<P: Coord>(
         }
         for &u in &at_vertex[m.b] {
             if u != t && dependent(polygon, m, &mdts[u]) {
-                adjacent[t].push(u);
-                adjacent[u].push(t);
+                found.push(t, u)?;
             }
         }
     }
@@ -123,17 +128,69 @@ pub fn graph_within<P: Coord>(
             let (m, o) = (&mdts[t], &mdts[u]);
             let p = |v: usize| polygon.point(v);
             if properly_cross(p(m.a), p(m.c), p(o.a), p(o.c)) {
-                adjacent[t].push(u);
-                adjacent[u].push(t);
+                found.push(t, u)?;
             }
         }
         active.push(t);
     }
-    for list in &mut adjacent {
-        list.sort_unstable();
-        list.dedup();
+    Some(found.adjacency(k))
+}
+
+/// Dependent pairs of triangles as they are found, two `u32` each.
+struct Pairs {
+    pairs: Vec<[u32; 2]>,
+    /// The most pairs there can be (the pair budget): growth stops there.
+    most: usize,
+}
+
+impl Pairs {
+    /// Room for the pairs of `k` triangles, at most `budget` of them; `None` when the triangles
+    /// cannot be numbered in 32 bits (billions of them: far beyond any budget).
+    fn new(k: usize, budget: u64) -> Option<Pairs> {
+        u32::try_from(k).ok()?;
+        Some(Pairs {
+            pairs: Vec::new(),
+            most: usize::try_from(budget).unwrap_or(usize::MAX),
+        })
     }
-    Some(adjacent)
+
+    /// Adds the pair `t`, `u`; `None` when memory for it is refused.
+    fn push(&mut self, t: usize, u: usize) -> Option<()> {
+        let pairs = &mut self.pairs;
+        if pairs.len() == pairs.capacity() {
+            let left = self.most.saturating_sub(pairs.capacity()).max(1);
+            let room = pairs.capacity().max(1 << 10).min(left);
+            pairs.try_reserve_exact(room).ok()?;
+        }
+        // Both below `k`, which fits in 32 bits (`Pairs::new`).
+        pairs.push([t as u32, u as u32]);
+        Some(())
+    }
+
+    /// For each of `k` triangles, the sorted list of those it depends on, each list allocated
+    /// at its size; the pairs are given back as they are used.
+    fn adjacency(self, k: usize) -> Vec<Vec<usize>> {
+        let mut pairs = self.pairs;
+        let mut degree = vec![0usize; k];
+        for &[t, u] in &pairs {
+            degree[t as usize] += 1;
+            degree[u as usize] += 1;
+        }
+        let mut adjacent: Vec<Vec<usize>> = degree.into_iter().map(Vec::with_capacity).collect();
+        while !pairs.is_empty() {
+            let rest = pairs.len().saturating_sub(1 << 20);
+            for [t, u] in pairs.drain(rest..) {
+                adjacent[t as usize].push(u as usize);
+                adjacent[u as usize].push(t as usize);
+            }
+            pairs.shrink_to_fit();
+        }
+        for list in &mut adjacent {
+            list.sort_unstable();
+            list.dedup();
+        }
+        adjacent
+    }
 }
 
 /// A point ordered by its x coordinate alone (the sweep over x of [`graph`]).

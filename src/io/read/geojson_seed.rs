@@ -24,15 +24,22 @@
 //! read.
 //!
 //! Memory: 64 bytes per position while its polygon is held (two decimals), plus the text of
-//! `coordinates` that come before `"type"`. Complexity: linear in the input size.
+//! `coordinates` that come before `"type"`. The positions of one feature (all its polygons
+//! together: a MultiPolygon's, a GeometryCollection's) or of one top-level value that is not a
+//! FeatureCollection are counted as they are read ([`Vertices`]): past the cap, the polygon
+//! being read fails (`more than N vertices in one feature`), its positions are dropped, and the
+//! rest of its array is read without being kept, so that the other features go on. Complexity:
+//! linear in the input size.
 
 use super::geojson::{json_message, Failure};
+use super::limits::too_many_vertices;
 use super::vertices::{excerpt, parse_number, quote};
 use super::{drop_closing_vertex, RawPolygon};
 use crate::geom::decimal::Decimal;
 use serde::de::{self, Deserialize, DeserializeSeed, MapAccess, SeqAccess, Visitor};
 use serde_json::value::RawValue;
 use serde_json::{Map, Value};
+use std::cell::Cell;
 use std::fmt;
 
 /// The key under which `serde_json` (`arbitrary_precision`) hands a number that is not a 64-bit
@@ -116,8 +123,9 @@ impl Object {
         }
     }
 
-    /// Reads `coordinates` kept as text, now that `type` is known.
-    fn finish(&mut self) {
+    /// Reads `coordinates` kept as text, now that `type` is known, counting its positions in
+    /// `vertices`.
+    fn finish(&mut self, vertices: &Vertices) {
         let Some(Coordinates::Text(text)) = &self.coordinates else {
             return;
         };
@@ -127,12 +135,12 @@ impl Object {
         let failed = |e: serde_json::Error| Failure::new(json_message(&e, None));
         self.coordinates = Some(match self.kind() {
             Some("Polygon") => Coordinates::Polygon(
-                LevelSeed(PolygonLevel)
+                LevelSeed(PolygonLevel(vertices))
                     .deserialize(&mut de)
                     .unwrap_or_else(|e| Err(failed(e))),
             ),
             Some("MultiPolygon") => Coordinates::MultiPolygon(
-                LevelSeed(MultiPolygonLevel)
+                LevelSeed(MultiPolygonLevel(vertices))
                     .deserialize(&mut de)
                     .unwrap_or_else(|e| Err(failed(e))),
             ),
@@ -154,6 +162,40 @@ pub(super) enum Coordinates {
     Skipped,
 }
 
+/// The positions one feature (or top-level value) may hold, and how many of its positions were
+/// read so far: shared by the seeds that read it, reset when the next feature starts.
+#[derive(Debug)]
+pub(super) struct Vertices {
+    max: usize,
+    read: Cell<usize>,
+}
+
+impl Vertices {
+    /// A count from 0 against a cap of `max` positions.
+    pub(super) fn new(max: usize) -> Vertices {
+        Vertices {
+            max,
+            read: Cell::new(0),
+        }
+    }
+
+    /// The next feature starts: its positions are counted from 0.
+    pub(super) fn reset(&self) {
+        self.read.set(0);
+    }
+
+    /// Counts one more position; the failure when it is one too many.
+    fn take(&self) -> Result<(), Failure> {
+        let read = self.read.get();
+        if read >= self.max {
+            let message = too_many_vertices(self.max, "one feature");
+            return Err(Failure::new(message));
+        }
+        self.read.set(read + 1);
+        Ok(())
+    }
+}
+
 /// Where the elements of a FeatureCollection's `features` go as they are read.
 pub(super) trait FeatureSink {
     /// Element `index` of `features`. An `Err` stops reading (its text is the `serde` error).
@@ -172,7 +214,8 @@ enum Arrays {
     Rings,
     /// Read element by element.
     List,
-    /// Elements to the sink (a FeatureCollection's `features`).
+    /// Features: to the sink if there is one (a streamed FeatureCollection), else read element by
+    /// element, like `List`; either way each element's positions are counted alone.
     Stream,
     /// Skipped.
     Skip,
@@ -184,37 +227,48 @@ pub(super) struct NodeSeed<'s> {
     /// For the top-level object: where its `features` go, when it is a FeatureCollection whose
     /// `type` comes first; for [`Arrays::Stream`], where the elements go.
     sink: Option<&'s mut dyn FeatureSink>,
+    /// The count of positions of the feature (or top-level value) being read.
+    vertices: &'s Vertices,
 }
 
 impl<'s> NodeSeed<'s> {
-    /// A top-level value; with a sink, the features of a FeatureCollection are sent to it as
-    /// they are read.
-    pub(super) fn top(sink: Option<&'s mut dyn FeatureSink>) -> NodeSeed<'s> {
+    /// A top-level value, its positions counted in `vertices`; with a sink, the features of a
+    /// FeatureCollection are sent to it as they are read.
+    pub(super) fn top(
+        sink: Option<&'s mut dyn FeatureSink>,
+        vertices: &'s Vertices,
+    ) -> NodeSeed<'s> {
         NodeSeed {
             arrays: Arrays::Rings,
             sink,
+            vertices,
         }
     }
 
-    fn skip() -> NodeSeed<'s> {
+    /// A value whose arrays are skipped (unless it is an object).
+    fn skip(vertices: &'s Vertices) -> NodeSeed<'s> {
         NodeSeed {
             arrays: Arrays::Skip,
             sink: None,
+            vertices,
         }
     }
 
-    fn list() -> NodeSeed<'s> {
+    /// A value whose arrays are read element by element.
+    fn list(vertices: &'s Vertices) -> NodeSeed<'s> {
         NodeSeed {
             arrays: Arrays::List,
             sink: None,
+            vertices,
         }
     }
 }
 
 impl<'de> Deserialize<'de> for Node {
-    /// A top-level value.
+    /// A top-level value, at most [`MAX_VERTICES`](super::limits::MAX_VERTICES) positions.
     fn deserialize<D: de::Deserializer<'de>>(d: D) -> Result<Node, D::Error> {
-        NodeSeed::top(None).deserialize(d)
+        let vertices = Vertices::new(super::limits::MAX_VERTICES);
+        NodeSeed::top(None, &vertices).deserialize(d)
     }
 }
 
@@ -234,23 +288,32 @@ impl<'de> Visitor<'de> for NodeSeed<'_> {
     }
 
     fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Node, A::Error> {
+        let vertices = self.vertices;
         match (self.arrays, self.sink) {
-            (Arrays::Rings, _) => Ok(Node::Rings(PolygonLevel.array(seq)?)),
+            (Arrays::Rings, _) => Ok(Node::Rings(PolygonLevel(vertices).array(seq)?)),
             (Arrays::Stream, Some(sink)) => {
                 let mut index = 0;
                 sink.reading(Some(index));
-                while let Some(feature) = seq.next_element_seed(NodeSeed::skip())? {
+                vertices.reset();
+                while let Some(feature) = seq.next_element_seed(NodeSeed::skip(vertices))? {
                     sink.feature(index, feature).map_err(de::Error::custom)?;
                     index += 1;
                     sink.reading(Some(index));
+                    vertices.reset();
                 }
                 sink.reading(None);
                 Ok(Node::Streamed)
             }
             (Arrays::List | Arrays::Stream, _) => {
+                // The features of a collection read whole are counted one by one too; the
+                // members of a GeometryCollection (`List`) together, as one feature.
+                let features = self.arrays == Arrays::Stream;
                 let mut items = Vec::new();
-                while let Some(item) = seq.next_element_seed(NodeSeed::skip())? {
+                while let Some(item) = seq.next_element_seed(NodeSeed::skip(vertices))? {
                     items.push(item);
+                    if features {
+                        vertices.reset();
+                    }
                 }
                 Ok(Node::List(items))
             }
@@ -270,7 +333,12 @@ impl<'de> Visitor<'de> for NodeSeed<'_> {
         };
         // Only the top-level object streams its features.
         let sink = self.sink.filter(|_| self.arrays == Arrays::Rings);
-        Ok(Node::Object(Box::new(read_object(first, map, sink)?)))
+        Ok(Node::Object(Box::new(read_object(
+            first,
+            map,
+            sink,
+            self.vertices,
+        )?)))
     }
 
     fn visit_bool<E: de::Error>(self, v: bool) -> Result<Node, E> {
@@ -307,6 +375,7 @@ fn read_object<'de, A: MapAccess<'de>>(
     first: Key,
     mut map: A,
     mut sink: Option<&mut dyn FeatureSink>,
+    vertices: &Vertices,
 ) -> Result<Object, A::Error> {
     let mut object = Object::default();
     let mut seen = [false; MEMBERS.len()];
@@ -329,14 +398,15 @@ fn read_object<'de, A: MapAccess<'de>>(
             object.duplicate = object.duplicate.or(Some(MEMBERS[member]));
         }
         match MEMBERS[member] {
-            "type" => object.kind = Some(map.next_value_seed(NodeSeed::skip())?),
+            "type" => object.kind = Some(map.next_value_seed(NodeSeed::skip(vertices))?),
             "coordinates" => {
                 let coordinates = match (object.kind(), &object.kind) {
                     (Some("Polygon"), _) => {
-                        Coordinates::Polygon(map.next_value_seed(LevelSeed(PolygonLevel))?)
+                        let seed = LevelSeed(PolygonLevel(vertices));
+                        Coordinates::Polygon(map.next_value_seed(seed)?)
                     }
                     (Some("MultiPolygon"), _) => Coordinates::MultiPolygon(
-                        map.next_value_seed(LevelSeed(MultiPolygonLevel))?,
+                        map.next_value_seed(LevelSeed(MultiPolygonLevel(vertices)))?,
                     ),
                     (None, None) => {
                         let mut text = String::new();
@@ -351,8 +421,12 @@ fn read_object<'de, A: MapAccess<'de>>(
                 };
                 object.coordinates = Some(coordinates);
             }
-            "geometry" => object.geometry = Some(map.next_value_seed(NodeSeed::skip())?),
-            "geometries" => object.geometries = Some(map.next_value_seed(NodeSeed::list())?),
+            "geometry" => {
+                object.geometry = Some(map.next_value_seed(NodeSeed::skip(vertices))?);
+            }
+            "geometries" => {
+                object.geometries = Some(map.next_value_seed(NodeSeed::list(vertices))?);
+            }
             _ /* "features" */ => {
                 let stream = object.kind() == Some("FeatureCollection")
                     && object.features.is_none()
@@ -361,15 +435,21 @@ fn read_object<'de, A: MapAccess<'de>>(
                     Some(sink) if stream => NodeSeed {
                         arrays: Arrays::Stream,
                         sink: Some(sink),
+                        vertices,
                     },
-                    _ => NodeSeed::list(),
+                    // Features read whole (`"type"` after them, say): still counted one by one.
+                    _ => NodeSeed {
+                        arrays: Arrays::Stream,
+                        sink: None,
+                        vertices,
+                    },
                 };
                 object.features = Some(map.next_value_seed(seed)?);
             }
         }
         key = map.next_key_seed(KeySeed)?;
     }
-    object.finish();
+    object.finish(vertices);
     Ok(object)
 }
 
@@ -696,19 +776,20 @@ impl<'de, L: Level> Visitor<'de> for LevelSeed<L> {
     }
 }
 
-/// A MultiPolygon's coordinates: polygons (empty ones left out).
-struct MultiPolygonLevel;
+/// A MultiPolygon's coordinates: polygons (empty ones left out), their positions counted.
+struct MultiPolygonLevel<'v>(&'v Vertices);
 
-impl Level for MultiPolygonLevel {
+impl Level for MultiPolygonLevel<'_> {
     type Output = Vec<RawPolygon>;
 
     fn array<'de, A: SeqAccess<'de>>(self, mut seq: A) -> Result<Read<Self::Output>, A::Error> {
         let mut polygons = Vec::new();
         let mut index = 0;
-        while let Some(polygon) = seq.next_element_seed(LevelSeed(PolygonLevel))? {
+        while let Some(polygon) = seq.next_element_seed(LevelSeed(PolygonLevel(self.0)))? {
             match polygon {
                 Ok(polygon) => polygons.extend(polygon),
                 Err(failure) => {
+                    drop(polygons);
                     skip_rest(seq)?;
                     return Ok(Err(failure.within("polygon", index)));
                 }
@@ -725,19 +806,21 @@ impl Level for MultiPolygonLevel {
     }
 }
 
-/// A Polygon's coordinates: rings; `None` for an empty array (an empty polygon).
-struct PolygonLevel;
+/// A Polygon's coordinates: rings; `None` for an empty array (an empty polygon). Its positions
+/// are counted.
+struct PolygonLevel<'v>(&'v Vertices);
 
-impl Level for PolygonLevel {
+impl Level for PolygonLevel<'_> {
     type Output = Option<RawPolygon>;
 
     fn array<'de, A: SeqAccess<'de>>(self, mut seq: A) -> Result<Read<Self::Output>, A::Error> {
         let mut rings = Vec::new();
-        while let Some(ring) = seq.next_element_seed(LevelSeed(RingLevel))? {
+        while let Some(ring) = seq.next_element_seed(LevelSeed(RingLevel(self.0)))? {
             match ring {
                 Ok(ring) => rings.push(ring),
                 Err(failure) => {
                     let index = rings.len();
+                    drop(rings);
                     skip_rest(seq)?;
                     return Ok(Err(failure.within("ring", index)));
                 }
@@ -753,15 +836,17 @@ impl Level for PolygonLevel {
     }
 }
 
-/// A ring: its positions, without the repeated closing one.
-struct RingLevel;
+/// A ring: its positions, without the repeated closing one, counted as they are read.
+struct RingLevel<'v>(&'v Vertices);
 
-impl Level for RingLevel {
+impl Level for RingLevel<'_> {
     type Output = Vec<[Decimal; 2]>;
 
     fn array<'de, A: SeqAccess<'de>>(self, mut seq: A) -> Result<Read<Self::Output>, A::Error> {
         let mut ring = Vec::new();
         while let Some(position) = seq.next_element_seed(LevelSeed(PositionLevel))? {
+            // One position too many for the feature: the ring is dropped, the rest not kept.
+            let position = position.and_then(|p| self.0.take().map(|()| p));
             match position {
                 // Memory refused is this polygon's failure (reading goes on), not an abort.
                 Ok(_) if ring.try_reserve(1).is_err() => {
@@ -774,6 +859,7 @@ impl Level for RingLevel {
                 Ok(position) => ring.push(position),
                 Err(failure) => {
                     let index = ring.len();
+                    drop(ring); // its memory back before the rest is read
                     skip_rest(seq)?;
                     return Ok(Err(failure.within("position", index)));
                 }

@@ -34,13 +34,20 @@
 //! line and column where the value starts) and the byte of the input where it stopped, so that
 //! an endless input, even valid JSON (`[[[0,0],[0,0],...`), does not grow memory without bound.
 //!
-//! Complexity: linear in the input size; memory proportional to the largest feature.
+//! Vertices: one feature (all its polygons together), or one top-level value other than a
+//! FeatureCollection, may hold at most a cap of positions ([`MAX_VERTICES`] by default): past
+//! it, the polygon being read is a failure of its feature (`feature 3, ring 0, position 1000:
+//! too many vertices: ...`), its positions are dropped and the rest of it is read without being
+//! kept, and reading goes on with the next feature (an endless one meets the cap on bytes).
+//!
+//! Complexity: linear in the input size; memory proportional to the largest feature, at most
+//! 64 bytes per position kept.
 
 use super::geojson::{
     collection_feature, json_message, top_level, type_of, Failure, Part, JSON_WHITESPACE,
 };
-use super::geojson_seed::{FeatureSink, Node, NodeSeed, Object};
-use super::limits::{too_large, MAX_TEXT};
+use super::geojson_seed::{FeatureSink, Node, NodeSeed, Object, Vertices};
+use super::limits::{too_large, MAX_TEXT, MAX_VERTICES};
 use super::{locate, Location, ParseError, RawPolygon};
 use crate::feature::{Feature, Geometry};
 use serde::de::{self, DeserializeSeed};
@@ -80,7 +87,8 @@ pub enum Stop {
 }
 
 /// Reads a GeoJSON input, pushing each polygon (or failure) to `emit` as it is read: as
-/// [`stream_within`] with the default cap, [`MAX_TEXT`] bytes a feature or top-level value.
+/// [`stream_within`] with the default caps, [`MAX_TEXT`] bytes and [`MAX_VERTICES`] positions a
+/// feature or top-level value.
 ///
 /// # Errors
 /// [`Stop::Parse`] for a JSON syntax error (with line and column), an empty input, an input
@@ -106,16 +114,18 @@ pub fn stream<R: BufRead>(
     reader: R,
     emit: &mut dyn FnMut(Event) -> io::Result<()>,
 ) -> Result<(), Stop> {
-    stream_within(reader, MAX_TEXT, emit)
+    stream_within(reader, MAX_TEXT, MAX_VERTICES, emit)
 }
 
 /// [`stream`] with a cap of `limit` bytes for one feature of a streamed FeatureCollection, or
-/// one top-level value and the blank space before it.
+/// one top-level value and the blank space before it, and of `max_vertices` positions for one
+/// feature (all its polygons together) or top-level value other than a FeatureCollection.
 ///
 /// # Errors
-/// Those of [`stream`]; past the cap, [`Stop::Parse`] naming the feature (or the line and
-/// column where the value starts) and the byte of the input where reading stopped, after the
-/// events of what came before.
+/// Those of [`stream`]; past the cap on bytes, [`Stop::Parse`] naming the feature (or the line
+/// and column where the value starts) and the byte of the input where reading stopped, after
+/// the events of what came before. Past the cap on positions, the feature fails
+/// ([`Event::Failed`]) and reading goes on.
 ///
 /// # Examples
 /// ```
@@ -127,18 +137,27 @@ pub fn stream<R: BufRead>(
 ///   {"type": "Feature", "geometry": {"type": "Polygon", "coordinates": [[[0, 0]"#;
 /// let endless = head.as_bytes().chain(std::io::repeat(b' ').take(1 << 40));
 /// let mut polygons = 0;
-/// let stop = stream_within(std::io::BufReader::new(endless), 1000, &mut |e| {
+/// let stop = stream_within(std::io::BufReader::new(endless), 1000, 1 << 25, &mut |e| {
 ///     polygons += usize::from(matches!(e, Event::Polygon(_)));
 ///     Ok(())
 /// });
 /// let Err(Stop::Parse(error)) = stop else { panic!("{stop:?}") };
 /// assert!(error.to_string().starts_with("feature 1: too large: more than 1000 bytes"));
 /// assert_eq!(polygons, 1, "the first feature was read");
-/// # Ok::<(), std::io::Error>(())
+/// // At most 3 positions a feature: the 4-position one fails, the others go on.
+/// let text = r#"[[[0, 0], [1, 0], [0, 1], [0, 2]]]
+/// [[[0, 0], [1, 0], [0, 1]]]"#;
+/// let mut events = Vec::new();
+/// stream_within(text.as_bytes(), 1000, 3, &mut |e| Ok(events.push(e))).map_err(|e| format!("{e:?}"))?;
+/// assert!(matches!(&events[1], Event::Failed(e) if e.to_string().starts_with(
+///     "line 1, column 1: ring 0, position 3: too many vertices: more than 3 in one feature")));
+/// assert!(matches!(&events[3], Event::Polygon(_)));
+/// # Ok::<(), String>(())
 /// ```
 pub fn stream_within<R: BufRead>(
     mut reader: R,
     limit: u64,
+    max_vertices: usize,
     emit: &mut dyn FnMut(Event) -> io::Result<()>,
 ) -> Result<(), Stop> {
     let bom = "\u{feff}".len();
@@ -171,6 +190,7 @@ pub fn stream_within<R: BufRead>(
     // which decides whether its failures carry a location (as in `geojson::read`).
     let mut held: Option<(Location, Vec<Deferred>)> = None;
     let mut values = 0usize;
+    let vertices = Vertices::new(max_vertices);
     loop {
         // The blank space before a value counts with it.
         position.borrow_mut().budget.start();
@@ -190,7 +210,8 @@ pub fn stream_within<R: BufRead>(
         if let Some((location, parts)) = held.take() {
             sink.parts(parts, Some(location)).map_err(Stop::Output)?;
         }
-        match NodeSeed::top(Some(&mut sink)).deserialize(&mut de) {
+        vertices.reset();
+        match NodeSeed::top(Some(&mut sink), &vertices).deserialize(&mut de) {
             Ok(node) => {
                 let parts = sink.value(node).map_err(Stop::Output)?;
                 if values == 0 {
@@ -278,6 +299,26 @@ pub fn read_line_feature(
     number: usize,
     feature: usize,
 ) -> (Option<Feature>, Result<Parts, ParseError>) {
+    read_line_feature_within(line, number, feature, MAX_VERTICES)
+}
+
+/// [`read_line_feature`] with a cap of `max_vertices` positions for the line (all its polygons
+/// together): past it, the polygon being read fails, as a part of the line's feature.
+///
+/// # Examples
+/// ```
+/// use minitri::io::read::geojson_stream::read_line_feature_within;
+/// let line = r#"{"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 1], [0, 2]]]}"#;
+/// let (_, parts) = read_line_feature_within(line, 7, 0, 3);
+/// assert!(parts.unwrap_err().to_string().starts_with(
+///     "line 7, column 1: ring 0, position 3: too many vertices: more than 3 in one feature"));
+/// ```
+pub fn read_line_feature_within(
+    line: &str,
+    number: usize,
+    feature: usize,
+    max_vertices: usize,
+) -> (Option<Feature>, Result<Parts, ParseError>) {
     let line = line.strip_prefix('\u{feff}').unwrap_or(line);
     let body = line.trim_start_matches(JSON_WHITESPACE);
     if body.trim_end_matches(JSON_WHITESPACE).is_empty() {
@@ -288,7 +329,8 @@ pub fn read_line_feature(
         column: column.max(1),
     };
     let mut de = serde_json::Deserializer::from_str(body);
-    let read = NodeSeed::top(None).deserialize(&mut de);
+    let vertices = Vertices::new(max_vertices);
+    let read = NodeSeed::top(None, &vertices).deserialize(&mut de);
     let node = read.and_then(|node| de.end().map(|()| node)).map_err(|e| {
         if e.is_eof() {
             // The line ends too soon: the column just after its last character.
@@ -1040,7 +1082,7 @@ mod tests {
     /// Polygons read and the stop, with a cap of `limit` bytes.
     fn capped(text: &str, limit: u64) -> (usize, Option<String>) {
         let mut polygons = 0;
-        let stop = stream_within(text.as_bytes(), limit, &mut |e| {
+        let stop = stream_within(text.as_bytes(), limit, MAX_VERTICES, &mut |e| {
             polygons += usize::from(matches!(e, Event::Polygon(_)));
             Ok(())
         });
@@ -1082,6 +1124,86 @@ mod tests {
             (2 * A.len() + 1) + (A.len() + 1) + 1
         ))));
         assert_eq!(capped(&lines, B.len() as u64 + 3), (4, None));
+    }
+
+    /// Polygons and failure messages, in order, with a cap of `max` positions, and the stop.
+    fn counted(text: &str, max: usize) -> (Vec<Result<usize, String>>, Option<String>) {
+        let mut out = Vec::new();
+        let stop = stream_within(text.as_bytes(), MAX_TEXT, max, &mut |e| {
+            match e {
+                Event::Feature(_) => {}
+                Event::Polygon(p) => out.push(Ok(p.rings.iter().map(Vec::len).sum())),
+                Event::Failed(e) => out.push(Err(e.to_string())),
+            }
+            Ok(())
+        });
+        (out, stop.err().map(|s| format!("{s:?}")))
+    }
+
+    #[test]
+    fn positions_are_counted_per_feature_all_its_polygons_together() {
+        let too_many = |max: &str| {
+            format!("too many vertices: more than {max} in one feature (the most held while reading; --max-vertices raises it); the rest of it was read but not kept")
+        };
+        // B: two triangles; A: 4 positions.
+        let feature = |g: &str| format!(r#"{{"type": "Feature", "geometry": {g}}}"#);
+        let collection = format!(
+            r#"{{"type": "FeatureCollection", "features": [{}, {}, {}]}}"#,
+            feature(B),
+            feature(A),
+            feature(B)
+        );
+        assert_eq!(
+            counted(&collection, 6),
+            (vec![Ok(3), Ok(3), Ok(4), Ok(3), Ok(3)], None)
+        );
+        let (got, stop) = counted(&collection, 5);
+        assert_eq!(stop, None);
+        let expected = format!(
+            "feature 0, polygon 1, ring 0, position 2: {}",
+            too_many("5")
+        );
+        assert_eq!(
+            got,
+            vec![
+                Err(expected.clone()),
+                Ok(4),
+                Err(expected.replace("feature 0", "feature 2"))
+            ]
+        );
+        // Features before "type": read whole, still counted feature by feature.
+        let reversed = format!(
+            r#"{{"features": [{}, {}], "type": "FeatureCollection"}}"#,
+            feature(A),
+            feature(A)
+        );
+        assert_eq!(counted(&reversed, 4).0, vec![Ok(4), Ok(4)]);
+        // A GeometryCollection's members together: the second member fails, and with it the
+        // collection (as for any member whose coordinates are wrong).
+        let members = format!(r#"{{"type": "GeometryCollection", "geometries": [{A}, {A}]}}"#);
+        assert_eq!(counted(&members, 8).0, vec![Ok(4), Ok(4)]);
+        let expected = format!("geometry 1, ring 0, position 3: {}", too_many("7"));
+        assert_eq!(counted(&members, 7).0, vec![Err(expected)]);
+        // Coordinates before "type", and top-level values, each counted alone.
+        let late = r#"{"coordinates": [[[0, 0], [1, 0], [0, 1], [0, 2]]], "type": "Polygon"}"#;
+        let (got, _) = counted(&format!("{late}\n{late}\n{B}"), 4);
+        assert_eq!(
+            got,
+            vec![
+                Ok(4),
+                Ok(4),
+                Err(format!(
+                    "line 3, column 1: polygon 1, ring 0, position 1: {}",
+                    too_many("4")
+                ))
+            ]
+        );
+        // A line of GeoJSON Lines.
+        let (_, parts) = read_line_feature_within(B, 2, 0, 5);
+        assert!(parts
+            .unwrap_err()
+            .to_string()
+            .starts_with("line 2, column 1: polygon 1, ring 0, position 2: too many vertices"));
     }
 
     #[test]

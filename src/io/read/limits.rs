@@ -56,6 +56,51 @@ pub fn too_large(limit: u64, what: &str, byte: u64) -> String {
     )
 }
 
+/// The most vertices (positions) one polygon may hold while it is read, all its rings together
+/// (2^25 = 33,554,432); in GeoJSON, one feature, all its polygons together (a MultiPolygon's, a
+/// GeometryCollection's). A vertex takes 64 bytes as read (two exact decimals), and a ring's
+/// storage grows by doubling, so one polygon holds at most 2 to 4 GiB; the largest real
+/// boundaries have a few million vertices. The command's `--max-vertices` chooses another cap.
+pub const MAX_VERTICES: usize = 1 << 25;
+
+/// The message for a polygon (or feature: `what`) with more than `max` vertices.
+///
+/// # Examples
+/// ```
+/// use minitri::io::read::limits::too_many_vertices;
+/// assert_eq!(
+///     too_many_vertices(33_554_432, "one polygon"),
+///     "too many vertices: more than 33,554,432 in one polygon (the most held while reading; \
+///      --max-vertices raises it); the rest of it was read but not kept"
+/// );
+/// ```
+pub fn too_many_vertices(max: usize, what: &str) -> String {
+    format!(
+        "too many vertices: more than {} in {what} (the most held while reading; \
+         --max-vertices raises it); the rest of it was read but not kept",
+        grouped(max as u64)
+    )
+}
+
+/// `n` with its digits in groups of three (`33,554,432`).
+///
+/// # Examples
+/// ```
+/// use minitri::io::read::limits::grouped;
+/// assert_eq!((grouped(0), grouped(999), grouped(1000), grouped(1234567)), ("0".into(), "999".into(), "1,000".into(), "1,234,567".into()));
+/// ```
+pub fn grouped(n: u64) -> String {
+    let digits = n.to_string();
+    let mut out = String::with_capacity(digits.len() + digits.len() / 3);
+    for (k, c) in digits.chars().enumerate() {
+        if k > 0 && (digits.len() - k).is_multiple_of(3) {
+            out.push(',');
+        }
+        out.push(c);
+    }
+    out
+}
+
 /// Bytes read at a time.
 const CHUNK: usize = 1 << 16;
 

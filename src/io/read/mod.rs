@@ -236,9 +236,24 @@ pub fn read_parts(
     format: Format,
     text: &str,
 ) -> Result<Vec<Result<RawPolygon, ParseError>>, ParseError> {
+    read_parts_within(format, text, limits::MAX_VERTICES)
+}
+
+/// [`read_parts`] with a cap of `max_vertices` vertices a polygon (WKT, vertex list): a polygon
+/// past it is an error in its place, and the other polygons stand. GeoJSON read whole keeps
+/// the default cap, [`limits::MAX_VERTICES`] positions a top-level value (the command streams
+/// GeoJSON with its own cap: [`geojson_stream::stream_within`]).
+///
+/// # Errors
+/// As [`read_parts`].
+pub fn read_parts_within(
+    format: Format,
+    text: &str,
+    max_vertices: usize,
+) -> Result<Vec<Result<RawPolygon, ParseError>>, ParseError> {
     match format {
-        Format::Wkt => wkt::read_parts(text),
+        Format::Wkt => wkt::read_parts_within(text, max_vertices),
         Format::GeoJson => geojson::read_parts(text),
-        Format::Vertices => Ok(vertices::read(text)?.into_iter().map(Ok).collect()),
+        Format::Vertices => vertices::read_parts_within(text, max_vertices),
     }
 }

@@ -38,11 +38,16 @@
 //! Errors name the line and column of the offending field, e.g.
 //! ``line 7, column 3: `abc` is not a number``.
 //!
+//! A polygon may hold at most a cap of vertices ([`MAX_VERTICES`] by default,
+//! [`read_parts_within`] to choose): past it, it is read to its end without being kept and is an
+//! error in its place; the other polygons stand.
+//!
 //! Complexity: linear in the input size.
 //!
 //! This file also holds the small helpers the three readers share (`excerpt`, `quote`,
 //! `parse_number`).
 
+use super::limits::{too_many_vertices, MAX_VERTICES};
 use super::{drop_closing_vertex, locate, ParseError, RawPolygon};
 use crate::geom::decimal::{Decimal, NumberError};
 
@@ -91,8 +96,8 @@ pub(super) fn parse_number(literal: &str) -> Result<Decimal, String> {
 ///
 /// # Errors
 /// [`ParseError`] with line and column for a line that is not exactly two numbers, a number that
-/// is not a finite decimal, two `---` without a vertex between them; without location for an
-/// input holding no vertex at all.
+/// is not a finite decimal, two `---` without a vertex between them, a polygon of more than
+/// [`MAX_VERTICES`] vertices; without location for an input holding no vertex at all.
 ///
 /// # Examples
 /// ```
@@ -102,9 +107,34 @@ pub(super) fn parse_number(literal: &str) -> Result<Decimal, String> {
 /// # Ok::<(), minitri::io::read::ParseError>(())
 /// ```
 pub fn read(text: &str) -> Result<Vec<RawPolygon>, ParseError> {
+    read_parts_within(text, MAX_VERTICES)?.into_iter().collect()
+}
+
+/// Reads every polygon of a vertex list, at most `max_vertices` vertices a polygon (all its
+/// rings together): a polygon with more is read to its end without being kept and is an
+/// error in its place (at its first vertex too many); the other polygons stand.
+///
+/// # Errors
+/// As [`read`], but for the polygons with too many vertices.
+///
+/// # Examples
+/// ```
+/// use minitri::io::read::vertices;
+/// let parts = vertices::read_parts_within("0 0\n1 0\n0 1\n0 2\n---\n5 5\n6 5\n5 6\n", 3)?;
+/// assert_eq!(
+///     parts[0].as_ref().unwrap_err().to_string(),
+///     "line 4, column 1: too many vertices: more than 3 in one polygon (the most held while \
+///      reading; --max-vertices raises it); the rest of it was read but not kept"
+/// );
+/// assert_eq!(parts[1].as_ref().unwrap().rings[0].len(), 3);
+/// # Ok::<(), minitri::io::read::ParseError>(())
+/// ```
+pub fn read_parts_within(
+    text: &str,
+    max_vertices: usize,
+) -> Result<Vec<Result<RawPolygon, ParseError>>, ParseError> {
     let mut polygons = Vec::new();
-    let mut rings: Vec<Vec<[Decimal; 2]>> = Vec::new();
-    let mut ring: Vec<[Decimal; 2]> = Vec::new();
+    let mut current = Current::default();
     let mut seen_separator = false;
     // The first meaningful line may be a CSV header (`x,y`), skipped.
     let mut first = true;
@@ -115,14 +145,14 @@ pub fn read(text: &str) -> Result<Vec<RawPolygon>, ParseError> {
         let line = raw_line.strip_suffix('\r').unwrap_or(raw_line);
         let content = line.split('#').next().unwrap_or_default();
         if line.trim_start_matches(is_space).is_empty() {
-            end_ring(&mut ring, &mut rings);
+            current.end_ring();
         } else if content.trim_matches(is_space).is_empty() {
             // A comment-only line.
         } else if std::mem::take(&mut first) && is_header(content) {
             // A CSV header: the column names.
         } else if content.trim_matches(is_space) == "---" {
-            end_ring(&mut ring, &mut rings);
-            if rings.is_empty() {
+            current.end_ring();
+            if current.is_empty() {
                 if seen_separator {
                     let column = content.find('-').unwrap_or_default();
                     return Err(ParseError::at(
@@ -131,34 +161,88 @@ pub fn read(text: &str) -> Result<Vec<RawPolygon>, ParseError> {
                     ));
                 }
             } else {
-                polygons.push(RawPolygon {
-                    rings: std::mem::take(&mut rings),
-                });
+                polygons.push(current.finish());
             }
             seen_separator = true;
         } else {
             let vertex = parse_vertex(content).map_err(|(offset, message)| {
                 ParseError::at(locate(text, start + offset), message)
             })?;
-            // Memory refused is this input's error (the run goes on), not an abort.
-            if ring.try_reserve(1).is_err() {
-                let message = format!(
-                    "not enough memory to hold this polygon: {} vertices of the ring read, no room for more",
-                    ring.len()
-                );
-                return Err(ParseError::at(locate(text, start), message));
-            }
-            ring.push(vertex);
+            let at = |message: String| ParseError::at(locate(text, start), message);
+            current.add(vertex, max_vertices, at)?;
         }
     }
-    end_ring(&mut ring, &mut rings);
-    if !rings.is_empty() {
-        polygons.push(RawPolygon { rings });
+    current.end_ring();
+    if !current.is_empty() {
+        polygons.push(current.finish());
     }
     if polygons.is_empty() {
         return Err(ParseError::new("empty input: no polygon found"));
     }
     Ok(polygons)
+}
+
+/// The polygon being read: its finished rings, the current ring, how many vertices it has,
+/// and, once it has too many, that error (its vertices are then no longer kept).
+#[derive(Default)]
+struct Current {
+    rings: Vec<Vec<[Decimal; 2]>>,
+    ring: Vec<[Decimal; 2]>,
+    count: usize,
+    over: Option<ParseError>,
+}
+
+impl Current {
+    /// Adds a vertex, unless it is one too many (the polygon is then dropped, its error kept:
+    /// `at` locates it).
+    ///
+    /// # Errors
+    /// Memory refused: this input's error (the run goes on), not an abort.
+    fn add(
+        &mut self,
+        vertex: [Decimal; 2],
+        max_vertices: usize,
+        at: impl FnOnce(String) -> ParseError,
+    ) -> Result<(), ParseError> {
+        self.count += 1;
+        if self.over.is_some() {
+            return Ok(());
+        }
+        if self.count > max_vertices {
+            (self.rings, self.ring) = (Vec::new(), Vec::new());
+            self.over = Some(at(too_many_vertices(max_vertices, "one polygon")));
+            return Ok(());
+        }
+        if self.ring.try_reserve(1).is_err() {
+            return Err(at(format!(
+                "not enough memory to hold this polygon: {} vertices of the ring read, no room for more",
+                self.ring.len()
+            )));
+        }
+        self.ring.push(vertex);
+        Ok(())
+    }
+
+    /// Ends the current ring.
+    fn end_ring(&mut self) {
+        end_ring(&mut self.ring, &mut self.rings);
+    }
+
+    /// Whether the polygon has nothing yet (after [`Current::end_ring`]).
+    fn is_empty(&self) -> bool {
+        self.rings.is_empty() && self.over.is_none()
+    }
+
+    /// The polygon read, or its error; the next one starts empty.
+    fn finish(&mut self) -> Result<RawPolygon, ParseError> {
+        let current = std::mem::take(self);
+        match current.over {
+            Some(error) => Err(error),
+            None => Ok(RawPolygon {
+                rings: current.rings,
+            }),
+        }
+    }
 }
 
 /// Is `line` (its comment, if any, is ignored) a CSV header: two column names separated by one
@@ -280,6 +364,24 @@ mod tests {
 
     fn error(text: &str) -> String {
         read(text).expect_err(text).to_string()
+    }
+
+    #[test]
+    fn a_polygon_past_the_cap_on_vertices_fails_alone() {
+        // Rings counted together; the next polygon counted from 0.
+        let text = "0 0\n9 0\n9 9\n\n1 1\n2 1\n1 2\n---\n0 0\n1 0\n0 1\n";
+        let parts = read_parts_within(text, 6).unwrap();
+        assert!(parts[0].is_ok() && parts[1].is_ok());
+        let parts = read_parts_within(text, 5).unwrap();
+        let error = parts[0].as_ref().unwrap_err().to_string();
+        assert!(
+            error.starts_with("line 7, column 1: too many vertices: more than 5 in one polygon"),
+            "{error}"
+        );
+        assert_eq!(parts[1].as_ref().unwrap().rings[0].len(), 3);
+        // The last polygon too, and a syntax error after the cap still stops the input.
+        assert!(read_parts_within("0 0\n1 0\n0 1\n0 2\n", 3).unwrap()[0].is_err());
+        assert!(read_parts_within("0 0\n1 0\n0 1\n0 2\nx 3\n", 3).is_err());
     }
 
     #[test]

@@ -31,8 +31,15 @@
 //! (never through `f64`); each ring loses its repeated closing vertex. Errors carry the line and
 //! column of the offending token.
 //!
+//! Vertices: one polygon (a `POLYGON`, or one polygon of a `MULTIPOLYGON`), all its rings
+//! together, may hold at most a cap of vertices ([`MAX_VERTICES`] by default,
+//! [`read_parts_within`] to choose). Past it the polygon becomes a failed part, located at the
+//! first vertex too many; its vertices are dropped and the rest of it is read (its syntax still
+//! checked) without being kept, and the other polygons stand.
+//!
 //! Complexity: linear in the input size.
 
+use super::limits::{too_many_vertices, MAX_VERTICES};
 use super::vertices::{parse_number, quote};
 use super::{drop_closing_vertex, locate, ParseError, RawPolygon};
 use crate::geom::decimal::{Decimal, NumberError};
@@ -104,12 +111,40 @@ pub fn read(text: &str) -> Result<Vec<RawPolygon>, ParseError> {
 /// # Ok::<(), minitri::io::read::ParseError>(())
 /// ```
 pub fn read_parts(text: &str) -> Result<Vec<Result<RawPolygon, ParseError>>, ParseError> {
+    read_parts_within(text, MAX_VERTICES)
+}
+
+/// [`read_parts`] with a cap of `max_vertices` vertices a polygon: past it, the polygon is a
+/// failed part (located at its first vertex too many) and the other polygons stand.
+///
+/// # Errors
+/// As [`read_parts`].
+///
+/// # Examples
+/// ```
+/// use minitri::io::read::wkt;
+/// let text = "MULTIPOLYGON (((0 0, 1 0, 0 1, 0 2)), ((5 5, 6 5, 5 6)))";
+/// let parts = wkt::read_parts_within(text, 3)?;
+/// assert_eq!(
+///     parts[0].as_ref().unwrap_err().to_string(),
+///     "line 1, column 32: too many vertices: more than 3 in one polygon (the most held while \
+///      reading; --max-vertices raises it); the rest of it was read but not kept"
+/// );
+/// assert!(parts[1].is_ok());
+/// # Ok::<(), minitri::io::read::ParseError>(())
+/// ```
+pub fn read_parts_within(
+    text: &str,
+    max_vertices: usize,
+) -> Result<Vec<Result<RawPolygon, ParseError>>, ParseError> {
     let mut parser = Parser {
         text,
         pos: 0,
         parts: Vec::new(),
         dimensions: None,
         no_room: None,
+        vertices: 0,
+        max_vertices,
     };
     if parser.peek().kind == Tok::End {
         return Err(ParseError::new("empty input: no polygon found"));
@@ -218,8 +253,12 @@ struct Parser<'a> {
     dimensions: Option<usize>,
     /// The current polygon could not be stored (memory refused): its error, at the point where
     /// it happened. The polygon is read to its end (its syntax still checked) and becomes a
-    /// failed part.
+    /// failed part. Also set when the polygon has more than `max_vertices` vertices.
     no_room: Option<ParseError>,
+    /// Vertices of the current polygon read so far, all its rings together.
+    vertices: usize,
+    /// The most vertices one polygon may hold.
+    max_vertices: usize,
 }
 
 impl<'a> Parser<'a> {
@@ -433,6 +472,7 @@ impl<'a> Parser<'a> {
     fn polygon(&mut self, what: &str) -> Result<RawPolygon, ParseError> {
         self.expect(Tok::Open, what)?;
         self.dimensions = None;
+        self.vertices = 0;
         let mut rings = Vec::new();
         loop {
             let ring = self.ring()?;
@@ -471,6 +511,7 @@ impl<'a> Parser<'a> {
         loop {
             let token = self.peek();
             let point = self.point()?;
+            self.count_vertex(token, &mut ring);
             // Memory refused: the polygon is dropped and read on without storing its points.
             if self.no_room.is_none() && ring.try_reserve(1).is_err() {
                 let message = format!(
@@ -489,6 +530,17 @@ impl<'a> Parser<'a> {
         }
         drop_closing_vertex(&mut ring);
         Ok(ring)
+    }
+
+    /// Counts one more vertex of the polygon; one too many drops it (`ring`, and the rings
+    /// before, by [`Parser::polygon`]) and makes it a failed part, located at `token`.
+    fn count_vertex(&mut self, token: Token<'_>, ring: &mut Vec<[Decimal; 2]>) {
+        self.vertices += 1;
+        if self.vertices > self.max_vertices && self.no_room.is_none() {
+            *ring = Vec::new();
+            let message = too_many_vertices(self.max_vertices, "one polygon");
+            self.no_room = Some(self.error(token, message));
+        }
     }
 
     /// The part a polygon read makes: the polygon, or the error of memory refused for it.
@@ -588,6 +640,30 @@ mod tests {
 
     fn error(text: &str) -> String {
         read(text).expect_err(text).to_string()
+    }
+
+    #[test]
+    fn a_polygon_past_the_cap_on_vertices_fails_alone() {
+        // Rings counted together, closing vertices included; each polygon counted alone.
+        let text = "GEOMETRYCOLLECTION (POLYGON ((0 0, 9 0, 9 9, 0 0), (1 1, 2 1, 1 2, 1 1)), \
+                    MULTIPOLYGON (((0 0, 1 0, 0 1, 0 0)), ((5 5, 6 5, 5 6, 5 5))))";
+        let ok = |parts: Vec<Result<RawPolygon, ParseError>>| -> Vec<bool> {
+            parts.iter().map(Result::is_ok).collect()
+        };
+        assert_eq!(ok(read_parts_within(text, 8).unwrap()), [true, true, true]);
+        let parts = read_parts_within(text, 7).unwrap();
+        assert_eq!(ok(parts.clone()), [false, true, true]);
+        let error = parts[0].as_ref().unwrap_err().to_string();
+        assert!(
+            error.starts_with("line 1, column 68: too many vertices: more than 7 in one polygon"),
+            "{error}"
+        );
+        // The rest of a polygon past the cap is still read: a syntax error in it is reported.
+        let bad = "MULTIPOLYGON (((0 0, 1 0, 0 1, 0 2, x 3)), ((5 5, 6 5, 5 6)))";
+        assert!(read_parts_within(bad, 3)
+            .unwrap_err()
+            .to_string()
+            .contains("`x` is not a number"));
     }
 
     #[test]
