@@ -496,17 +496,22 @@ fn zigzag(n: usize) -> Vec<(usize, usize)> {
     points
 }
 
+/// A GeoJSON Polygon of one ring through `points`, on one line.
+fn geojson_polygon(points: &[(usize, usize)]) -> String {
+    let ring: Vec<String> = points.iter().map(|(x, y)| format!("[{x},{y}]")).collect();
+    format!(
+        r#"{{"type":"Polygon","coordinates":[[{}]]}}"#,
+        ring.join(",")
+    )
+}
+
 #[test]
 fn a_polygon_too_large_for_memory_is_reported_and_the_next_goes_on() {
     let tmp = tempfile::tempdir().unwrap();
     let dir = tmp.path();
     // 2 x 10^6 vertices: 128 MB once read (64 bytes a vertex), more to triangulate.
     let points = zigzag(2_000_000);
-    let ring: Vec<String> = points.iter().map(|(x, y)| format!("[{x},{y}]")).collect();
-    let big = format!(
-        r#"{{"type":"Polygon","coordinates":[[{}]]}}"#,
-        ring.join(",")
-    );
+    let big = geojson_polygon(&points);
     fs::write(dir.join("big.geojsonl"), format!("{big}\n{TRIANGLE}\n")).unwrap();
     let ring: Vec<String> = points.iter().map(|(x, y)| format!("{x} {y}")).collect();
     let wkt = format!(
@@ -659,11 +664,7 @@ fn a_polygon_with_too_many_vertices_is_reported_and_the_others_go_on() {
     // 2 x 10^6 vertices, 128 MB once read: under 200 MB of address space with a cap of 10,000
     // vertices, each reader stops keeping them (memory refused would say "not enough memory").
     let points = zigzag(2_000_000);
-    let ring: Vec<String> = points.iter().map(|(x, y)| format!("[{x},{y}]")).collect();
-    let big = format!(
-        r#"{{"type":"Polygon","coordinates":[[{}]]}}"#,
-        ring.join(",")
-    );
+    let big = geojson_polygon(&points);
     fs::write(dir.join("big.geojsonl"), format!("{big}\n{TRIANGLE}\n")).unwrap();
     let collection = format!(
         r#"{{"type":"FeatureCollection","features":[{{"type":"Feature","geometry":{big}}},
