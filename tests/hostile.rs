@@ -568,6 +568,32 @@ fn a_search_cut_short_reports_a_verified_lower_bound() {
     assert_eq!(p["verification"]["ok"], true);
 }
 
+/// `--time-limit` bounds step 1 of a polygon without holes too (quadratic on a comb whose gap
+/// bottoms lie on one line): the answer comes back at once, valid, verified, not claimed minimum,
+/// with a true lower bound.
+#[test]
+fn the_time_limit_bounds_a_comb_without_holes() {
+    let teeth = 20_000;
+    let mut ring = vec![(0, 0), (2 * teeth, 0)];
+    for k in (0..teeth).rev() {
+        ring.extend([(2 * k + 2, 1), (2 * k + 1, 1), (2 * k + 1, 4), (2 * k, 4)]);
+    }
+    let coords: Vec<String> = ring.iter().map(|(x, y)| format!("{x} {y}")).collect();
+    let tmp = tempfile::tempdir().unwrap();
+    fs::write(tmp.path().join("comb.wkt"), format!("POLYGON (({}))", coords.join(", "))).unwrap();
+    let (code, out, err) = run_in(tmp.path(), &["comb.wkt", "--time-limit", "0.01", "--verify"]);
+    assert_eq!(code, 0, "{err}");
+    let v = crate::util::json(&out);
+    let p = &v["polygons"][0];
+    assert_eq!(p["optimal"], false, "{err}");
+    assert_eq!(p["stopped_by"], "time limit");
+    let count = p["triangle_count"].as_u64().unwrap();
+    let lower = p["lower_bound"].as_u64().unwrap();
+    // Every vertex but the two bottom corners is a corner of a triangle: at least a third of them.
+    assert!(lower >= (4 * teeth as u64) / 3 && lower <= count && count <= 4 * teeth as u64);
+    assert_eq!(p["verification"]["ok"], true);
+}
+
 /// The fault injection of the batch writer: `files` inputs written into an output directory,
 /// the run killed `kills` times at pseudo-random points (SIGKILL, SIGTERM, SIGINT in turn);
 /// after each kill every output is absent or complete and parseable, and after SIGTERM and

@@ -150,9 +150,9 @@ pub struct Triangulation {
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum Stopped {
-    /// The exact search for a polygon with holes reached its time limit (`--time-limit`):
-    /// while finding the minimally degenerate triangles, building their dependency graph, or
-    /// searching it.
+    /// The exact method reached its time limit (`--time-limit`): for a polygon with holes while
+    /// finding the minimally degenerate triangles, building their dependency graph, or
+    /// searching it; for one without holes while finding them (step 1, quadratic on combs).
     TimeLimit,
     /// A connected component of the dependency graph had more triangles than the exact search
     /// takes ([`minitri::branch_and_bound::SEARCH_LIMIT`]); it kept a greedy set.

@@ -37,8 +37,8 @@ use std::time::{Duration, Instant};
 /// How long the exact search for polygons with holes runs by default (`--time-limit`).
 pub const DEFAULT_TIME_LIMIT: Duration = Duration::from_secs(10);
 
-/// The minimum triangulation of a polygon, with the default time limit for polygons with holes
-/// ([`triangulate_within`]).
+/// The minimum triangulation of a polygon, with the default time limit
+/// ([`DEFAULT_TIME_LIMIT`], [`triangulate_within`]).
 ///
 /// # Errors
 /// Those of [`triangulate_within`].
@@ -48,6 +48,11 @@ pub fn triangulate<P: Coord>(polygon: &Polygon<P>) -> Result<Triangulation, Tria
 
 /// The minimum triangulation of a polygon: by Chen & Chang's steps without holes (exact, no
 /// search); with holes by [`triangulate_general`], searching until `deadline`.
+///
+/// Without holes `deadline` bounds step 1, the one stage without a worst-case bound below
+/// O(n^2) (a comb whose gap bottoms lie on one line): past it the triangles found so far are
+/// used, and the result is valid but `optimal` only if it meets the lower bound, else with
+/// `lower_bound` and [`Stopped::TimeLimit`]. `None`: no limit, always exact.
 ///
 /// # Errors
 /// Without holes, none for valid polygons; with holes, those of [`triangulate_general`] (not
@@ -62,7 +67,7 @@ pub fn triangulate_within<P: Coord>(
     if polygon.holes() > 0 {
         return triangulate_general(polygon, deadline);
     }
-    let (mdts, base) = degenerate::minimally_degenerate_and_mesh(polygon);
+    let (mdts, base, complete) = degenerate::minimally_degenerate_and_mesh_until(polygon, deadline);
     let chosen = circle_mis(polygon, &mdts);
     drop(mdts);
     // With nothing chosen the only piece is P itself, and step 1's plain triangulation is one;
@@ -74,14 +79,29 @@ pub fn triangulate_within<P: Coord>(
         partition::triangulate_pieces(polygon, &chosen)
     };
     let degenerate = chosen.iter().map(|m| [m.a, m.b, m.c]).collect();
+    // Step 1 cut short by the deadline: the triangles chosen among those found are independent
+    // all the same (dependence is a relation between pairs), so the triangulation is valid, but
+    // not proved minimum. Every triangle of a maximum independent set has its own middle vertex
+    // (triangles sharing their middle are dependent), so the number of vertices that could be a
+    // middle bounds `d` from above, whichever were searched.
+    let lower = (!complete).then(|| lower_bound(polygon, middle_candidates(polygon)));
+    let optimal = lower.is_none_or(|lower| lower >= triangles.len());
     Ok(Triangulation {
         algorithm: Algorithm::Minitri,
         triangles,
         degenerate,
-        optimal: true,
-        lower_bound: None,
-        stopped: None,
+        optimal,
+        lower_bound: lower.filter(|_| !optimal),
+        stopped: (!optimal).then_some(Stopped::TimeLimit),
     })
+}
+
+/// The number of vertices that could be the middle of a minimally degenerate triangle (angle of
+/// 180 degrees or more): an upper bound on `d`.
+fn middle_candidates<P: Coord>(polygon: &Polygon<P>) -> usize {
+    (0..polygon.len())
+        .filter(|&v| degenerate::can_be_middle(polygon, v))
+        .count()
 }
 
 /// The minimum triangulation of any valid polygon, holes allowed, by the general method: all
@@ -182,11 +202,7 @@ fn general_from<P: Coord>(
     // Once the search may not see every minimally degenerate triangle, an upper bound on `d`
     // over ALL of them: every vertex that could be a middle (angle of 180 degrees or more) when
     // some were not looked for, else their distinct middles (taken before any is dropped).
-    let mut d_all = (!complete).then(|| {
-        (0..polygon.len())
-            .filter(|&v| degenerate::can_be_middle(polygon, v))
-            .count()
-    });
+    let mut d_all = (!complete).then(|| middle_candidates(polygon));
     let mut stopped = (!complete).then_some(Stopped::TimeLimit);
     let mut sorted = false;
     let graph = loop {

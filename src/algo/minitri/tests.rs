@@ -1033,3 +1033,31 @@ fn chord_ends_sort_like_the_reference_stable_sort() {
     }
     assert!(longest > 16, "a run longer than the insertion sort's");
 }
+
+/// Step 1 of a polygon without holes keeps to the deadline too (issue 22: on a comb it is
+/// quadratic). With the deadline already past, the triangulation is valid, not claimed minimum,
+/// stopped by the time limit, with a true lower bound; without one, the same comb is exact.
+#[test]
+fn a_past_deadline_bounds_step_1_without_holes() {
+    // Teeth 1 wide and 3 high, every gap bottom on the line y = 1.
+    let comb = |teeth: i64| {
+        let mut ring = vec![(0, 0), (2 * teeth, 0)];
+        for k in (0..teeth).rev() {
+            ring.extend([(2 * k + 2, 1), (2 * k + 1, 1), (2 * k + 1, 4), (2 * k, 4)]);
+        }
+        ring
+    };
+    let p = polygon(&[&comb(300)]);
+    let (corners, plain) = p.minimum_bounds();
+    let t = super::triangulate_within(&p, Some(std::time::Instant::now())).unwrap();
+    let check = crate::verify::check(&p, &t);
+    assert!(check.valid, "{:?}", check.problems);
+    assert!(!t.optimal);
+    assert_eq!(t.stopped, Some(crate::algo::Stopped::TimeLimit));
+    let lower = t.lower_bound.expect("not optimal: a lower bound");
+    assert!(corners <= lower && lower <= t.triangles.len() && t.triangles.len() <= plain);
+    let exact = super::triangulate_within(&p, None).unwrap();
+    assert!(exact.optimal && exact.lower_bound.is_none() && exact.stopped.is_none());
+    assert!(lower <= exact.triangles.len() && exact.triangles.len() <= t.triangles.len());
+    assert!(crate::verify::check(&p, &exact).valid);
+}
