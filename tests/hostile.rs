@@ -580,8 +580,15 @@ fn the_time_limit_bounds_a_comb_without_holes() {
     }
     let coords: Vec<String> = ring.iter().map(|(x, y)| format!("{x} {y}")).collect();
     let tmp = tempfile::tempdir().unwrap();
-    fs::write(tmp.path().join("comb.wkt"), format!("POLYGON (({}))", coords.join(", "))).unwrap();
-    let (code, out, err) = run_in(tmp.path(), &["comb.wkt", "--time-limit", "0.01", "--verify"]);
+    fs::write(
+        tmp.path().join("comb.wkt"),
+        format!("POLYGON (({}))", coords.join(", ")),
+    )
+    .unwrap();
+    let (code, out, err) = run_in(
+        tmp.path(),
+        &["comb.wkt", "--time-limit", "0.01", "--verify"],
+    );
     assert_eq!(code, 0, "{err}");
     let v = crate::util::json(&out);
     let p = &v["polygons"][0];
