@@ -145,3 +145,14 @@ pub(crate) fn pinched_round_a_hole() -> (Polygon, Vec<[usize; 3]>) {
     .collect();
     (poly, triangles)
 }
+
+/// A comb of `teeth` teeth `w` wide and `h` high over gaps `w` wide, every gap bottom on the line
+/// y = 1 above a base from (0, 0) to (2 w teeth, 0), counter-clockwise.
+pub(crate) fn comb(teeth: i64, w: i64, h: i64) -> Vec<(i64, i64)> {
+    let mut ring = vec![(0, 0), (2 * w * teeth, 0)];
+    for k in (0..teeth).rev() {
+        let x = 2 * w * k;
+        ring.extend([(x + 2 * w, 1), (x + w, 1), (x + w, 1 + h), (x, 1 + h)]);
+    }
+    ring
+}

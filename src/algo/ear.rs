@@ -195,15 +195,8 @@ mod tests {
     /// one line (up to where `plain` sends polygons to it, and beyond).
     #[test]
     fn the_clipper_alone_up_to_64_vertices() {
-        let comb = |teeth: i64| {
-            let mut ring = vec![(0, 0), (4 * teeth, 0)];
-            for k in (0..teeth).rev() {
-                ring.extend([(4 * k + 4, 1), (4 * k + 2, 1), (4 * k + 2, 5), (4 * k, 5)]);
-            }
-            ring
-        };
         for teeth in [7, 15] {
-            let p = polygon(&[&comb(teeth)]);
+            let p = polygon(&[&crate::test_support::comb(teeth, 2, 4)]);
             let pts: Vec<Point> = (0..p.len()).map(|v| p.point(v)).collect();
             let triangles = clip(&pts);
             assert_eq!(triangles.len(), p.len() - 2);
@@ -219,11 +212,7 @@ mod tests {
     #[test]
     fn combs() {
         // Ten teeth of width 2 over gaps of width 2, all gap bottoms on one line.
-        let mut comb = vec![(0, 0), (40, 0)];
-        for k in (0..10).rev() {
-            comb.extend([(4 * k + 4, 1), (4 * k + 2, 1), (4 * k + 2, 5), (4 * k, 5)]);
-        }
-        check(&comb);
+        check(&crate::test_support::comb(10, 2, 4));
     }
 
     #[test]

@@ -1039,15 +1039,7 @@ fn chord_ends_sort_like_the_reference_stable_sort() {
 /// stopped by the time limit, with a true lower bound; without one, the same comb is exact.
 #[test]
 fn a_past_deadline_bounds_step_1_without_holes() {
-    // Teeth 1 wide and 3 high, every gap bottom on the line y = 1.
-    let comb = |teeth: i64| {
-        let mut ring = vec![(0, 0), (2 * teeth, 0)];
-        for k in (0..teeth).rev() {
-            ring.extend([(2 * k + 2, 1), (2 * k + 1, 1), (2 * k + 1, 4), (2 * k, 4)]);
-        }
-        ring
-    };
-    let p = polygon(&[&comb(300)]);
+    let p = polygon(&[&crate::test_support::comb(300, 1, 3)]);
     let (corners, plain) = p.minimum_bounds();
     let t = super::triangulate_within(&p, Some(std::time::Instant::now())).unwrap();
     let check = crate::verify::check(&p, &t);

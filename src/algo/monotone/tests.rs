@@ -223,10 +223,7 @@ fn turned(ring: &[(i64, i64)], k: usize) -> Vec<(i64, i64)> {
 fn combs() {
     // Ten teeth of width 2 over gaps of width 2, all gap bottoms on one line, in all four
     // directions (teeth up, left, down, right).
-    let mut comb = vec![(0, 0), (40, 0)];
-    for k in (0..10).rev() {
-        comb.extend([(4 * k + 4, 1), (4 * k + 2, 1), (4 * k + 2, 5), (4 * k, 5)]);
-    }
+    let comb = crate::test_support::comb(10, 2, 4);
     for q in 0..4 {
         check(&turned(&comb, q));
     }
