@@ -59,7 +59,9 @@ pub fn triangulate<P: Coord>(polygon: &Polygon<P>) -> Result<Triangulation, Tria
     }
     Ok(Triangulation {
         algorithm: Algorithm::Ear,
-        triangles: super::plain_polygon(polygon),
+        // The triangulation MINITRI's step 1 walks (fatter triangles on wide polygons, and on
+        // large ones made while the polygon was validated).
+        triangles: super::plain_polygon_for_walking(polygon),
         degenerate: Vec::new(),
         optimal: false,
         lower_bound: None,

@@ -337,10 +337,38 @@ pub(crate) fn plain_polygon<P: Coord>(polygon: &crate::Polygon<P>) -> Vec<[usize
 /// slow, never wrong. A polygon about as wide as tall keeps the usual sweep, which needs no turned
 /// copy of its points (16 bytes per vertex at the peak).
 pub(crate) fn plain_polygon_for_walking<P: Coord>(polygon: &crate::Polygon<P>) -> Vec<[usize; 3]> {
-    let pts = polygon.points();
-    if pts.len() <= ear::CLIP_UP_TO {
+    if let Some(plain) = polygon.take_walking_plain() {
+        return plain; // the same triangles, made while the polygon was validated
+    }
+    if polygon.len() <= ear::CLIP_UP_TO {
         return plain_polygon(polygon);
     }
+    match turned_for_walking(polygon) {
+        None => plain_polygon(polygon),
+        Some(turned) => plain_rings(&turned, polygon.ring_starts()),
+    }
+}
+
+/// [`plain_polygon_for_walking`] of a polygon of more than [`ear::CLIP_UP_TO`] vertices whose
+/// validation is still running: the same triangles if it turns out valid, and on any rings no
+/// panic and an end in the same time bound (`None` where they break the monotone sweep's
+/// contract; `None` for small polygons too).
+pub(crate) fn try_plain_polygon_for_walking<P: Coord>(
+    polygon: &crate::Polygon<P>,
+) -> Option<Vec<[usize; 3]>> {
+    if polygon.len() <= ear::CLIP_UP_TO {
+        return None;
+    }
+    match turned_for_walking(polygon) {
+        None => monotone::try_triangulate_rings(polygon.points(), polygon.ring_starts()),
+        Some(turned) => monotone::try_triangulate_rings(&turned, polygon.ring_starts()),
+    }
+}
+
+/// The points turned a quarter-turn when the bounding box is more than twice as wide as tall
+/// (see [`plain_polygon_for_walking`]), else `None`.
+fn turned_for_walking<P: Coord>(polygon: &crate::Polygon<P>) -> Option<Vec<P>> {
+    let pts = polygon.points();
     // The points of least and greatest x, then y.
     let mut ends = [pts[0]; 4];
     for &p in pts {
@@ -359,11 +387,7 @@ pub(crate) fn plain_polygon_for_walking<P: Coord>(polygon: &crate::Polygon<P>) -
         ends[1].offset_f64(ends[0])[0],
         ends[3].offset_f64(ends[2])[1],
     );
-    if width <= 2.0 * height {
-        return plain_polygon(polygon);
-    }
-    let turned: Vec<P> = pts.iter().map(|p| p.quarter_turn()).collect();
-    plain_rings(&turned, polygon.ring_starts())
+    (width > 2.0 * height).then(|| pts.iter().map(|p| p.quarter_turn()).collect())
 }
 
 /// A triangulation of a polygon with touching rings ([`walks`]).

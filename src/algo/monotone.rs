@@ -224,29 +224,39 @@ pub(crate) fn triangulate_cycle<P: Coord>(pts: &[P]) -> Vec<[usize; 3]> {
 /// invariant, on input outside the module's contract (crossing or touching rings, equal points,
 /// spikes, wrong orientations) when it is detected.
 pub(crate) fn triangulate_rings<P: Coord>(pts: &[P], ring_starts: &[usize]) -> Vec<[usize; 3]> {
+    try_triangulate_rings(pts, ring_starts)
+        .expect("monotone triangulation: input outside the contract, invariant broken")
+}
+
+/// [`triangulate_rings`] on rings that may break its contract (crossing, touching, equal
+/// points, spikes): the same triangles when they keep it, else `None` or some triangles. It never
+/// panics (beyond `ring_starts` as in [`triangulate_rings`]) and always ends, within the same
+/// bounds: every broken invariant that would be a panic there is a `None` here. So a polygon can
+/// be triangulated while it is still being validated ([`crate::geom::polygon`]), the result
+/// kept only if the polygon is valid.
+pub(crate) fn try_triangulate_rings<P: Coord>(
+    pts: &[P],
+    ring_starts: &[usize],
+) -> Option<Vec<[usize; 3]>> {
     let n = pts.len();
     let links = Links::new(n, ring_starts);
     let holes = ring_starts.len() - 1;
     let expected = n + 2 * holes - 2;
     let mut triangles = Vec::with_capacity(expected);
     let mut work = Work::default();
-    let diagonals = Sweep::run(pts, &links);
+    let diagonals = Sweep::run(pts, &links)?;
     if diagonals.is_empty() {
         // One monotone ring (a hole always gets diagonals at its lowest and highest vertices).
         let cycle: Vec<usize> = (0..n).collect();
-        triangulate_monotone(pts, &cycle, &mut work, &mut triangles);
+        triangulate_monotone(pts, &cycle, &mut work, &mut triangles)?;
     } else {
-        let (vertices, starts) = pieces(pts, &links, &diagonals);
+        let (vertices, starts) = pieces(pts, &links, &diagonals)?;
         for w in starts.windows(2) {
-            triangulate_monotone(pts, &vertices[w[0]..w[1]], &mut work, &mut triangles);
+            triangulate_monotone(pts, &vertices[w[0]..w[1]], &mut work, &mut triangles)?;
         }
     }
-    assert_eq!(
-        triangles.len(),
-        expected,
-        "monotone triangulation: wrong triangle count, invariant broken"
-    );
-    triangles
+    // A wrong count is a broken invariant too.
+    (triangles.len() == expected).then_some(triangles)
 }
 
 /// The boundary neighbours of every point of a set of rings stored one after another.
@@ -414,8 +424,8 @@ struct Sweep<'a, P: Coord> {
 
 impl<'a, P: Coord> Sweep<'a, P> {
     /// The diagonals splitting the polygon into monotone pieces (proper, pairwise
-    /// non-crossing, none repeated).
-    fn run(pts: &'a [P], links: &'a Links) -> Vec<[usize; 2]> {
+    /// non-crossing, none repeated); `None` on input outside the contract where it shows.
+    fn run(pts: &'a [P], links: &'a Links) -> Option<Vec<[usize; 2]>> {
         let n = pts.len();
         let kind = (0..n)
             .map(|v| Kind::of(pts[links.prev[v]], pts[v], pts[links.next[v]]))
@@ -431,93 +441,99 @@ impl<'a, P: Coord> Sweep<'a, P> {
         };
         let mut order: Vec<usize> = (0..n).collect();
         order.sort_unstable_by_key(|&v| height(pts[v]));
-        for v in order {
-            sweep.event(v);
+        // Equal points would make the angular sort of `pieces` inconsistent.
+        if order.windows(2).any(|w| pts[w[0]] == pts[w[1]]) {
+            return None;
         }
-        debug_assert!(sweep.status.is_empty(), "edges left in the sweep status");
-        sweep.diagonals
+        for v in order {
+            sweep.event(v)?;
+        }
+        sweep.status.is_empty().then_some(sweep.diagonals)
     }
 
     fn cut(&self, e: usize) -> Cut<P> {
         Cut::new(self.pts[e], self.pts[self.links.next[e]], e)
     }
 
-    /// Processes vertex `v` (see the action table of the module documentation).
-    fn event(&mut self, v: usize) {
+    /// Processes vertex `v` (see the action table of the module documentation); `None` when an
+    /// invariant breaks (input outside the contract).
+    fn event(&mut self, v: usize) -> Option<()> {
         let p = self.links.prev[v];
         match self.kind[v] {
             Kind::Start => self.insert(p, v),
             Kind::End => self.finish(v, v),
             Kind::Split => {
-                let e = self.west_of(v);
+                let e = self.west_of(v)?;
                 self.diagonals.push([v, self.helper[e]]);
                 self.helper[e] = v;
-                self.insert(p, v);
+                self.insert(p, v)
             }
             Kind::Merge => {
-                self.finish(v, v);
-                let e = self.west_of(v);
-                self.replace_helper(e, v);
+                self.finish(v, v)?;
+                let e = self.west_of(v)?;
+                self.replace_helper(e, v)
             }
             Kind::Downward => {
-                self.finish(v, v);
-                self.insert(p, v);
+                self.finish(v, v)?;
+                self.insert(p, v)
             }
             Kind::Upward => {
-                let e = self.west_of(v);
-                self.replace_helper(e, v);
+                let e = self.west_of(v)?;
+                self.replace_helper(e, v)
             }
         }
     }
 
-    /// Inserts edge `e` with helper `v`.
-    fn insert(&mut self, e: usize, v: usize) {
+    /// Inserts edge `e` with helper `v` (`None` if it is in the status already).
+    fn insert(&mut self, e: usize, v: usize) -> Option<()> {
+        if self.handle[e].is_some() {
+            return None;
+        }
         self.helper[e] = v;
-        debug_assert!(
-            self.handle[e].is_none(),
-            "edge inserted twice into the sweep status"
-        );
         self.handle[e] = Some(self.status.insert(self.cut(e)));
+        Some(())
     }
 
     /// Removes edge `e`, which ends at `v`, adding the diagonal to its helper if that is a merge
-    /// vertex.
-    fn finish(&mut self, e: usize, v: usize) {
-        self.replace_helper(e, v);
-        let h = self.handle[e]
-            .take()
-            .expect("edge missing from the sweep status: invariant broken");
+    /// vertex (`None` if it is not in the status).
+    fn finish(&mut self, e: usize, v: usize) -> Option<()> {
+        let h = self.handle[e].take()?;
+        self.replace_helper(e, v)?;
         self.status.remove(h);
+        Some(())
     }
 
-    /// Makes `v` the helper of `e`, adding the diagonal to the old helper if it is a merge vertex.
-    fn replace_helper(&mut self, e: usize, v: usize) {
+    /// Makes `v` the helper of `e`, adding the diagonal to the old helper if it is a merge vertex
+    /// (`None` if `e` has no helper: it never entered the status).
+    fn replace_helper(&mut self, e: usize, v: usize) -> Option<()> {
         let h = self.helper[e];
-        if self.kind[h] == Kind::Merge {
+        if *self.kind.get(h)? == Kind::Merge {
             self.diagonals.push([v, h]);
         }
         self.helper[e] = v;
+        Some(())
     }
 
     /// The status edge immediately west of vertex `v`, which exists whenever the interior lies
     /// west of `v` (split, merge and upward vertices).
-    fn west_of(&self, v: usize) -> usize {
-        let west = self
-            .status
-            .below(&Cut::probe(self.pts[v]))
-            .expect("no edge west of a split, merge or upward vertex: invariant broken");
-        self.status.key(west).edge
+    fn west_of(&self, v: usize) -> Option<usize> {
+        let west = self.status.below(&Cut::probe(self.pts[v]))?;
+        Some(self.status.key(west).edge)
     }
 }
 
 /// The pieces cut out of the polygon by `diagonals` (proper, pairwise non-crossing, connecting
 /// the rings without cut vertex, see "Holes" in the module documentation): all their vertex
-/// cycles, counter-clockwise, concatenated, and the start of each (plus the end).
+/// cycles, counter-clockwise, concatenated, and the start of each (plus the end). `None` when a
+/// half-edge would lie on two pieces (input outside the contract). The walk cannot fail
+/// otherwise: `twin` pairs first slots with last ones and diagonal slots with diagonal ones,
+/// so from a slot that is not a vertex's last, `twin[h] - 1` is again one (and at least 0),
+/// whatever the geometry.
 fn pieces<P: Coord>(
     pts: &[P],
     links: &Links,
     diagonals: &[[usize; 2]],
-) -> (Vec<usize>, Vec<usize>) {
+) -> Option<(Vec<usize>, Vec<usize>)> {
     let n = pts.len();
     let next = |i: usize| links.next[i];
     let prev = |i: usize| links.prev[i];
@@ -582,7 +598,9 @@ fn pieces<P: Coord>(
             }
             let (mut h, mut w) = (first, v);
             loop {
-                assert!(!used[h], "half-edge on two pieces: invariant broken");
+                if used[h] {
+                    return None; // a half-edge on two pieces
+                }
                 used[h] = true;
                 vertices.push(w);
                 // At x = to[h], the twin is x -> w; the next half-edge is the slot before it.
@@ -595,7 +613,7 @@ fn pieces<P: Coord>(
             starts.push(vertices.len());
         }
     }
-    (vertices, starts)
+    Some((vertices, starts))
 }
 
 /// Counter-clockwise order of the directions from `w` to `a` and to `b`, measured from the
@@ -626,14 +644,19 @@ struct Work {
 
 /// Triangulates a monotone piece (a counter-clockwise cycle of indices into `pts`, monotone in
 /// the height order, flat vertices allowed) into `cycle.len() - 2` positive triangles, appended to
-/// `out` (the stack algorithm; see the module documentation for the proof).
+/// `out` (the stack algorithm; see the module documentation for the proof). `None` if the piece
+/// has fewer than 3 vertices, is not monotone, or a triangle would not be positive (input
+/// outside the contract).
 fn triangulate_monotone<P: Coord>(
     pts: &[P],
     cycle: &[usize],
     work: &mut Work,
     out: &mut Vec<[usize; 3]>,
-) {
+) -> Option<()> {
     let m = cycle.len();
+    if m < 3 {
+        return None;
+    }
     let h = |k: usize| height(pts[cycle[k]]);
     let (mut top, mut bottom) = (0, 0);
     for k in 1..m {
@@ -654,12 +677,16 @@ fn triangulate_monotone<P: Coord>(
         if take_west {
             sorted.push((cycle[west], Chain::West));
             let step = (west + 1) % m;
-            assert!(h(step) < h(west), "piece not monotone: invariant broken");
+            if h(step) >= h(west) {
+                return None; // not monotone
+            }
             west = step;
         } else {
             sorted.push((cycle[east], Chain::East));
             let step = (east + m - 1) % m;
-            assert!(h(step) < h(east), "piece not monotone: invariant broken");
+            if h(step) >= h(east) {
+                return None; // not monotone
+            }
             east = step;
         }
     }
@@ -670,7 +697,7 @@ fn triangulate_monotone<P: Coord>(
     for &(u, chain) in &sorted[2..m - 1] {
         let top_chain = stack[stack.len() - 1].1;
         if chain != top_chain {
-            fan(pts, stack, u, top_chain, out);
+            fan(pts, stack, u, top_chain, out)?;
             let last = stack[stack.len() - 1];
             stack.clear();
             stack.push(last);
@@ -693,30 +720,31 @@ fn triangulate_monotone<P: Coord>(
         stack.push((u, chain));
     }
     let top_chain = stack[stack.len() - 1].1;
-    fan(pts, stack, sorted[m - 1].0, top_chain, out);
+    fan(pts, stack, sorted[m - 1].0, top_chain, out)
 }
 
 /// The fan from `u` (below the whole stack, on the other chain or the bottom) over the stack
-/// chain, whose vertices `s_1..` lie on `chain`.
+/// chain, whose vertices `s_1..` lie on `chain`; `None` if a triangle would not be positive
+/// (input outside the contract).
 fn fan<P: Coord>(
     pts: &[P],
     stack: &[(usize, Chain)],
     u: usize,
     chain: Chain,
     out: &mut Vec<[usize; 3]>,
-) {
+) -> Option<()> {
     for w in stack.windows(2) {
         let (a, b) = (w[0].0, w[1].0);
         let t = match chain {
             Chain::West => [a, b, u],
             Chain::East => [u, b, a],
         };
-        debug_assert!(
-            cross(pts[t[0]], pts[t[1]], pts[t[2]]) > 0,
-            "fan triangle not positive: invariant broken"
-        );
+        if cross(pts[t[0]], pts[t[1]], pts[t[2]]) <= 0 {
+            return None;
+        }
         out.push(t);
     }
+    Some(())
 }
 
 #[cfg(test)]

@@ -116,6 +116,10 @@ impl Grid {
     }
 }
 
+/// From this many vertices on, a polygon without holes is triangulated for step 1 while it is
+/// validated ([`Polygon::validated`]); below, the second thread would not pay for itself.
+const TRIANGULATE_WHILE_VALIDATING: usize = 8192;
+
 /// A valid polygon with holes, its points of one exact kernel: the fast grid [`Point`]s (the
 /// default) or [`WidePoint`]s.
 ///
@@ -140,6 +144,32 @@ pub struct Polygon<P = Point> {
     source_ring: Vec<u32>,
     /// The number of touches joining rings into walks (input rings minus walks).
     touches: usize,
+    /// A plain triangulation for step 1's walks, made while the polygon was validated (large
+    /// polygons without holes, [`crate::algo::plain_polygon_for_walking`]), until taken.
+    walking_plain: TakeOnce<Vec<[usize; 3]>>,
+}
+
+/// A value that can be taken once through a shared reference (then it is gone); a clone starts
+/// empty. It holds what is worth keeping only until its one user takes it, without a copy.
+#[derive(Debug, Default)]
+struct TakeOnce<T>(std::sync::Mutex<Option<T>>);
+
+impl<T> TakeOnce<T> {
+    fn new(value: Option<T>) -> TakeOnce<T> {
+        TakeOnce(std::sync::Mutex::new(value))
+    }
+
+    fn take(&self) -> Option<T> {
+        // A poisoned lock (a panic while it was held, which `take` cannot cause) only loses the
+        // value, which is then made again.
+        self.0.lock().ok().and_then(|mut value| value.take())
+    }
+}
+
+impl<T> Clone for TakeOnce<T> {
+    fn clone(&self) -> TakeOnce<T> {
+        TakeOnce::new(None)
+    }
 }
 
 /// A valid polygon of either kernel, as [`AnyPolygon::from_raw`] chose it.
@@ -269,6 +299,7 @@ impl AnyPolygon {
                     grid: p.grid,
                     source_ring: p.source_ring.clone(),
                     touches: p.touches,
+                    walking_plain: TakeOnce::default(),
                 })
             }
         }
@@ -361,9 +392,27 @@ pub(crate) fn wide_points(raw: &RawPolygon) -> Vec<WidePoint> {
 impl<P: Coord> Polygon<P> {
     /// The polygon validated: as it is when no rings touch, else relinked into the boundary
     /// walks of its touching rings ([`crate::geom::touch`]).
-    pub(crate) fn validated(self) -> Result<Polygon<P>, Vec<InvalidPolygon>> {
-        let contacts = validate::touching(&self)?;
+    pub(crate) fn validated(mut self) -> Result<Polygon<P>, Vec<InvalidPolygon>> {
+        // A large polygon without holes is triangulated for step 1's walks on a second thread
+        // while it is validated: the two sweeps take about as long each (0.9-1.0 s at 10^6
+        // vertices). The triangulation of rings not yet known valid never panics and always ends
+        // (`monotone::try_triangulate_rings`), and it is kept only if the polygon is valid.
+        // On one thread (`--jobs 1`) nothing would overlap: an invalid polygon would only be
+        // triangulated for nothing.
+        let overlap = self.holes() == 0
+            && self.len() >= TRIANGULATE_WHILE_VALIDATING
+            && rayon::current_num_threads() > 1;
+        let (contacts, plain) = if overlap {
+            rayon::join(
+                || validate::touching(&self),
+                || crate::algo::try_plain_polygon_for_walking(&self),
+            )
+        } else {
+            (validate::touching(&self), None)
+        };
+        let contacts = contacts?;
         if !contacts.any() {
+            self.walking_plain = TakeOnce::new(plain);
             return Ok(self);
         }
         super::touch::walks(self, &contacts)
@@ -381,6 +430,7 @@ impl<P: Coord> Polygon<P> {
             grid,
             source_ring: Vec::new(),
             touches: 0,
+            walking_plain: TakeOnce::default(),
         }
     }
 
@@ -430,7 +480,14 @@ impl<P: Coord> Polygon<P> {
             grid: self.grid,
             source_ring: order.iter().map(|&i| self.ring_of[i]).collect(),
             touches,
+            walking_plain: TakeOnce::default(),
         }
+    }
+
+    /// The plain triangulation made for step 1's walks while validating, if any and not taken
+    /// yet: the first call takes it (its memory goes with it).
+    pub(crate) fn take_walking_plain(&self) -> Option<Vec<[usize; 3]>> {
+        self.walking_plain.take()
     }
 
     /// The number of holes of the input (hole walks plus touches).
@@ -457,6 +514,7 @@ impl<P: Coord> Polygon<P> {
             grid,
             source_ring: Vec::new(),
             touches: 0,
+            walking_plain: TakeOnce::default(),
         }
     }
 

@@ -1053,3 +1053,27 @@ fn a_past_deadline_bounds_step_1_without_holes() {
     assert!(lower <= exact.triangles.len() && exact.triangles.len() <= t.triangles.len());
     assert!(crate::verify::check(&p, &exact).valid);
 }
+
+/// A large polygon without holes is triangulated for step 1 on a second thread while it is
+/// validated (`Polygon::validated`): the mesh taken is the one made afterwards (here through the
+/// quarter-turned sweep of a wide polygon and the usual one of a tall polygon), it is taken once,
+/// and an invalid polygon is refused as before.
+#[test]
+fn the_mesh_made_while_validating_is_the_mesh() {
+    use crate::test_support::{comb, raw};
+    let wide = comb(3000, 1, 3); // 12,002 vertices, 6,000 wide and 4 tall
+    let tall: Vec<(i64, i64)> = wide.iter().map(|&(x, y)| (-y, x)).collect();
+    for ring in [&wide, &tall] {
+        let p = polygon(&[ring]);
+        let made = p.take_walking_plain().expect("made while validating");
+        assert!(p.take_walking_plain().is_none());
+        assert_eq!(crate::algo::plain_polygon_for_walking(&p), made);
+        let t = super::triangulate_within(&polygon(&[ring]), None).unwrap();
+        assert!(crate::verify::check(&p, &t).valid);
+        assert_eq!(t.triangles.len(), p.len() - 2 - t.degenerate.len());
+    }
+    // A tooth's top moved below the base: its edges cross the base.
+    let mut bad = wide.clone();
+    bad[4] = (bad[4].0, -1);
+    assert!(Polygon::from_raw(&raw(&[&bad])).is_err());
+}

@@ -838,3 +838,55 @@ fn jittered_grid_of_triangular_holes() {
         check_holed(&refs);
     }
 }
+
+/// `try_triangulate_rings` runs on rings not yet validated (while the validation runs, for
+/// large polygons): on any rings, crossing, touching, with spikes and equal points, it must end
+/// without a panic (this test runs with debug assertions on), and on valid ones it gives what
+/// `triangulate_rings` gives. Random points on small grids, one to three rings, and valid
+/// polygons with one vertex moved.
+#[test]
+fn rings_outside_the_contract_never_panic() {
+    let mut rng = Rng(0x5EED_0BAD);
+    let (mut none, mut some) = (0, 0);
+    for case in 0..20_000 {
+        let size = [2, 3, 5, 8, 20][case % 5];
+        let mut pts = Vec::new();
+        let mut starts = Vec::new();
+        if case % 4 == 3 {
+            // A valid polygon with one vertex moved anywhere on its grid.
+            let mut ring = random_polygon(&mut rng, size, 4 + case % 20, case % 8 == 3);
+            let k = rng.below(ring.len() as u64) as usize;
+            ring[k] = (rng.int(0, size), rng.int(0, size));
+            starts.push(0);
+            pts.extend(ring.iter().map(|&(x, y)| pt(x, y)));
+        } else {
+            for _ in 0..1 + case % 3 {
+                starts.push(pts.len());
+                for _ in 0..3 + rng.below(30) {
+                    pts.push(pt(rng.int(0, size), rng.int(0, size)));
+                }
+            }
+        }
+        match try_triangulate_rings(&pts, &starts) {
+            None => none += 1,
+            Some(triangles) => {
+                some += 1;
+                assert!(triangles.iter().flatten().all(|&v| v < pts.len()));
+            }
+        }
+    }
+    assert!(
+        none > 1000 && some > 300,
+        "{none} refused, {some} triangulated"
+    );
+    // On valid rings the two entries agree.
+    for case in 0..500 {
+        let ring = random_polygon(&mut rng, 20, 4 + case % 30, case % 2 == 0);
+        let p = polygon(&[&ring]);
+        let expected = triangulate_rings(p.points(), p.ring_starts());
+        assert_eq!(
+            try_triangulate_rings(p.points(), p.ring_starts()),
+            Some(expected)
+        );
+    }
+}
