@@ -116,8 +116,8 @@ impl Grid {
     }
 }
 
-/// From this many vertices on, a polygon without holes is triangulated for step 1 while it is
-/// validated ([`Polygon::validated`]); below, the second thread would not pay for itself.
+/// From this many vertices on, a polygon is triangulated for step 1 while it is validated
+/// ([`Polygon::validated`]); below, the second thread would not pay for itself.
 const TRIANGULATE_WHILE_VALIDATING: usize = 8192;
 
 /// A valid polygon with holes, its points of one exact kernel: the fast grid [`Point`]s (the
@@ -145,7 +145,7 @@ pub struct Polygon<P = Point> {
     /// The number of touches joining rings into walks (input rings minus walks).
     touches: usize,
     /// A plain triangulation for step 1's walks, made while the polygon was validated (large
-    /// polygons without holes, [`crate::algo::plain_polygon_for_walking`]), until taken.
+    /// polygons, [`crate::algo::plain_polygon_for_walking`]), until taken.
     walking_plain: TakeOnce<Vec<[usize; 3]>>,
 }
 
@@ -393,15 +393,15 @@ impl<P: Coord> Polygon<P> {
     /// The polygon validated: as it is when no rings touch, else relinked into the boundary
     /// walks of its touching rings ([`crate::geom::touch`]).
     pub(crate) fn validated(mut self) -> Result<Polygon<P>, Vec<InvalidPolygon>> {
-        // A large polygon without holes is triangulated for step 1's walks on a second thread
-        // while it is validated: the two sweeps take about as long each (0.9-1.0 s at 10^6
-        // vertices). The triangulation of rings not yet known valid never panics and always ends
-        // (`monotone::try_triangulate_rings`), and it is kept only if the polygon is valid.
+        // A large polygon is triangulated for step 1's walks on a second thread while it is
+        // validated: the two sweeps take about as long each (0.9-1.0 s at 10^6 vertices). The
+        // triangulation of rings not yet known valid never panics and always ends
+        // (`monotone::try_triangulate_rings`), and it is kept only if the polygon is valid and
+        // its rings do not touch (touching rings are relinked into walks, another polygon).
         // On one thread (`--jobs 1`) nothing would overlap: an invalid polygon would only be
         // triangulated for nothing.
-        let overlap = self.holes() == 0
-            && self.len() >= TRIANGULATE_WHILE_VALIDATING
-            && rayon::current_num_threads() > 1;
+        let overlap =
+            self.len() >= TRIANGULATE_WHILE_VALIDATING && rayon::current_num_threads() > 1;
         let (contacts, plain) = if overlap {
             rayon::join(
                 || validate::touching(&self),

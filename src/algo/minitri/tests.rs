@@ -1054,26 +1054,53 @@ fn a_past_deadline_bounds_step_1_without_holes() {
     assert!(crate::verify::check(&p, &exact).valid);
 }
 
-/// A large polygon without holes is triangulated for step 1 on a second thread while it is
-/// validated (`Polygon::validated`): the mesh taken is the one made afterwards (here through the
-/// quarter-turned sweep of a wide polygon and the usual one of a tall polygon), it is taken once,
-/// and an invalid polygon is refused as before.
+/// A large polygon is triangulated for step 1 on a second thread while it is validated
+/// (`Polygon::validated`): the mesh taken is the one made afterwards (here through the
+/// quarter-turned sweep of a wide polygon and the usual one of a tall polygon, with and without
+/// a hole), it is taken once, and an invalid polygon is refused as before.
 #[test]
 fn the_mesh_made_while_validating_is_the_mesh() {
     use crate::test_support::{comb, raw};
     let wide = comb(3000, 1, 3); // 12,002 vertices, 6,000 wide and 4 tall
     let tall: Vec<(i64, i64)> = wide.iter().map(|&(x, y)| (-y, x)).collect();
-    for ring in [&wide, &tall] {
-        let p = polygon(&[ring]);
+    // The overlap needs two threads, whatever the machine running the tests has.
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(2)
+        .build()
+        .unwrap();
+    let turn =
+        |ring: &[(i64, i64)]| -> Vec<(i64, i64)> { ring.iter().map(|&(x, y)| (-y, x)).collect() };
+    // A square hole in the base strip of a comb 4 wide and 8 tall, and the same turned.
+    let (holed, hole) = (comb(3000, 4, 8), vec![(1, 2), (1, 4), (3, 4), (3, 2)]);
+    let cases = [
+        vec![wide.clone()],
+        vec![tall],
+        vec![holed.clone(), hole.clone()],
+        vec![turn(&holed), turn(&hole)],
+    ];
+    for rings in &cases {
+        let rings: Vec<&[(i64, i64)]> = rings.iter().map(Vec::as_slice).collect();
+        let p = pool.install(|| polygon(&rings));
         let made = p.take_walking_plain().expect("made while validating");
         assert!(p.take_walking_plain().is_none());
         assert_eq!(crate::algo::plain_polygon_for_walking(&p), made);
-        let t = super::triangulate_within(&polygon(&[ring]), None).unwrap();
+        let fresh = polygon(&rings);
+        let t = super::triangulate_within(&fresh, None).unwrap();
         assert!(crate::verify::check(&p, &t).valid);
-        assert_eq!(t.triangles.len(), p.len() - 2 - t.degenerate.len());
+        let plain = p.len() + 2 * p.holes() - 2;
+        assert_eq!(t.triangles.len(), plain - t.degenerate.len());
     }
+    // On one thread nothing would overlap: no triangulation is made ahead.
+    let one = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .unwrap();
+    assert!(one
+        .install(|| polygon(&[&wide]))
+        .take_walking_plain()
+        .is_none());
     // A tooth's top moved below the base: its edges cross the base.
     let mut bad = wide.clone();
     bad[4] = (bad[4].0, -1);
-    assert!(Polygon::from_raw(&raw(&[&bad])).is_err());
+    assert!(pool.install(|| Polygon::from_raw(&raw(&[&bad]))).is_err());
 }
