@@ -343,10 +343,8 @@ pub(crate) fn plain_polygon_for_walking<P: Coord>(polygon: &crate::Polygon<P>) -
     if polygon.len() <= ear::CLIP_UP_TO {
         return plain_polygon(polygon);
     }
-    match turned_for_walking(polygon) {
-        None => plain_polygon(polygon),
-        Some(turned) => plain_rings(&turned, polygon.ring_starts()),
-    }
+    try_plain_polygon_for_walking(polygon)
+        .expect("monotone triangulation of a valid polygon: invariant broken")
 }
 
 /// [`plain_polygon_for_walking`] of a polygon of more than [`ear::CLIP_UP_TO`] vertices whose
