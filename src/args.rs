@@ -91,9 +91,10 @@ pub struct Flags {
     /// Largest polygon (vertices) the O(n^3)-time, O(n^2)-memory asano DP accepts
     #[arg(long, value_name = "N", default_value_t = minitri::algo::asano::DEFAULT_LIMIT)]
     pub dp_limit: usize,
-    /// Seconds the exact method for a polygon with holes or touching rings may run, every stage
-    /// of it (0: no limit); past it, the best triangulation found is reported with "optimal":
-    /// false, a lower bound and "stopped_by": "time limit"
+    /// Seconds the exact method for one polygon may run (0: no limit): every stage of the search
+    /// for a polygon with holes or touching rings, and step 1 of one without (quadratic on
+    /// combs); past it, the best triangulation found is reported with "optimal": false, a lower
+    /// bound and "stopped_by": "time limit"
     #[arg(long, value_name = "SECONDS", default_value_t = 10.0, value_parser = seconds)]
     pub time_limit: f64,
     /// Most vertices one polygon may hold while it is read, all its rings together (GeoJSON: one
