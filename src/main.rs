@@ -2,7 +2,11 @@
 //! (`minitri::batch`); this file wires the flags, the thread pool, the progress bar and the
 //! output file or directory.
 
+mod allocator;
 mod args;
+
+#[global_allocator]
+static ALLOCATOR: allocator::Split = allocator::Split;
 mod shell;
 
 use anyhow::Context;
