@@ -24,8 +24,9 @@
 //!    last pseudotriangle.
 //!
 //! How S is found: the hull is triangulated once (the polygon with its holes by
-//! `algo::plain_polygon`, each hole and pocket by `algo::plain`; O(n log n)), with the edges of
-//! L and of the hull marked fixed (`algo/mesh.rs`), and its triangles fattened by Lawson
+//! `algo::plain_polygon_for_walking`, which takes the triangulation made while a large polygon
+//! was validated if nothing took it before; each hole and pocket by `algo::plain`; O(n log n)),
+//! with the edges of L and of the hull marked fixed (`algo/mesh.rs`), and its triangles fattened by Lawson
 //! flips (a heuristic for speed only: fat triangles make short sleeves). Walking along A1 just
 //! inside F crosses, at each inner vertex of A1, the diagonals inside F's angle there,
 //! clockwise; with immediate back-and-forth crossings of one diagonal cancelled, this is the
@@ -86,7 +87,7 @@ mod funnel;
 
 use super::mesh::{Broken, Half, Mesh};
 use super::TriangulateError;
-use super::{plain, plain_polygon, HullCounts, Pseudotriangle, Pseudotriangulation};
+use super::{plain, plain_polygon_for_walking, HullCounts, Pseudotriangle, Pseudotriangulation};
 use crate::geom::kernel::Coord;
 use crate::geom::kernel::{cmp_angle, cross};
 use crate::geom::polygon::Polygon;
@@ -188,7 +189,7 @@ fn setup<'a, P: Coord>(
 ) -> (Mesh<'a, P>, Vec<(usize, usize)>, usize) {
     let n = polygon.len();
     let points = polygon.points();
-    let mut triangles = plain_polygon(polygon);
+    let mut triangles = plain_polygon_for_walking(polygon);
     let mut fixed: Vec<(usize, usize)> = (0..n).map(|i| (i, polygon.next(i))).collect();
     // Where to start: a half-edge of each first face's outer boundary, the face on its left.
     let mut work: Vec<(usize, usize)> = vec![(0, polygon.next(0))];
