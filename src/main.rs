@@ -19,7 +19,7 @@ use minitri::io::read::limits;
 use std::io::{self, IsTerminal, Write};
 use std::path::Path;
 use std::process::ExitCode;
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
 fn main() -> ExitCode {
@@ -49,9 +49,11 @@ fn say(line: &str) {
 }
 
 /// Is standard output an open descriptor? A program started with it closed (`>&-`) finds it
-/// reopened on `/dev/null` by Rust's start-up code, read-write, which would lose the result with
-/// exit status 0; a shell's `> /dev/null` opens it write-only. So on Linux, descriptor 1 open
-/// read-write on `/dev/null` counts as closed (as does a descriptor that cannot be duplicated).
+/// reopened on `/dev/null` by Rust's start-up code (read-write), which would lose the result
+/// with exit status 0. That reopened descriptor looks exactly like a `/dev/null` opened
+/// read-write on purpose (Python's `subprocess.DEVNULL`, systemd's `StandardOutput=null`), so
+/// on Linux the question is answered before Rust's start-up code runs ([`STDOUT_AT_START`]);
+/// elsewhere, and in any case, a descriptor that cannot be duplicated counts as closed.
 fn stdout_is_open() -> bool {
     #[cfg(unix)]
     {
@@ -61,21 +63,29 @@ fn stdout_is_open() -> bool {
         }
     }
     #[cfg(target_os = "linux")]
-    {
-        let on_null =
-            std::fs::read_link("/proc/self/fd/1").is_ok_and(|t| t == Path::new("/dev/null"));
-        let read_write = std::fs::read_to_string("/proc/self/fdinfo/1").is_ok_and(|info| {
-            info.lines()
-                .find_map(|l| l.strip_prefix("flags:"))
-                .and_then(|f| u32::from_str_radix(f.trim(), 8).ok())
-                .is_some_and(|flags| flags & 3 == 2) // O_ACCMODE, O_RDWR
-        });
-        if on_null && read_write {
-            return false;
-        }
+    if !STDOUT_AT_START.load(Ordering::Relaxed) {
+        return false;
     }
     true
 }
+
+/// Whether descriptor 1 was open when the process started: set by [`RECORD_STDOUT`], which
+/// the C runtime calls (as every `.init_array` entry) before `main`, hence before Rust's
+/// start-up code reopens closed standard descriptors on `/dev/null`.
+#[cfg(target_os = "linux")]
+static STDOUT_AT_START: AtomicBool = AtomicBool::new(true);
+
+#[cfg(target_os = "linux")]
+#[used]
+#[link_section = ".init_array"]
+static RECORD_STDOUT: extern "C" fn() = {
+    extern "C" fn record() {
+        // SAFETY: `fcntl(F_GETFD)` only reads the descriptor's flags (-1 when it is not open).
+        let open = unsafe { libc::fcntl(1, libc::F_GETFD) } != -1;
+        STDOUT_AT_START.store(open, Ordering::Relaxed);
+    }
+    record
+};
 
 fn run() -> anyhow::Result<ExitCode> {
     let started = Instant::now();
