@@ -9,14 +9,15 @@
 # Inputs: generated shapes (bench/polygon.py) and real boundaries from the public-domain US and
 # world atlases (bench/boundaries.py, fetched with npm into bench/data/ on the first run).
 # Usage, from anywhere: bench/peers.sh [SIZES...]   (default 10000 100000)
-# Environment: RUNS (default 5), MINITRI_PEER_SHAPES (default "star snake"). The comb and the
+# Environment: RUNS (default 5), MINITRI_PEER_SHAPES (default "star snake stairs stairs-lattice";
+# earcut takes about 9 s on the stairs of 10^5 vertices, so a run takes about 2 minutes). The comb and the
 # sliver, where MINITRI's step 1 is still quadratic, run at the first size only.
 # Needs python3, npm (first run only) and network for the peers' crates (first build only).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs=${RUNS:-5}
 sizes=("$@"); [ ${#sizes[@]} -gt 0 ] || sizes=(10000 100000)
-read -r -a shapes <<< "${MINITRI_PEER_SHAPES:-star snake}"
+read -r -a shapes <<< "${MINITRI_PEER_SHAPES:-star snake stairs stairs-lattice}"
 cargo build --release --quiet --bin minitri
 (cd bench/peers && cargo build --release --quiet)
 peers=bench/peers/target/release/peers

@@ -23,6 +23,14 @@
                                          both ways and its bounding box is square
   bench/polygon.py comb N                a comb of N teeth 1 wide and 9 high, gaps 1 wide, the
                                          gap floors on one line (about 4 N vertices)
+  bench/polygon.py stairs N [SEED]       a corridor climbing a random staircase (steps 1 to 3
+                                         units right and up, the upper wall the lower one moved
+                                         by (-1, 1)): about N vertices, corners only, many on
+                                         common grid lines (degenerate triangles across and along)
+  bench/polygon.py stairs-lattice N [SEED]
+                                         the same corridor with every lattice point of its walls
+                                         a vertex (about N vertices; long 3b-chains, step 3's
+                                         hard case, like the snake)
   bench/polygon.py sliver N              a staircase of unit steps from (N 1) to (1 N) over the
                                          long sliver edge (0 0, N 1): (0 0, N 1, N-1 1, N-1 2,
                                          ..., 1 N); about 2 N vertices, every reflex corner on the
@@ -154,6 +162,31 @@ elif kind == "sliver":
     pts = [(0, 0), (n, 1)]
     for k in range(1, n):
         pts += [(n - k, k), (n - k, k + 1)]
+elif kind == "stairs":
+    # A corridor climbing a random staircase: the lower wall steps right and up by 1 to 3 units
+    # at random, the upper wall is the lower one moved by (-1, 1); about n vertices, corners
+    # only (no vertex inside a step), many of them on common lines of the grid.
+    lower = [(0, 0)]
+    for _ in range(max(1, (n - 2) // 4)):
+        x, y = lower[-1]
+        x += rng.randint(1, 3)
+        lower.append((x, y))
+        lower.append((x, y + rng.randint(1, 3)))
+    pts = lower + [(x - 1, y + 1) for x, y in reversed(lower)]
+elif kind == "stairs-lattice":
+    # The same corridor with every lattice point of its walls a vertex (about n vertices):
+    # long collinear runs, 3b-chains along every step.
+    lower = [(0, 0)]
+    for _ in range(max(1, n // 8)):
+        x, y = lower[-1]
+        x += rng.randint(1, 3)
+        lower.append((x, y))
+        lower.append((x, y + rng.randint(1, 3)))
+    corners = lower + [(x - 1, y + 1) for x, y in reversed(lower)]
+    pts = []
+    for (x, y), (u, v) in zip(corners, corners[1:] + corners[:1]):
+        steps = max(abs(u - x), abs(v - y)) if x == u or y == v else 1
+        pts += [(x + (u - x) * k // steps, y + (v - y) * k // steps) for k in range(steps)]
 else:
-    sys.exit(f"unknown kind {kind!r}: use star, convex, maze, bars, snake, zigzag, comb or sliver")
+    sys.exit(f"unknown kind {kind!r}: use star, convex, maze, bars, snake, zigzag, comb, sliver, stairs or stairs-lattice")
 print("POLYGON ((" + ", ".join(f"{x} {y}" for x, y in pts + pts[:1]) + "))")
