@@ -31,6 +31,10 @@ use crate::geom::kernel::Coord;
 use crate::geom::polygon::Polygon;
 
 /// The triangles of all pieces, in stored vertex indices, counter-clockwise.
+///
+/// Contract: `polygon` has one ring (no holes, no touching rings: those go through
+/// [`super::cut`]), and `chosen` are mutually independent minimally degenerate triangles of it
+/// (step 3's answer), so that their sides nest; debug builds check the nesting at every piece.
 pub fn triangulate_pieces<P: Coord>(
     polygon: &Polygon<P>,
     chosen: &[Degenerate],
