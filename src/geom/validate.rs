@@ -266,6 +266,18 @@ fn scan<P: Coord>(
 ) -> Result<Contacts, Vec<InvalidPolygon>> {
     let mut errors = spikes(polygon);
     let mut contacts = Contacts::default();
+    // One small ring: valid exactly when no two non-adjacent edges meet (two vertices at one
+    // point make two such edges meet there, so none is repeated either). Only if some do is the
+    // full scan below run, which then reports what is wrong (the sorting of its vertices was
+    // 1.5% of the batch benchmark's time).
+    if errors.is_empty()
+        && small_rings_by_pairs
+        && polygon.holes() == 0
+        && polygon.len() <= SMALL_RING
+        && no_two_edges_meet(polygon)
+    {
+        return Ok(contacts);
+    }
     let mut order: Vec<usize> = (0..polygon.len()).collect();
     order.sort_unstable_by_key(|&i| (polygon.point(i), i));
     for pair in order.windows(2) {
@@ -287,15 +299,8 @@ fn scan<P: Coord>(
     if !errors.is_empty() {
         return Err(errors);
     }
-    // One ring: valid exactly when no two non-adjacent edges meet (nothing can be misplaced).
-    // If some do, the sweep below finds and reports the leftmost contact, as for any polygon.
-    if small_rings_by_pairs
-        && polygon.holes() == 0
-        && polygon.len() <= SMALL_RING
-        && no_two_edges_meet(polygon)
-    {
-        return Ok(contacts);
-    }
+    // (A small ring whose edges meet goes on to the sweep, which finds and reports the leftmost
+    // contact, as for any polygon.)
     let mut found = allow_touches.then(Vec::new);
     let below = sweep(polygon, &order, &mut found, false).map_err(|e| vec![e])?;
     contacts.on_edge = found.unwrap_or_default();
