@@ -4,10 +4,10 @@
 
 mod allocator;
 mod args;
+mod shell;
 
 #[global_allocator]
 static ALLOCATOR: allocator::Split = allocator::Split;
-mod shell;
 
 use anyhow::Context;
 use args::Flags;

@@ -26,8 +26,8 @@
 //! How S is found: the hull is triangulated once (the polygon with its holes by
 //! `algo::plain_polygon_for_walking`, which takes the triangulation made while a large polygon
 //! was validated if nothing took it before; each hole and pocket by `algo::plain`; O(n log n)),
-//! with the edges of L and of the hull marked fixed (`algo/mesh.rs`), and its triangles fattened by Lawson
-//! flips (a heuristic for speed only: fat triangles make short sleeves). Walking along A1 just
+//! with the edges of L and of the hull marked fixed (`algo/mesh.rs`), and its triangles
+//! fattened by Lawson flips (a heuristic for speed only: fat triangles make short sleeves). Walking along A1 just
 //! inside F crosses, at each inner vertex of A1, the diagonals inside F's angle there,
 //! clockwise; with immediate back-and-forth crossings of one diagonal cancelled, this is the
 //! sleeve of Hershberger & Snoeyink, in which the funnel algorithm (`pseudo_hull/funnel.rs`)

@@ -40,16 +40,16 @@ pub fn triangulate_pieces<P: Coord>(
     chosen: &[Degenerate],
 ) -> Vec<[usize; 3]> {
     let n = polygon.len();
-    // The diagonals (sides that are not edges), deduplicated (3b-chains share sides), by end
-    // and then innermost first.
+    // The diagonals (sides that are not edges) as (later end, earlier end), deduplicated
+    // (3b-chains share sides), by later end and then innermost (latest earlier end) first.
     let is_edge = |u: usize, v: usize| polygon.next(u) == v || polygon.next(v) == u;
     let mut diagonals: Vec<(usize, usize)> = chosen
         .iter()
-        .flat_map(|m| [ordered(m.a, m.b), ordered(m.b, m.c)])
+        .flat_map(|m| [(m.a, m.b), (m.b, m.c)])
         .filter(|&(u, v)| !is_edge(u, v))
-        .map(|(u, v)| (v, u))
+        .map(|(u, v)| (u.max(v), u.min(v)))
         .collect();
-    diagonals.sort_unstable_by(|x, y| x.0.cmp(&y.0).then(y.1.cmp(&x.1)));
+    diagonals.sort_unstable_by_key(|&(v, u)| (v, std::cmp::Reverse(u)));
     diagonals.dedup();
     let mut straight_middle = vec![false; n];
     for m in chosen {
@@ -123,8 +123,4 @@ fn triangulate_piece<P: Coord>(
     piece.clear();
     piece.extend(keep.iter().map(|&i| polygon.point(i)));
     triangles.extend(plain(piece).into_iter().map(|t| t.map(|i| keep[i])));
-}
-
-fn ordered(u: usize, v: usize) -> (usize, usize) {
-    (u.min(v), u.max(v))
 }
