@@ -2,20 +2,23 @@
 # minitri beside the plain triangulators users pick today, end to end (file in, result out), as
 # one Markdown table: for each input the best of the peers of bench/peers/ (the `earcut` crate,
 # spade's constrained Delaunay triangulation, i_triangle), `minitri -a ear` and MINITRI (the
-# default), each the median wall time of $RUNS runs (default 5), and the ratios to the best peer.
+# default), each the median wall time of $RUNS runs (default 5), and the ratios to the best peer;
+# then, as a user who must reject invalid polygons would run it, earcut after the geo crate's
+# validity check (one run, stopped after $VALID_LIMIT s, default 10), and MINITRI's ratio to it.
 # Every run is one process, file in, result out: minitri's release binary writing JSON to
 # /dev/null, or the peers' binary running one peer (it reads and parses the same WKT file and
 # counts the triangles: bench/peers/src/main.rs), so process start-up counts alike for all.
 # Inputs: generated shapes (bench/polygon.py) and real boundaries from the public-domain US and
 # world atlases (bench/boundaries.py, fetched with npm into bench/data/ on the first run).
 # Usage, from anywhere: bench/peers.sh [SIZES...]   (default 10000 100000)
-# Environment: RUNS (default 5), MINITRI_PEER_SHAPES (default "star snake stairs stairs-lattice";
-# earcut takes about 9 s on the stairs of 10^5 vertices, so a run takes about 2 minutes). The comb and the
+# Environment: RUNS (default 5), VALID_LIMIT (default 10), MINITRI_PEER_SHAPES (default "star snake stairs stairs-lattice";
+# earcut takes about 9 s on the stairs of 10^5 vertices, so a run takes about 3 minutes). The comb and the
 # sliver, where MINITRI's step 1 is still quadratic, run at the first size only.
 # Needs python3, npm (first run only) and network for the peers' crates (first build only).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs=${RUNS:-5}
+valid_limit=${VALID_LIMIT:-10}
 sizes=("$@"); [ ${#sizes[@]} -gt 0 ] || sizes=(10000 100000)
 read -r -a shapes <<< "${MINITRI_PEER_SHAPES:-star snake stairs stairs-lattice}"
 cargo build --release --quiet --bin minitri
@@ -37,7 +40,7 @@ wall() { # COMMAND... -> median seconds over $runs runs
   done | median
 }
 row() { # LABEL FILE
-  local label=$1 file=$2 n best name ear mini
+  local label=$1 file=$2 n best name ear mini valid
   n=$("$minitri" -a ear "$file" | grep -m1 -o '"vertices": *[0-9]*' | grep -o '[0-9]*$')
   name= best=
   for peer in earcut spade i_triangle; do
@@ -47,16 +50,25 @@ row() { # LABEL FILE
   done
   ear=$(wall "$minitri" -a ear "$file")
   mini=$(wall "$minitri" "$file")
-  printf '| %s | %s | %.4f s (%s) | %.4f s | %.4f s | %.1fx | %.1fx |\n' "$label" "$n" "$best" \
-    "$name" "$ear" "$mini" "$(echo "$ear / $best" | bc -l)" "$(echo "$mini / $best" | bc -l)"
+  # earcut after geo's validity check: one run, stopped after $valid_limit s (it grows about
+  # quadratically: 47 s on the star of 10^5 vertices).
+  local start=$EPOCHREALTIME
+  if timeout "$valid_limit" "$peers" "$file" earcut+valid > /dev/null 2>&1; then
+    valid=$(echo "$EPOCHREALTIME - $start" | bc -l)
+    valid=$(printf '%.4f s | %.2fx' "$valid" "$(echo "$mini / $valid" | bc -l)")
+  else
+    valid="> $valid_limit s | < $(printf '%.2f' "$(echo "$mini / $valid_limit" | bc -l)")x"
+  fi
+  printf '| %s | %s | %.4f s (%s) | %.4f s | %.4f s | %.1fx | %.1fx | %s |\n' "$label" "$n" "$best" \
+    "$name" "$ear" "$mini" "$(echo "$ear / $best" | bc -l)" "$(echo "$mini / $best" | bc -l)" "$valid"
 }
 
 echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ //'),"
 echo "$(free -g | awk '/^Mem:/ { print $2 }') GiB; load average $(cut -d' ' -f1-3 /proc/loadavg);"
 echo "$(date -u '+%Y-%m-%d %H:%M UTC'); commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown); medians of $runs runs."
 echo
-echo '| input | n | best peer | `minitri -a ear` | MINITRI | ear / best | MINITRI / best |'
-echo '|---|---:|---:|---:|---:|---:|---:|'
+echo '| input | n | best peer | `minitri -a ear` | MINITRI | ear / best | MINITRI / best | earcut + geo validity (1 run) | MINITRI / that |'
+echo '|---|---:|---:|---:|---:|---:|---:|---:|---:|'
 for file in $(python3 bench/boundaries.py); do
   row "$(basename "$file" .wkt | sed 's/^boundary-//')" "$file"
 done

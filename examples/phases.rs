@@ -13,7 +13,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let clock = Instant::now();
     let lap = |name: &str, detail: String| {
         println!(
-            "{name:<16} {:>8.3} s  {detail}",
+            "{name:<16} {:>9.4} s  {detail}",
             clock.elapsed().as_secs_f64()
         );
     };

@@ -6,11 +6,22 @@
 //! - `earcut` (the earcut crate, a port of mapbox/earcut: ear clipping with z-order hashing);
 //! - `spade` (a constrained Delaunay triangulation of the rings' edges, bulk loaded; its count
 //!   is of every finite face, inside the polygon or not, since a plain CDT covers the hull);
-//! - `i_triangle` (i_triangle's float triangulation of the shape).
+//! - `i_triangle` (i_triangle's float triangulation of the shape);
+//! - `earcut+valid`: earcut after the `geo` crate's OGC validity check of the parsed polygon
+//!   (`geo::Validation::is_valid`: simple rings, no crossings, holes inside), as a user who must
+//!   reject invalid input would run it; minitri always validates, exactly. Not one of the plain
+//!   peers (the table's "best peer"), but their column beside it.
+
+fn parse(text: &str) -> geo_types::Polygon<f64> {
+    let parsed: wkt::Wkt<f64> = text.trim().parse().expect("a WKT polygon");
+    parsed.try_into().expect("a POLYGON")
+}
 
 fn rings(text: &str) -> Vec<Vec<[f64; 2]>> {
-    let parsed: wkt::Wkt<f64> = text.trim().parse().expect("a WKT polygon");
-    let polygon: geo_types::Polygon<f64> = parsed.try_into().expect("a POLYGON");
+    rings_of(&parse(text))
+}
+
+fn rings_of(polygon: &geo_types::Polygon<f64>) -> Vec<Vec<[f64; 2]>> {
     let ring = |r: &geo_types::LineString<f64>| {
         let mut points: Vec<[f64; 2]> = r.0.iter().map(|c| [c.x, c.y]).collect();
         points.pop(); // the closing repetition of the first point
@@ -23,7 +34,20 @@ fn rings(text: &str) -> Vec<Vec<[f64; 2]>> {
 }
 
 fn earcut_run(path: &str) -> usize {
-    let rings = rings(&std::fs::read_to_string(path).expect("readable"));
+    earcut_rings(&rings(&std::fs::read_to_string(path).expect("readable")))
+}
+
+fn earcut_valid_run(path: &str) -> usize {
+    use geo::Validation;
+    let polygon = parse(&std::fs::read_to_string(path).expect("readable"));
+    if !polygon.is_valid() {
+        eprintln!("{path}: not a valid polygon (geo::Validation)");
+        std::process::exit(1);
+    }
+    earcut_rings(&rings_of(&polygon))
+}
+
+fn earcut_rings(rings: &[Vec<[f64; 2]>]) -> usize {
     let mut flat = Vec::new();
     let mut holes = Vec::new();
     for (i, r) in rings.iter().enumerate() {
@@ -65,10 +89,11 @@ fn main() {
     let mut args = std::env::args().skip(1);
     let usage = "usage: peers FILE.wkt [PEER]";
     let path = args.next().expect(usage);
-    let peers: [(&str, fn(&str) -> usize); 3] = [
+    let peers: [(&str, fn(&str) -> usize); 4] = [
         ("earcut", earcut_run),
         ("spade", spade_run),
         ("i_triangle", i_triangle_run),
+        ("earcut+valid", earcut_valid_run),
     ];
     let only = args.next();
     for (name, run) in peers {
