@@ -85,11 +85,14 @@ fn i_triangle_run(path: &str) -> usize {
     triangulation.indices.len() / 3
 }
 
+/// A peer: its name and its run (file path in, triangle count out).
+type Peer = (&'static str, fn(&str) -> usize);
+
 fn main() {
     let mut args = std::env::args().skip(1);
     let usage = "usage: peers FILE.wkt [PEER]";
     let path = args.next().expect(usage);
-    let peers: [(&str, fn(&str) -> usize); 4] = [
+    let peers: [Peer; 4] = [
         ("earcut", earcut_run),
         ("spade", spade_run),
         ("i_triangle", i_triangle_run),
