@@ -50,10 +50,10 @@ row() { # LABEL FILE
   done
   ear=$(wall "$minitri" -a ear "$file")
   mini=$(wall "$minitri" "$file")
-  # earcut after geo's validity check: one run, stopped after $valid_limit s (it grows about
-  # quadratically: 47 s on the star of 10^5 vertices).
+  # earcut after geo's validity check: one run, which the peers' binary stops itself after
+  # $valid_limit s (the check grows about quadratically: 47 s on the star of 10^5 vertices).
   local start=$EPOCHREALTIME
-  if timeout "$valid_limit" "$peers" "$file" earcut+valid > /dev/null 2>&1; then
+  if VALID_LIMIT=$valid_limit "$peers" "$file" earcut+valid > /dev/null 2>&1; then
     valid=$(echo "$EPOCHREALTIME - $start" | bc -l)
     valid=$(printf '%.4f s | %.2fx' "$valid" "$(echo "$mini / $valid" | bc -l)")
   else
