@@ -19,6 +19,7 @@ pub(crate) mod mesh;
 pub mod minitri;
 pub mod monotone;
 pub(crate) mod number_hash;
+pub(crate) mod perturbed;
 pub mod pseudo;
 pub mod pseudo_hull;
 pub mod walks;

@@ -195,16 +195,51 @@
 //! sorted adjacency lists instead of a DCEL; the stack algorithm emits triangles and waits on
 //! collinear triples as on reflex ones.
 
-use crate::geom::kernel::Coord;
-use crate::geom::kernel::{cross, dot};
+use crate::geom::kernel::{cross, dot, Coord};
 use crate::geom::status::{Handle, Status};
 use std::cmp::Ordering;
+use std::fmt::Debug;
+
+/// What the sweep asks of its points: the height order and orientation tests. Every
+/// [`Coord`] is one (the `(y, x)` order and [`cross`]); so are the copies of touch points moved
+/// symbolically into their sectors ([`super::perturbed`]), which is how boundary walks whose
+/// rings touch are triangulated by the same sweep.
+pub(crate) trait SweepPoint: Copy + Eq + Debug {
+    /// The height order (module documentation, "Height order"): `Equal` only for equal points.
+    fn cmp_height(self, other: Self) -> Ordering;
+    /// The sign of the cross product of `b - a` and `c - a`: `Greater` for a left turn.
+    fn orient(a: Self, b: Self, c: Self) -> Ordering;
+    /// Whether `q`, collinear with `w` and `reference` ([`SweepPoint::orient`] `Equal`), lies
+    /// on the side of `w` where `reference` is.
+    fn same_side(w: Self, reference: Self, q: Self) -> bool;
+}
+
+impl<P: Coord> SweepPoint for P {
+    #[inline]
+    fn cmp_height(self, other: Self) -> Ordering {
+        P::cmp_y(self, other).then_with(|| P::cmp_x(self, other))
+    }
+    #[inline]
+    fn orient(a: Self, b: Self, c: Self) -> Ordering {
+        cross(a, b, c).cmp(&0)
+    }
+    #[inline]
+    fn same_side(w: Self, reference: Self, q: Self) -> bool {
+        dot(w, reference, q) > 0
+    }
+}
+
+/// Whether `a b c` turns strictly left.
+#[inline]
+fn left<P: SweepPoint>(a: P, b: P, c: P) -> bool {
+    P::orient(a, b, c) == Ordering::Greater
+}
 
 /// Triangulates one counter-clockwise simple polygon given as its cycle of points (flat vertices
 /// allowed, no two points equal): exactly `len - 2` counter-clockwise triangles of positive area,
 /// as indices into `pts` (none for fewer than 3 points). The case without holes of
 /// [`triangulate_rings`].
-pub(crate) fn triangulate_cycle<P: Coord>(pts: &[P]) -> Vec<[usize; 3]> {
+pub(crate) fn triangulate_cycle<P: SweepPoint>(pts: &[P]) -> Vec<[usize; 3]> {
     if pts.len() < 3 {
         return Vec::new();
     }
@@ -223,7 +258,10 @@ pub(crate) fn triangulate_cycle<P: Coord>(pts: &[P]) -> Vec<[usize; 3]> {
 /// increase by at least 3 from one ring start to the next and to `pts.len()`), and, as a broken
 /// invariant, on input outside the module's contract (crossing or touching rings, equal points,
 /// spikes, wrong orientations) when it is detected.
-pub(crate) fn triangulate_rings<P: Coord>(pts: &[P], ring_starts: &[usize]) -> Vec<[usize; 3]> {
+pub(crate) fn triangulate_rings<P: SweepPoint>(
+    pts: &[P],
+    ring_starts: &[usize],
+) -> Vec<[usize; 3]> {
     try_triangulate_rings(pts, ring_starts)
         .expect("monotone triangulation: input outside the contract, invariant broken")
 }
@@ -234,7 +272,7 @@ pub(crate) fn triangulate_rings<P: Coord>(pts: &[P], ring_starts: &[usize]) -> V
 /// bounds: every broken invariant that would be a panic there is a `None` here. So a polygon can
 /// be triangulated while it is still being validated ([`crate::geom::polygon`]), the result
 /// kept only if the polygon is valid.
-pub(crate) fn try_triangulate_rings<P: Coord>(
+pub(crate) fn try_triangulate_rings<P: SweepPoint>(
     pts: &[P],
     ring_starts: &[usize],
 ) -> Option<Vec<[usize; 3]>> {
@@ -292,7 +330,7 @@ impl Links {
 /// The sweep key of a point: lexicographic `(y, x)`, the height order of the module
 /// documentation.
 #[inline]
-fn height<P: Coord>(p: P) -> Height<P> {
+fn height<P: SweepPoint>(p: P) -> Height<P> {
     Height(p)
 }
 
@@ -300,14 +338,14 @@ fn height<P: Coord>(p: P) -> Height<P> {
 #[derive(Clone, Copy, PartialEq, Eq)]
 struct Height<P>(P);
 
-impl<P: Coord> Ord for Height<P> {
+impl<P: SweepPoint> Ord for Height<P> {
     #[inline]
     fn cmp(&self, other: &Self) -> Ordering {
-        P::cmp_y(self.0, other.0).then_with(|| P::cmp_x(self.0, other.0))
+        self.0.cmp_height(other.0)
     }
 }
 
-impl<P: Coord> PartialOrd for Height<P> {
+impl<P: SweepPoint> PartialOrd for Height<P> {
     #[inline]
     fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
         Some(self.cmp(other))
@@ -333,9 +371,9 @@ enum Kind {
 
 impl Kind {
     /// The kind of vertex `v` with previous neighbour `p` and next neighbour `n`.
-    fn of<P: Coord>(p: P, v: P, n: P) -> Kind {
+    fn of<P: SweepPoint>(p: P, v: P, n: P) -> Kind {
         let hv = height(v);
-        let convex = cross(p, v, n) > 0; // never 0 at a local extremum: that would be a spike
+        let convex = left(p, v, n); // never 0 at a local extremum: that would be a spike
         match (height(p) > hv, height(n) > hv) {
             (true, true) if convex => Kind::Start,
             (true, true) => Kind::Split,
@@ -350,7 +388,7 @@ impl Kind {
 /// An edge in the sweep status, or a probe for a point (`lo == hi`, `edge == PROBE`): `lo` below
 /// `hi` in the height order; `edge` is the index of the edge's first vertex along the cycle.
 #[derive(Clone, Copy, Debug)]
-struct Cut<P: Coord> {
+struct Cut<P> {
     lo: P,
     hi: P,
     edge: usize,
@@ -359,7 +397,7 @@ struct Cut<P: Coord> {
 /// The `edge` of a probe.
 const PROBE: usize = usize::MAX;
 
-impl<P: Coord> Cut<P> {
+impl<P: SweepPoint> Cut<P> {
     /// The cut of edge `edge` from `a` to `b`.
     fn new(a: P, b: P, edge: usize) -> Cut<P> {
         if height(a) < height(b) {
@@ -379,9 +417,21 @@ impl<P: Coord> Cut<P> {
     }
 }
 
-order_from_cmp!(Cut<P>);
+impl<P: SweepPoint> PartialEq for Cut<P> {
+    fn eq(&self, other: &Self) -> bool {
+        self.cmp(other) == Ordering::Equal
+    }
+}
 
-impl<P: Coord> Ord for Cut<P> {
+impl<P: SweepPoint> Eq for Cut<P> {}
+
+impl<P: SweepPoint> PartialOrd for Cut<P> {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl<P: SweepPoint> Ord for Cut<P> {
     /// West (`Less`) to east at the current sweep position, for disjoint edges both cut by the
     /// sweep line, or an edge and a probe at a point strictly inside its height span and not on it
     /// (the only pairs a set ever compares, see the module documentation): test the later-starting
@@ -396,7 +446,7 @@ impl<P: Coord> Ord for Cut<P> {
             (other, self, true)
         };
         // `second.lo` west of `first` (cross > 0) means `first` is Greater.
-        let first_vs_second = match cross(first.lo, first.hi, second.lo).cmp(&0) {
+        let first_vs_second = match P::orient(first.lo, first.hi, second.lo) {
             Ordering::Greater => Ordering::Greater,
             Ordering::Less => Ordering::Less,
             Ordering::Equal => first.edge.cmp(&second.edge), // only for invalid input
@@ -410,7 +460,7 @@ impl<P: Coord> Ord for Cut<P> {
 }
 
 /// The state of the monotone-decomposition sweep.
-struct Sweep<'a, P: Coord> {
+struct Sweep<'a, P: SweepPoint> {
     pts: &'a [P],
     links: &'a Links,
     kind: Vec<Kind>,
@@ -422,7 +472,7 @@ struct Sweep<'a, P: Coord> {
     diagonals: Vec<[usize; 2]>,
 }
 
-impl<'a, P: Coord> Sweep<'a, P> {
+impl<'a, P: SweepPoint> Sweep<'a, P> {
     /// The diagonals splitting the polygon into monotone pieces (proper, pairwise
     /// non-crossing, none repeated); `None` on input outside the contract where it shows.
     fn run(pts: &'a [P], links: &'a Links) -> Option<Vec<[usize; 2]>> {
@@ -529,7 +579,7 @@ impl<'a, P: Coord> Sweep<'a, P> {
 /// otherwise: `twin` pairs first slots with last ones and diagonal slots with diagonal ones,
 /// so from a slot that is not a vertex's last, `twin[h] - 1` is again one (and at least 0),
 /// whatever the geometry.
-fn pieces<P: Coord>(
+fn pieces<P: SweepPoint>(
     pts: &[P],
     links: &Links,
     diagonals: &[[usize; 2]],
@@ -618,12 +668,16 @@ fn pieces<P: Coord>(
 
 /// Counter-clockwise order of the directions from `w` to `a` and to `b`, measured from the
 /// direction of `reference` (exact: the half-plane first, then the turn). Directions must differ.
-fn around<P: Coord>(w: P, reference: P, a: P, b: P) -> Ordering {
+fn around<P: SweepPoint>(w: P, reference: P, a: P, b: P) -> Ordering {
     let half = |q: P| {
-        let c = cross(w, reference, q);
-        usize::from(!(c > 0 || (c == 0 && dot(w, reference, q) > 0)))
+        let c = P::orient(w, reference, q);
+        usize::from(
+            !(c == Ordering::Greater || (c == Ordering::Equal && P::same_side(w, reference, q))),
+        )
     };
-    half(a).cmp(&half(b)).then_with(|| 0.cmp(&cross(w, a, b)))
+    half(a)
+        .cmp(&half(b))
+        .then_with(|| P::orient(w, a, b).reverse())
 }
 
 /// The chain a vertex of a monotone piece lies on, seen from above.
@@ -647,7 +701,7 @@ struct Work {
 /// `out` (the stack algorithm; see the module documentation for the proof). `None` if the piece
 /// has fewer than 3 vertices, is not monotone, or a triangle would not be positive (input
 /// outside the contract).
-fn triangulate_monotone<P: Coord>(
+fn triangulate_monotone<P: SweepPoint>(
     pts: &[P],
     cycle: &[usize],
     work: &mut Work,
@@ -709,7 +763,7 @@ fn triangulate_monotone<P: Coord>(
                     Chain::East => [u, s, r],
                 };
                 // Strictly convex only: a collinear triple waits like a reflex one.
-                if cross(pts[t[0]], pts[t[1]], pts[t[2]]) > 0 {
+                if left(pts[t[0]], pts[t[1]], pts[t[2]]) {
                     out.push(t);
                     stack.pop();
                 } else {
@@ -726,7 +780,7 @@ fn triangulate_monotone<P: Coord>(
 /// The fan from `u` (below the whole stack, on the other chain or the bottom) over the stack
 /// chain, whose vertices `s_1..` lie on `chain`; `None` if a triangle would not be positive
 /// (input outside the contract).
-fn fan<P: Coord>(
+fn fan<P: SweepPoint>(
     pts: &[P],
     stack: &[(usize, Chain)],
     u: usize,
@@ -739,7 +793,7 @@ fn fan<P: Coord>(
             Chain::West => [a, b, u],
             Chain::East => [u, b, a],
         };
-        if cross(pts[t[0]], pts[t[1]], pts[t[2]]) <= 0 {
+        if !left(pts[t[0]], pts[t[1]], pts[t[2]]) {
             return None;
         }
         out.push(t);

@@ -1,0 +1,206 @@
+//! The copies of touch points moved symbolically into their sectors, so that the monotone sweep
+//! of [`super::monotone`] triangulates boundary walks whose rings touch (`docs/touching.md`) in
+//! O(N log N), as it does simple polygons with holes.
+//!
+//! Input contract: a valid [`Polygon`] (walks: the outer one counter-clockwise, hole walks
+//! clockwise, interior on the left of every edge; the stored vertices at one point, the
+//! *copies*, have closed angles, their *sectors*, that meet only at the point, separated by
+//! wedges of positive angle outside the region; no two consecutive stored vertices share a
+//! point). Output guarantee: [`moved`] gives one [`Moved`] per stored vertex, whose height
+//! order and orientation tests ([`SweepPoint`]) are those of the polygon except between copies
+//! of one point, where they are those of the copies moved infinitesimally into their sectors.
+//! Every decision is a sign of an exact [`cross`] or [`dot`] of input points.
+//!
+//! # The perturbation
+//!
+//! A copy `a` at point `P`, with `w_a` the vector to its next vertex along its walk, moves to
+//! `P + ε_a d_a` with the formal direction `d_a = s_a w_a + η rot(w_a)`: `rot` the quarter-turn
+//! counter-clockwise, `s_a = +1` when the sector is at most a half-turn (then `d_a` is `w_a`
+//! turned slightly into the sector, which runs counter-clockwise from `w_a`) and `s_a = -1` when
+//! it is reflex (then `d_a` is `-w_a` turned slightly clockwise: inside the mirror image of the
+//! outside wedge, so the moved sector lies inside the old one and misses the point itself).
+//! The infinitesimals are ordered `1 >> η >> ε_1 >> ε_2 >> ...`, `ε_k` for the copy of stored
+//! index `k - 1`, with `ε_(k+1) << ε_k η` and every product of smaller ones below a larger one
+//! (as `ε_k = δ^(2^k)`, Edelsbrunner and Mücke's *simulation of simplicity*): monomials compare
+//! by their largest index first. Moved so, every sector lies inside its old self and away from
+//! the point by about `ε_a η`, while a copy of higher index sits within `ε_(a+1) << ε_a η` of the
+//! point: the moved copies' sectors are pairwise disjoint and the moved walks are simple rings
+//! (a hole walk touching the outer walk becomes part of it through the gap opened at the point,
+//! as the walks already say).
+//!
+//! Heights: two copies of one point compare by the larger displacement, `ε_a` for the smaller
+//! index `a`, so `a` is above exactly when `d_a` points up (`s_a w_a.y`, or `w_a.x` when `w_a`
+//! is horizontal; never zero). Orientation: with `e_i = ε_i d_i`,
+//! `cross(X0', X1', X2') = cross(X0, X1, X2) + Σ e_i × (X_(i+1) - X_(i+2)) + Σ e_i × e_(i+1)`
+//! (indices mod 3); the sign is that of the first monomial with a non-zero coefficient, each
+//! coefficient a polynomial in `η` read from its lowest power:
+//! `d_a × V = s_a (w_a × V) - η (w_a · V)` and
+//! `d_a × d_b = s_a s_b (w_a × w_b) + η (s_a - s_b)(w_a · w_b) + η² (w_a × w_b)`.
+//!
+//! Only triples with two arguments at one point are perturbed; a triple of three distinct
+//! collinear points keeps its zero, as in the polygon: the sweep's proofs use such tests only on
+//! flat vertices and the stack algorithm's collinear waits, where the polygon's own answer keeps
+//! every triangle of positive area. The result is checked all the same by
+//! [`super::walks`] (every triangle positive, the triangles' boundary exactly the walks), so an
+//! error here could only cost time, never give a wrong triangulation.
+
+use super::monotone::SweepPoint;
+use crate::geom::kernel::{cross, dot, Coord};
+use crate::geom::polygon::Polygon;
+use std::cmp::Ordering;
+
+/// A stored vertex for the sweep: its point and, for a copy of a touch point, how it is moved
+/// (see the module documentation).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Moved<P> {
+    at: P,
+    /// 0 for a vertex alone at its point, else 1 + its stored index (the `k` of `ε_k`).
+    rank: u32,
+    /// The next vertex along its walk (`w = next - at`).
+    next: P,
+    /// Whether the sector is reflex (`s = -1`).
+    reflex: bool,
+}
+
+/// The stored vertices of `polygon` as [`Moved`] points, copies found by sorting: O(N log N).
+///
+/// # Panics
+/// Never on a polygon of fewer than 2^32 - 1 stored vertices (far beyond any polygon the
+/// readers accept).
+pub(crate) fn moved<P: Coord>(polygon: &Polygon<P>) -> Vec<Moved<P>> {
+    let n = polygon.len();
+    let mut out: Vec<Moved<P>> = (0..n)
+        .map(|i| Moved {
+            at: polygon.point(i),
+            rank: 0,
+            next: polygon.point(polygon.next(i)),
+            reflex: cross(
+                polygon.point(polygon.prev(i)),
+                polygon.point(i),
+                polygon.point(polygon.next(i)),
+            ) < 0,
+        })
+        .collect();
+    let mut order: Vec<usize> = (0..n).collect();
+    order.sort_unstable_by_key(|&i| polygon.point(i));
+    for run in order.chunk_by(|&i, &j| polygon.point(i) == polygon.point(j)) {
+        if run.len() > 1 {
+            for &i in run {
+                out[i].rank = u32::try_from(i + 1).expect("fewer than 2^32 - 1 stored vertices");
+            }
+        }
+    }
+    out
+}
+
+impl<P: Coord> Moved<P> {
+    /// `s_a`, as a sign.
+    fn s(self) -> i32 {
+        if self.reflex {
+            -1
+        } else {
+            1
+        }
+    }
+
+    /// Whether the moved copy lies above its point: the sign of `d.y` (see the module
+    /// documentation).
+    fn moves_up(self) -> bool {
+        match P::cmp_y(self.next, self.at) {
+            Ordering::Equal => P::cmp_x(self.next, self.at) == Ordering::Greater,
+            up => (up == Ordering::Greater) == (self.s() > 0),
+        }
+    }
+
+    /// The sign of `d × (to - from)` as a polynomial in `η`: its lowest non-zero coefficient.
+    fn d_cross(self, from: P, to: P) -> i32 {
+        let (w, v) = (P::vector(self.at, self.next), P::vector(from, to));
+        let c = signum(P::vector_cross(w, v)) * self.s();
+        if c != 0 {
+            c
+        } else {
+            -signum(P::vector_dot(w, v))
+        }
+    }
+
+    /// The sign of `d_a × d_b` as a polynomial in `η`.
+    fn d_cross_d(a: Self, b: Self) -> i32 {
+        let (wa, wb) = (P::vector(a.at, a.next), P::vector(b.at, b.next));
+        let c = signum(P::vector_cross(wa, wb));
+        if c != 0 {
+            return c * a.s() * b.s();
+        }
+        if a.s() != b.s() {
+            return a.s() * signum(P::vector_dot(wa, wb));
+        }
+        0 // η² (w_a × w_b), zero too
+    }
+}
+
+fn signum(v: i128) -> i32 {
+    v.signum() as i32
+}
+
+fn to_ordering(sign: i32) -> Ordering {
+    sign.cmp(&0)
+}
+
+impl<P: Coord> SweepPoint for Moved<P> {
+    fn cmp_height(self, other: Self) -> Ordering {
+        let plain = self.at.cmp_height(other.at);
+        if plain != Ordering::Equal || self.rank == other.rank {
+            return plain;
+        }
+        // The smaller index moves further and decides.
+        if self.rank < other.rank {
+            if self.moves_up() {
+                Ordering::Greater
+            } else {
+                Ordering::Less
+            }
+        } else if other.moves_up() {
+            Ordering::Less
+        } else {
+            Ordering::Greater
+        }
+    }
+
+    fn orient(a: Self, b: Self, c: Self) -> Ordering {
+        let plain = cross(a.at, b.at, c.at);
+        if plain != 0 {
+            return plain.cmp(&0);
+        }
+        let x = [a, b, c];
+        let shared = a.at == b.at || b.at == c.at || a.at == c.at;
+        if !shared || a == b || b == c || a == c {
+            return Ordering::Equal;
+        }
+        // The perturbed arguments, by rank (largest displacement first).
+        let mut args: Vec<usize> = (0..3).filter(|&i| x[i].rank > 0).collect();
+        args.sort_unstable_by_key(|&i| x[i].rank);
+        // Monomials largest first: {1}, {2}, {1,2}, {3}, {1,3}, {2,3} (ranks of `args`).
+        for k in 0..args.len() {
+            let i = args[k];
+            let single = x[i].d_cross(x[(i + 2) % 3].at, x[(i + 1) % 3].at);
+            if single != 0 {
+                return to_ordering(single);
+            }
+            for &j in &args[..k] {
+                // The pair term is e_i × e_(i+1) for the cyclic pair.
+                let pair = if j == (i + 1) % 3 {
+                    Moved::d_cross_d(x[i], x[j])
+                } else {
+                    Moved::d_cross_d(x[j], x[i])
+                };
+                if pair != 0 {
+                    return to_ordering(pair);
+                }
+            }
+        }
+        Ordering::Equal
+    }
+
+    fn same_side(w: Self, reference: Self, q: Self) -> bool {
+        dot(w.at, reference.at, q.at) > 0
+    }
+}
