@@ -35,6 +35,14 @@
                                          long sliver edge (0 0, N 1): (0 0, N 1, N-1 1, N-1 2,
                                          ..., 1 N); about 2 N vertices, every reflex corner on the
                                          line x + y = N, each seeing along it
+  bench/polygon.py diamonds N            a strip with a chain of N diamond holes, each touching
+                                         the next at a corner (4 N + 4 vertices, N hole rings
+                                         joined into one hole walk): a raster layer's touches
+  bench/polygon.py diamonds-apart N      its untouched twin: the same strip and diamonds, spaced
+                                         so that no two touch (same vertex and hole counts)
+  bench/polygon.py hanging N             N triangular holes hanging from the top edge of a
+                                         rectangle by a corner (3 N + 4 vertices, one walk)
+  bench/polygon.py hanging-apart N       its untouched twin: the triangles a unit below the edge
 """
 import math, random, sys
 
@@ -55,6 +63,7 @@ def boundary(cells):
     return ring
 
 kind, n = sys.argv[1], int(sys.argv[2])
+holes = []
 rng = random.Random(int(sys.argv[3]) if len(sys.argv) > 3 else 1)
 if kind == "star":
     scale = 10 * n + 1000
@@ -187,6 +196,18 @@ elif kind == "stairs-lattice":
     for (x, y), (u, v) in zip(corners, corners[1:] + corners[:1]):
         steps = max(abs(u - x), abs(v - y)) if x == u or y == v else 1
         pts += [(x + (u - x) * k // steps, y + (v - y) * k // steps) for k in range(steps)]
+elif kind in ("diamonds", "diamonds-apart"):
+    gap = 2 if kind == "diamonds" else 4          # centre to centre; 2 makes them touch
+    pts = [(0, 0), (gap * n + 8, 0), (gap * n + 8, 8), (0, 8)]
+    for k in range(n):
+        cx = gap * k + 4
+        holes.append([(cx - 1, 4), (cx, 5), (cx + 1, 4), (cx, 3)])
+elif kind in ("hanging", "hanging-apart"):
+    top = 10 if kind == "hanging" else 9         # 10: the hole's corner on the rectangle's edge
+    pts = [(0, 0), (4 * n + 4, 0), (4 * n + 4, 10), (0, 10)]
+    for k in range(n):
+        holes.append([(4 * k + 4, top), (4 * k + 5, 7), (4 * k + 3, 7)])
 else:
-    sys.exit(f"unknown kind {kind!r}: use star, convex, maze, bars, snake, zigzag, comb, sliver, stairs or stairs-lattice")
-print("POLYGON ((" + ", ".join(f"{x} {y}" for x, y in pts + pts[:1]) + "))")
+    sys.exit(f"unknown kind {kind!r}: use star, convex, maze, bars, snake, zigzag, comb, sliver, stairs, stairs-lattice, diamonds(-apart) or hanging(-apart)")
+ring = lambda r: "(" + ", ".join(f"{x} {y}" for x, y in r + r[:1]) + ")"
+print("POLYGON (" + ", ".join(ring(r) for r in [pts] + holes) + ")")

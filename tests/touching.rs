@@ -506,7 +506,7 @@ fn with_hole_walks_the_minimum_algorithms_finish_the_exact_search() {
         let plain = minitri::triangulate(&p, Algorithm::Ear).expect("ear");
         assert!(verify::check(&p, &plain).valid, "{rings:?} ear");
         assert!(plain.degenerate.is_empty());
-        let flattened = walks::flattened(&p).map_or(plain.triangles.len(), |t| t.0.len());
+        let flattened = walks::flattened(&p, None).map_or(plain.triangles.len(), |t| t.0.len());
         for algorithm in [Algorithm::Minitri, Algorithm::Asano] {
             let t = minitri::triangulate(&p, algorithm)
                 .unwrap_or_else(|e| panic!("{rings:?} {algorithm}: {e}"));

@@ -366,7 +366,7 @@ pub(crate) fn try_plain_polygon_for_walking<P: Coord>(
 
 /// The points turned a quarter-turn when the bounding box is more than twice as wide as tall
 /// (see [`plain_polygon_for_walking`]), else `None`.
-fn turned_for_walking<P: Coord>(polygon: &crate::Polygon<P>) -> Option<Vec<P>> {
+pub(crate) fn turned_for_walking<P: Coord>(polygon: &crate::Polygon<P>) -> Option<Vec<P>> {
     let pts = polygon.points();
     // The points of least and greatest x, then y.
     let mut ends = [pts[0]; 4];
@@ -430,7 +430,7 @@ pub(crate) fn touching<P: Coord>(
     }
     let flattened = algorithm
         .is_minimum()
-        .then(|| walks::flattened(polygon).ok())
+        .then(|| walks::flattened(polygon, deadline).ok())
         .flatten();
     let (triangles, degenerate) = match flattened {
         Some(found) => found,

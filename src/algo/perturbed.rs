@@ -63,22 +63,24 @@ pub(crate) struct Moved<P> {
 }
 
 /// The stored vertices of `polygon` as [`Moved`] points, copies found by sorting: O(N log N).
+/// With `turned`, the points are those (the polygon's turned by a rotation, as
+/// [`super::turned_for_walking`] does: the same orientations, another sweep direction).
 ///
 /// # Panics
 /// Never on a polygon of fewer than 2^32 - 1 stored vertices (far beyond any polygon the
 /// readers accept).
-pub(crate) fn moved<P: Coord>(polygon: &Polygon<P>) -> Vec<Moved<P>> {
+pub(crate) fn moved<P: Coord>(polygon: &Polygon<P>, turned: Option<&[P]>) -> Vec<Moved<P>> {
     let n = polygon.len();
+    let pt = |i: usize| turned.map_or_else(|| polygon.point(i), |t| t[i]);
     let mut out: Vec<Moved<P>> = (0..n)
-        .map(|i| Moved {
-            at: polygon.point(i),
-            rank: 0,
-            next: polygon.point(polygon.next(i)),
-            reflex: cross(
-                polygon.point(polygon.prev(i)),
-                polygon.point(i),
-                polygon.point(polygon.next(i)),
-            ) < 0,
+        .map(|i| {
+            let (prev, at, next) = (pt(polygon.prev(i)), pt(i), pt(polygon.next(i)));
+            Moved {
+                at,
+                rank: 0,
+                next,
+                reflex: cross(prev, at, next) < 0,
+            }
         })
         .collect();
     let mut order: Vec<usize> = (0..n).collect();

@@ -87,8 +87,8 @@ pub fn plain<P: Coord>(polygon: &Polygon<P>) -> Result<Vec<[usize; 3]>, String> 
         return Ok(triangles);
     }
     // Not seen in the tests (see `swept`): the ear clipper of the bridged cycle.
-    let cycle = bridged(polygon)?;
-    clip(polygon, &cycle, false, false).map(|(triangles, _)| triangles)
+    let cycle = bridged(polygon, None)?;
+    clip(polygon, &cycle, false, false, None).map(|(triangles, _)| triangles)
 }
 
 /// The monotone sweep of [`super::monotone`] over the walks, the copies of touch points moved
@@ -96,7 +96,8 @@ pub fn plain<P: Coord>(polygon: &Polygon<P>) -> Result<Vec<[usize; 3]>, String> 
 /// fails [`tiles`] (the theory excludes it; checked so that a mistake costs time, not a wrong
 /// answer).
 pub(crate) fn swept<P: Coord>(polygon: &Polygon<P>) -> Option<Triangles> {
-    let moved = super::perturbed::moved(polygon);
+    let turned = super::turned_for_walking(polygon);
+    let moved = super::perturbed::moved(polygon, turned.as_deref());
     let triangles = super::monotone::try_triangulate_rings(&moved, polygon.ring_starts())?;
     tiles(polygon, &triangles).then_some(triangles)
 }
@@ -114,32 +115,49 @@ fn tiles<P: Coord>(polygon: &Polygon<P>, triangles: &[[usize; 3]]) -> bool {
         return false;
     }
     let pt = |i: usize| polygon.point(i);
-    let mut edges: Vec<(usize, usize, i32)> = Vec::with_capacity(3 * triangles.len());
+    // The edges bucketed by their smaller end (a counting sort), each bucket then sorted: the
+    // buckets are as small as the vertices' degrees.
+    let mut start = vec![0usize; n + 1];
     for t in triangles {
         if t.iter().any(|&v| v >= n) || cross(pt(t[0]), pt(t[1]), pt(t[2])) <= 0 {
             return false;
         }
         for k in 0..3 {
-            let (a, b) = (t[k], t[(k + 1) % 3]);
-            edges.push(if a < b { (a, b, 1) } else { (b, a, -1) });
+            start[t[k].min(t[(k + 1) % 3]) + 1] += 1;
         }
     }
-    edges.sort_unstable_by_key(|&(a, b, _)| (a, b));
-    let mut walk_edges = 0;
-    for run in edges.chunk_by(|x, y| (x.0, x.1) == (y.0, y.1)) {
-        let (a, b) = (run[0].0, run[0].1);
-        let net: i32 = run.iter().map(|e| e.2).sum();
-        let expected = if polygon.next(a) == b {
-            1
-        } else if polygon.next(b) == a {
-            -1
-        } else {
-            0
-        };
-        if net != expected {
-            return false;
+    for v in 0..n {
+        start[v + 1] += start[v];
+    }
+    let mut fill = start.clone();
+    let mut edges: Vec<(usize, i32)> = vec![(0, 0); start[n]];
+    for t in triangles {
+        for k in 0..3 {
+            let (a, b) = (t[k], t[(k + 1) % 3]);
+            let (low, entry) = if a < b { (a, (b, 1)) } else { (b, (a, -1)) };
+            edges[fill[low]] = entry;
+            fill[low] += 1;
         }
-        walk_edges += usize::from(expected != 0);
+    }
+    let mut walk_edges = 0;
+    for a in 0..n {
+        let bucket = &mut edges[start[a]..start[a + 1]];
+        bucket.sort_unstable_by_key(|&(b, _)| b);
+        for run in bucket.chunk_by(|x, y| x.0 == y.0) {
+            let b = run[0].0;
+            let net: i32 = run.iter().map(|e| e.1).sum();
+            let expected = if polygon.next(a) == b {
+                1
+            } else if polygon.next(b) == a {
+                -1
+            } else {
+                0
+            };
+            if net != expected {
+                return false;
+            }
+            walk_edges += usize::from(expected != 0);
+        }
     }
     walk_edges == n
 }
@@ -151,13 +169,16 @@ fn tiles<P: Coord>(polygon: &Polygon<P>, triangles: &[[usize; 3]]) -> bool {
 /// # Errors
 /// `Err(what)` as [`plain`], or when the degenerate triangles read off the result do not
 /// account for the triangles saved (a broken invariant; the caller falls back to [`plain`]).
-pub fn flattened<P: Coord>(polygon: &Polygon<P>) -> Result<(Triangles, Triangles), String> {
-    let cycle = bridged(polygon)?;
-    let greedy = flattened_clip(polygon, &cycle, true);
+pub fn flattened<P: Coord>(
+    polygon: &Polygon<P>,
+    deadline: Option<Instant>,
+) -> Result<(Triangles, Triangles), String> {
+    let cycle = bridged(polygon, deadline)?;
+    let greedy = flattened_clip(polygon, &cycle, true, deadline);
     if cycle.len() > BOTH_ORDERS_UP_TO {
         return greedy;
     }
-    match (greedy, flattened_clip(polygon, &cycle, false)) {
+    match (greedy, flattened_clip(polygon, &cycle, false, deadline)) {
         (Ok(g), Ok(o)) => Ok(if o.0.len() < g.0.len() { o } else { g }),
         (Ok(found), Err(_)) | (Err(_), Ok(found)) => Ok(found),
         (Err(why), Err(_)) => Err(why),
@@ -170,8 +191,9 @@ fn flattened_clip<P: Coord>(
     polygon: &Polygon<P>,
     cycle: &[usize],
     greedy: bool,
+    deadline: Option<Instant>,
 ) -> Result<(Triangles, Triangles), String> {
-    let (triangles, dropped) = clip(polygon, cycle, true, greedy)?;
+    let (triangles, dropped) = clip(polygon, cycle, true, greedy, deadline)?;
     let mut candidates: Vec<usize> = dropped.iter().map(|&k| cycle[k]).collect();
     candidates.sort_unstable();
     candidates.dedup();
@@ -188,7 +210,10 @@ fn flattened_clip<P: Coord>(
 
 /// The outer walk with every hole walk joined to it by a bridge (see the module documentation),
 /// as a cycle of stored vertices (a bridge's ends appear twice).
-fn bridged<P: Coord>(polygon: &Polygon<P>) -> Result<Vec<usize>, String> {
+fn bridged<P: Coord>(
+    polygon: &Polygon<P>,
+    deadline: Option<Instant>,
+) -> Result<Vec<usize>, String> {
     let pt = |i: usize| polygon.point(i);
     let walks: Vec<Vec<usize>> = (0..=polygon.holes())
         .map(|w| polygon.ring_range(w).collect())
@@ -198,6 +223,9 @@ fn bridged<P: Coord>(polygon: &Polygon<P>) -> Result<Vec<usize>, String> {
     // Highest (lexicographically greatest (x, y)) point first, as earcut joins holes.
     holes.sort_by_key(|h| std::cmp::Reverse(h.iter().map(|&i| pt(i)).max()));
     for k in 0..holes.len() {
+        if past(deadline) {
+            return Err(TIME_LIMIT.to_string());
+        }
         let hole = &holes[k];
         let top = hole
             .iter()
@@ -210,6 +238,9 @@ fn bridged<P: Coord>(polygon: &Polygon<P>) -> Result<Vec<usize>, String> {
         let rest: Vec<&Vec<usize>> = holes[k + 1..].iter().collect();
         let mut bridge = None;
         'search: for &o in &candidates {
+            if past(deadline) {
+                return Err(TIME_LIMIT.to_string());
+            }
             let v = outer[o];
             for h in (0..m).filter(|&h| pt(hole[h]) == top) {
                 let hv = (
@@ -248,6 +279,14 @@ fn bridged<P: Coord>(polygon: &Polygon<P>) -> Result<Vec<usize>, String> {
     Ok(outer)
 }
 
+/// What [`flattened`] says when `deadline` passes first.
+const TIME_LIMIT: &str = "the time limit passed";
+
+/// Whether `deadline` has passed.
+fn past(deadline: Option<Instant>) -> bool {
+    deadline.is_some_and(|d| Instant::now() >= d)
+}
+
 /// Whether the open segment `a b` contains no vertex of `cycles` and crosses none of their
 /// edges properly.
 fn clear<'a, P: Coord>(
@@ -275,6 +314,7 @@ fn clip<P: Coord>(
     cycle: &[usize],
     flatten: bool,
     greedy: bool,
+    deadline: Option<Instant>,
 ) -> Result<(Triangles, Vec<usize>), String> {
     let n = cycle.len();
     let pt = |k: usize| polygon.point(cycle[k]);
@@ -314,7 +354,12 @@ fn clip<P: Coord>(
     // With `greedy`: first look for an ear whose clipping makes a neighbour flat; after a round
     // without one, take the next ear of any kind.
     let mut only_flattening = greedy;
+    let mut steps = 0u32;
     while remaining > 3 {
+        steps = steps.wrapping_add(1);
+        if steps % 64 == 0 && past(deadline) {
+            return Err(TIME_LIMIT.to_string());
+        }
         let (p, q) = (prev[v], next[v]);
         let (a, b, c) = (pt(p), pt(v), pt(q));
         let ear = cross(a, b, c) > 0
