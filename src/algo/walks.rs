@@ -17,18 +17,22 @@
 //! inside that copy's closed angle, crosses no edge properly, and passes each point it contains
 //! inside the closed angle of one copy there (so it stays in the closed region: away from
 //! vertices nothing but a proper crossing can take it out, at a vertex it stays in that copy's
-//! sector). [`plain`] first joins each hole walk to the outer walk by a bridge (a chord from the
-//! hole's highest point, as earcut does; the walk then passes both ends twice), then clips ears:
-//! an ear `p v q` is a strict left turn at `v` whose closed triangle holds no other vertex except
-//! copies of its corners, leaving `p` and `q` strictly inside their angles (a copy of a corner
-//! has its own sector, disjoint from the triangle's). Both theorems behind it (a bridge exists
-//! from a hole's highest point, a weakly simple polygon of more than 3 vertices has an ear) are
-//! those of simple polygons applied to the polygon with each copy moved an infinitesimal step
-//! into its sector, which is simple and has the same triangulations.
+//! sector). [`plain`] is the monotone sweep of [`super::monotone`] on the walks with every copy
+//! moved symbolically into its sector (`algo/perturbed.rs`: the moved walks are simple rings
+//! with the same triangulations), checked by `tiles`; the ear clipper below remains only as
+//! its fallback, never taken in the tests.
 //!
-//! [`flattened`] (the minimum algorithms beyond the walk DP) clips the same bridged cycle, but
-//! first drops every position lying strictly between its two cycle neighbours (an angle of
-//! exactly pi; the test is exact), and again whenever clipping an ear makes a neighbour so, as
+//! [`flattened`] joins each hole walk to the outer walk by a bridge (a chord from the hole's
+//! highest point, as earcut does; the walk then passes both ends twice) and clips ears: an ear
+//! `p v q` is a strict left turn at `v` whose closed triangle holds no other vertex except copies
+//! of its corners, leaving `p` and `q` strictly inside their angles (a copy of a corner has its
+//! own sector, disjoint from the triangle's). Both theorems behind it (a bridge exists from a
+//! hole's highest point, a weakly simple polygon of more than 3 vertices has an ear) are those
+//! of simple polygons applied to the polygon with each copy moved an infinitesimal step into its
+//! sector, which is simple and has the same triangulations.
+//!
+//! [`flattened`] (the minimum algorithms beyond the walk DP) first drops every position lying
+//! strictly between its two cycle neighbours (an angle of exactly pi; the test is exact), and again whenever clipping an ear makes a neighbour so, as
 //! earcut's `filterPoints` does. Dropping a position keeps every other angle and the region; the
 //! dropped vertex then lies strictly inside a side of the one triangle later built on that stretch
 //! of the cycle, a T-junction, which saves one triangle (`docs/touching.md`, the claim
@@ -44,13 +48,13 @@
 //! per side); if they do not number exactly the dropped positions, or no ear is found, it returns
 //! `Err` and the caller takes [`plain`]: never a wrong answer.
 //!
-//! Complexity: O(n^2) for [`plain`] and [`flattened`] in practice (each ear test scans the
-//! remaining vertices; the greedy order adds an O(n) round of O(1) tests per ear, the reading
-//! off O(T d)), O(n^3) worst case; [`flattened`] runs the plain order too only up to
-//! [`BOTH_ORDERS_UP_TO`] positions. O(n^3) time and O(n^2) memory for [`minimum`] (chord table
-//! by the angular sweep of [`super::chords`], O(n^2 log n)), up to the DP's size limit
-//! (`--dp-limit`, 3,000 by default). Chen & Chang's steps run on walks too
-//! ([`super::minitri::triangulate_walks`]); the O(n log n) monotone sweep does not.
+//! Complexity: O(n log n) for [`plain`] (the sweep, the sort finding the copies, the check);
+//! O(n^2) for [`flattened`] in practice (each ear test scans the remaining vertices; the greedy
+//! order adds an O(n) round of O(1) tests per ear, the reading off O(T d)), O(n^3) worst case,
+//! cut short by its deadline; it runs the plain order too only up to [`BOTH_ORDERS_UP_TO`]
+//! positions. O(n^3) time and O(n^2) memory for [`minimum`] (chord table by the angular sweep
+//! of [`super::chords`], O(n^2 log n)), up to the DP's size limit (`--dp-limit`, 3,000 by
+//! default). Chen & Chang's steps run on walks too ([`super::minitri::triangulate_walks`]).
 
 use super::asano::solve_walk;
 use super::chords::ChordTable;
@@ -92,7 +96,7 @@ pub fn plain<P: Coord>(polygon: &Polygon<P>) -> Result<Vec<[usize; 3]>, String> 
 }
 
 /// The monotone sweep of [`super::monotone`] over the walks, the copies of touch points moved
-/// symbolically into their sectors ([`super::perturbed`]): O(N log N). `None` when the result
+/// symbolically into their sectors (`algo/perturbed.rs`): O(N log N). `None` when the result
 /// fails [`tiles`] (the theory excludes it; checked so that a mistake costs time, not a wrong
 /// answer).
 pub(crate) fn swept<P: Coord>(polygon: &Polygon<P>) -> Option<Triangles> {
