@@ -265,9 +265,11 @@ fn long_names_read_only_outputs_and_stale_temporaries() {
     fs::create_dir(dir.join("in")).unwrap();
     fs::write(dir.join("in").join(&long), U_SHAPE).unwrap();
     fs::create_dir(dir.join("out")).unwrap();
-    // Left by a run killed outright (no such process: pid_max is at most 2^22).
+    // Left by a run of an older minitri killed outright, which did not name its host: removed
+    // only once old (more than an hour) and unlocked.
     let stale = dir.join("out/.x.json.minitri-99999999-0.tmp");
     fs::write(&stale, "partial").unwrap();
+    age(&stale, 7200);
     let (code, _, err) = run_in(dir, &["in", "-o", "out"]);
     assert_eq!(code, 0, "{err}");
     assert!(dir
@@ -286,6 +288,13 @@ fn long_names_read_only_outputs_and_stale_temporaries() {
     assert_eq!(code, 1, "{err}");
     assert!(err.contains("read-only"), "{err}");
     assert_eq!(fs::read_to_string(&ro).unwrap(), "kept");
+}
+
+/// Sets the modification time of `path` to `seconds` ago.
+fn age(path: &Path, seconds: u64) {
+    let then = std::time::SystemTime::now() - Duration::from_secs(seconds);
+    let file = fs::OpenOptions::new().write(true).open(path).unwrap();
+    file.set_modified(then).unwrap();
 }
 
 /// A square with a `k` x `k` grid of tiny triangular holes, as WKT (slow to search).
@@ -762,4 +771,176 @@ fn a_polygon_with_too_many_vertices_is_reported_and_the_others_go_on() {
     // A bad value is a command-line error.
     let (code, _, err) = run_in(dir, &["--max-vertices", "0", "big.wkt"]);
     assert_eq!(code, 2, "{err}");
+}
+
+// Issue 34: the second campaign.
+
+#[test]
+fn a_batch_never_writes_through_a_link_into_an_input() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    fs::create_dir_all(dir.join("in/sub")).unwrap();
+    fs::create_dir(dir.join("out")).unwrap();
+    for name in ["a.wkt", "b.wkt", "c.wkt"] {
+        fs::write(dir.join("in").join(name), U_SHAPE).unwrap();
+    }
+    // Two outputs linked to one input, a third output plain.
+    std::os::unix::fs::symlink("../in/a.wkt", dir.join("out/a.json")).unwrap();
+    std::os::unix::fs::symlink("../in/a.wkt", dir.join("out/b.json")).unwrap();
+    // A subdirectory of the output tree linked into the input tree, where an input's output
+    // has the input's own name (a GeoJSON input named .json).
+    let geojson = r#"{"type": "Polygon", "coordinates": [[[0, 0], [4, 0], [0, 4], [0, 0]]]}"#;
+    fs::write(dir.join("in/sub/d.json"), geojson).unwrap();
+    std::os::unix::fs::symlink("../in/sub", dir.join("out/sub")).unwrap();
+    let (code, _, err) = run_in(dir, &["in", "-o", "out", "--jobs", "2"]);
+    assert_eq!(code, 1, "a batch with a failed file: {err}");
+    for (input, output) in [("a", "a"), ("b", "a")] {
+        let line = format!("minitri: in/{input}.wkt: not processed: its output out/{input}.json is the input in/{output}.wkt (the same file, through a link); it would be overwritten");
+        assert!(err.contains(&line), "{err}");
+    }
+    assert!(
+        err.contains(
+            "in/sub/d.json: not processed: its output out/sub/d.json is the input in/sub/d.json"
+        ),
+        "{err}"
+    );
+    assert_eq!(fs::read_to_string(dir.join("in/a.wkt")).unwrap(), U_SHAPE);
+    assert_eq!(
+        fs::read_to_string(dir.join("in/sub/d.json")).unwrap(),
+        geojson
+    );
+    // The links stay links; the other file of the batch is written.
+    assert!(fs::symlink_metadata(dir.join("out/a.json"))
+        .unwrap()
+        .is_symlink());
+    assert!(fs::read_to_string(dir.join("out/c.json"))
+        .unwrap()
+        .contains("\"triangle_count\": 5"));
+    assert!(temporaries(dir).is_empty(), "{:?}", temporaries(dir));
+}
+
+#[test]
+fn a_link_planted_at_a_temporary_name_is_never_written_through() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    fs::write(dir.join("a.wkt"), U_SHAPE).unwrap();
+    fs::create_dir(dir.join("out")).unwrap();
+    fs::write(dir.join("victim"), "precious").unwrap();
+    // The names the old scheme gave the next processes' first temporaries
+    // (`.NAME.minitri-PID-K.tmp`): process IDs are handed out in order.
+    let mut next = Command::new("true").spawn().unwrap();
+    let first = next.id();
+    next.wait().unwrap();
+    for pid in first..first + 300 {
+        for k in 0..2 {
+            let name = format!("out/.x.json.minitri-{pid}-{k}.tmp");
+            std::os::unix::fs::symlink("../victim", dir.join(name)).unwrap();
+        }
+    }
+    let child = bin()
+        .current_dir(dir)
+        .args(["a.wkt", "-o", "out/x.json"])
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let pid = child.id();
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(code(out.status), 0, "{}", text(&out.stderr));
+    assert_eq!(fs::read_to_string(dir.join("victim")).unwrap(), "precious");
+    assert!(fs::read_to_string(dir.join("out/x.json"))
+        .unwrap()
+        .contains("\"triangle_count\": 5"));
+    // (Whether the run's own process ID was among the planted ones depends on the other
+    // processes started meanwhile; it usually is.)
+    if !(first..first + 300).contains(&pid) {
+        eprintln!(
+            "process {pid} outside the planted range {first}..{}",
+            first + 300
+        );
+    }
+    // The planted links are not the run's: they stay, unfollowed.
+    let planted = format!("out/.x.json.minitri-{first}-0.tmp");
+    assert!(fs::symlink_metadata(dir.join(planted))
+        .unwrap()
+        .is_symlink());
+}
+
+#[test]
+fn a_temporary_of_another_host_or_namespace_is_kept_until_provably_stale() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    fs::write(dir.join("a.wkt"), U_SHAPE).unwrap();
+    fs::create_dir(dir.join("out")).unwrap();
+    // A live run in another container or on another machine (its process ID means nothing
+    // here, and may well be missing from this /proc): kept.
+    let live = dir.join("out/.y.json.minitri-99999999-fedcba9876543210-AbCdE12345.tmp");
+    fs::write(&live, "being written").unwrap();
+    // The same, but held open and locked by its writer, and old: kept.
+    let locked = dir.join("out/.z.json.minitri-99999998-fedcba9876543210-AbCdE12346.tmp");
+    fs::write(&locked, "being written slowly").unwrap();
+    age(&locked, 7200);
+    let holder = fs::File::open(&locked).unwrap();
+    holder.try_lock().unwrap();
+    // Old, and no one holds its lock: stale, removed.
+    let stale = dir.join("out/.w.json.minitri-99999997-fedcba9876543210-AbCdE12347.tmp");
+    fs::write(&stale, "left by a killed run").unwrap();
+    age(&stale, 7200);
+    let (code, _, err) = run_in(dir, &["a.wkt", "-o", "out/a.json"]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(fs::read_to_string(&live).unwrap(), "being written");
+    assert!(locked.exists());
+    assert!(!stale.exists());
+    drop(holder);
+}
+
+#[test]
+fn a_replaced_output_keeps_its_mode_and_owner() {
+    use std::os::unix::fs::{MetadataExt, PermissionsExt};
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    fs::write(dir.join("a.wkt"), U_SHAPE).unwrap();
+    fs::create_dir_all(dir.join("in")).unwrap();
+    fs::write(dir.join("in/b.wkt"), U_SHAPE).unwrap();
+    fs::write(dir.join("in/c.wkt"), U_SHAPE).unwrap();
+    fs::create_dir(dir.join("out")).unwrap();
+    let root = is_root(dir);
+    for path in ["x.json", "out/b.json"] {
+        fs::write(dir.join(path), "old").unwrap();
+        fs::set_permissions(dir.join(path), fs::Permissions::from_mode(0o600)).unwrap();
+        if root {
+            // Root may give the file away, and minitri (as root) may give it back.
+            std::os::unix::fs::chown(dir.join(path), Some(4321), Some(4322)).unwrap();
+        }
+    }
+    let (code, _, err) = run_in(dir, &["a.wkt", "-o", "x.json"]);
+    assert_eq!(code, 0, "{err}");
+    let (code, _, err) = run_in(dir, &["in", "-o", "out"]);
+    assert_eq!(code, 0, "{err}");
+    let plain = fs::metadata(dir.join("a.wkt")).unwrap().mode() & 0o777;
+    for path in ["x.json", "out/b.json"] {
+        let meta = fs::metadata(dir.join(path)).unwrap();
+        assert_eq!(meta.mode() & 0o7777, 0o600, "{path}");
+        if root {
+            assert_eq!((meta.uid(), meta.gid()), (4321, 4322), "{path}");
+        }
+        assert!(fs::read_to_string(dir.join(path))
+            .unwrap()
+            .contains("\"triangle_count\": 5"));
+    }
+    // A new output gets the mode of any new file (0666 less the umask), not 0600.
+    assert_eq!(
+        fs::metadata(dir.join("out/c.json")).unwrap().mode() & 0o777,
+        plain
+    );
+}
+
+/// Is the test running as root (who may change a file's owner)? Judged by the owner of a file
+/// it makes in `dir`.
+fn is_root(dir: &Path) -> bool {
+    use std::os::unix::fs::MetadataExt;
+    let probe = dir.join(".owner-probe");
+    fs::write(&probe, "").unwrap();
+    let uid = fs::metadata(&probe).unwrap().uid();
+    fs::remove_file(probe).unwrap();
+    uid == 0
 }
