@@ -944,3 +944,180 @@ fn is_root(dir: &Path) -> bool {
     fs::remove_file(probe).unwrap();
     uid == 0
 }
+
+/// Runs `script` with `sh -c` in `dir`, `$0` the binary: (code, stdout, stderr).
+fn shell(dir: &Path, script: &str) -> (i32, String, String) {
+    let out = Command::new("sh")
+        .current_dir(dir)
+        .args(["-c", script, env!("CARGO_BIN_EXE_minitri")])
+        .output()
+        .unwrap();
+    (code(out.status), text(&out.stdout), text(&out.stderr))
+}
+
+#[test]
+fn standard_output_that_is_an_input_is_refused() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    fs::write(dir.join("a.wkt"), U_SHAPE).unwrap();
+    let line = r#"{"type": "Polygon", "coordinates": [[[0, 0], [4, 0], [0, 4], [0, 0]]]}"#;
+    fs::write(dir.join("f.ndjson"), format!("{line}\n")).unwrap();
+    fs::create_dir(dir.join("d")).unwrap();
+    fs::write(dir.join("d/b.wkt"), U_SHAPE).unwrap();
+    let cases = [
+        ("\"$0\" a.wkt >> a.wkt", "a.wkt", "a.wkt"),
+        ("\"$0\" a.wkt 1<> a.wkt", "a.wkt", "a.wkt"),
+        ("\"$0\" < a.wkt >> a.wkt", "a.wkt", "standard input"),
+        (
+            "\"$0\" --to geojsonl f.ndjson >> f.ndjson",
+            "f.ndjson",
+            "f.ndjson",
+        ),
+        // Found in a directory: the shell makes d/out.json before minitri starts.
+        ("\"$0\" d > d/out.json", "", "d/out.json"),
+    ];
+    for (script, file, input) in cases {
+        let before = if file.is_empty() {
+            String::new()
+        } else {
+            fs::read_to_string(dir.join(file)).unwrap()
+        };
+        let (code, _, err) = shell(dir, script);
+        assert_eq!(code, 2, "{script}: {err}");
+        let message = format!("minitri: standard output is the input {input}; it would be written while it is read (choose another output)\n");
+        assert_eq!(err, message, "{script}");
+        if !file.is_empty() {
+            assert_eq!(
+                fs::read_to_string(dir.join(file)).unwrap(),
+                before,
+                "{script}"
+            );
+        }
+    }
+    // Another file, appended to: written as asked.
+    let (code, _, err) = shell(dir, "\"$0\" a.wkt >> other.json");
+    assert_eq!(code, 0, "{err}");
+    assert!(fs::read_to_string(dir.join("other.json"))
+        .unwrap()
+        .contains("\"triangle_count\": 5"));
+}
+
+#[test]
+fn standard_output_that_cannot_take_the_result_is_exit_1() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    fs::write(dir.join("a.wkt"), U_SHAPE).unwrap();
+    fs::write(dir.join("out.json"), "old").unwrap();
+    // Open for reading only, or a directory: every write would fail with EBADF.
+    for (script, why) in [
+        ("\"$0\" a.wkt 1<out.json", "open for reading only"),
+        ("\"$0\" a.wkt 1<.", "a directory"),
+    ] {
+        let (code, _, err) = shell(dir, script);
+        assert_eq!(code, 1, "{script}: {err}");
+        let message = format!(
+            "minitri: standard output is {why}: the result could not be written (give -o FILE)\n"
+        );
+        assert_eq!(err, message, "{script}");
+    }
+    assert_eq!(fs::read_to_string(dir.join("out.json")).unwrap(), "old");
+    // `-o` naming standard output when it is closed: refused like a closed standard output.
+    for name in ["/dev/stdout", "/dev/fd/1", "/proc/self/fd/1"] {
+        if !Path::new(name).exists() {
+            continue; // not on this system
+        }
+        let (code, _, err) = shell(dir, &format!("\"$0\" a.wkt -o {name} >&-"));
+        assert_eq!(code, 1, "-o {name}: {err}");
+        assert!(err.contains("standard output is closed"), "{err}");
+    }
+    // With standard output open, -o /dev/stdout writes into it.
+    let (code, out, err) = shell(dir, "\"$0\" a.wkt -o /dev/stdout");
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("\"triangle_count\": 5"));
+}
+
+#[test]
+fn a_file_size_limit_is_a_reported_error_and_leaves_no_temporary() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    // Its JSON is about 30 KB, far above `ulimit -f 4` (2 KiB in sh's 512-byte blocks or 4 KiB).
+    fs::write(dir.join("z.geojson"), geojson_polygon(&zigzag(400))).unwrap();
+    fs::create_dir(dir.join("in")).unwrap();
+    fs::write(dir.join("in/z.geojson"), geojson_polygon(&zigzag(400))).unwrap();
+    for (script, message) in [
+        (
+            "ulimit -f 4; \"$0\" z.geojson -o out.json",
+            "minitri: cannot write out.json: File too large (os error 27) (temporary file ",
+        ),
+        (
+            "ulimit -f 4; \"$0\" in -o out",
+            "minitri: cannot write out/z.json: File too large (os error 27) (temporary file ",
+        ),
+        (
+            "ulimit -f 4; \"$0\" z.geojson > stdout.json",
+            "minitri: cannot write to standard output: File too large (os error 27)",
+        ),
+    ] {
+        let (code, _, err) = shell(dir, script);
+        assert_eq!(code, 1, "{script}: {err}");
+        assert!(err.starts_with(message), "{script}: {err}");
+        if script.contains("-o") {
+            // The temporary file named, and said to be removed.
+            assert!(
+                err.contains(".minitri-") && err.contains(".tmp, removed)\n"),
+                "{err}"
+            );
+        }
+    }
+    assert!(!dir.join("out.json").exists() && !dir.join("out/z.json").exists());
+    assert!(temporaries(dir).is_empty(), "{:?}", temporaries(dir));
+}
+
+#[test]
+fn rayon_num_threads_is_capped_like_jobs() {
+    let tmp = tempfile::tempdir().unwrap();
+    fs::write(tmp.path().join("a.wkt"), U_SHAPE).unwrap();
+    let child = bin()
+        .current_dir(tmp.path())
+        .arg("a.wkt")
+        .env("RAYON_NUM_THREADS", "1000000")
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(code(out.status), 0);
+    assert_eq!(
+        text(&out.stderr),
+        "minitri: RAYON_NUM_THREADS=1000000: using 256 threads, the most minitri starts\n"
+    );
+    assert!(text(&out.stdout).contains("\"triangle_count\": 5"));
+}
+
+#[test]
+fn a_positive_time_limit_too_small_for_a_double_is_the_smallest_limit() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    fs::write(dir.join("h.wkt"), hole_grid(3)).unwrap();
+    // 1e-400 is 0 as a double, which meant "no limit"; 1e-12 is 0 nanoseconds.
+    for limit in ["1e-400", "1e-12"] {
+        let child = bin()
+            .current_dir(dir)
+            .args(["h.wkt", "--time-limit", limit])
+            .stdout(Stdio::piped())
+            .spawn()
+            .unwrap();
+        let out = child.wait_with_output().unwrap();
+        assert_eq!(code(out.status), 0, "{limit}");
+        assert!(
+            text(&out.stdout).contains("\"stopped_by\": \"time limit\""),
+            "{limit}"
+        );
+    }
+    let (code, _, err) = run_in(dir, &["h.wkt", "--time-limit=-1e-400"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("expected a number of seconds from 0"), "{err}");
+    let (code, out, _) = run_in(dir, &["h.wkt", "--time-limit", "0e5"]);
+    assert_eq!(code, 0);
+    assert!(!out.contains("\"stopped_by\""), "0e5 is 0, no limit");
+}

@@ -27,6 +27,13 @@ pub fn file_id(path: &Path) -> Option<FileId> {
     }
 }
 
+/// The identity of a file from its metadata (an open descriptor's `fstat`).
+#[cfg(unix)]
+pub fn file_id_of(meta: &std::fs::Metadata) -> FileId {
+    use std::os::unix::fs::MetadataExt;
+    FileId((meta.dev(), meta.ino()))
+}
+
 /// Do `a` and `b` name the same existing file or directory?
 pub fn same_file(a: &Path, b: &Path) -> bool {
     #[cfg(unix)]
