@@ -45,7 +45,25 @@ const MAX_JOBS: usize = 256;
 /// A line on standard error, `minitri: ` first. A failure to write it (standard error closed,
 /// full, a broken pipe) is ignored: diagnostics never stop a run or lose its result.
 fn say(line: &str) {
-    let _ = writeln!(io::stderr().lock(), "minitri: {line}");
+    let _ = writeln!(io::stderr().lock(), "minitri: {}", printable(line));
+}
+
+/// `line` with its control characters escaped (`\n`, `\u{1b}`), as excerpts of an input's
+/// contents already are: a file name holding a newline stays on its one line, and an escape
+/// sequence in a name never reaches the terminal.
+fn printable(line: &str) -> std::borrow::Cow<'_, str> {
+    if !line.chars().any(char::is_control) {
+        return line.into();
+    }
+    let mut out = String::with_capacity(line.len() + 8);
+    for c in line.chars() {
+        if c.is_control() {
+            out.extend(c.escape_default());
+        } else {
+            out.push(c);
+        }
+    }
+    out.into()
 }
 
 /// Is standard output an open descriptor? A program started with it closed (`>&-`) finds it

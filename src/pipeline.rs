@@ -63,6 +63,10 @@ pub enum Error {
     /// The input could not be read from its file or stream.
     #[error("cannot read: {0}")]
     Read(String),
+    /// The input was not read, and why, in full (`cannot read: Permission denied`, `skipped: a
+    /// FIFO, not a regular file ...`): what a directory walk reports.
+    #[error("{0}")]
+    NotRead(String),
     /// Even the least memory a polygon of this size needs could not be had ([`reserve_for`]).
     #[error("not enough memory: {n} vertices need at least {memory} to be validated and triangulated, and a reservation of that much failed")]
     OutOfMemory {

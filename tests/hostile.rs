@@ -1121,3 +1121,154 @@ fn a_positive_time_limit_too_small_for_a_double_is_the_smallest_limit() {
     assert_eq!(code, 0);
     assert!(!out.contains("\"stopped_by\""), "0e5 is 0, no limit");
 }
+
+#[test]
+fn an_input_replaced_by_a_fifo_after_the_walk_is_skipped_not_waited_on() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    fs::create_dir(dir.join("d")).unwrap();
+    fs::write(dir.join("d/z.wkt"), U_SHAPE).unwrap();
+    mkfifo(&dir.join("p.wkt"));
+    // The named FIFO is read first (one thread): the run waits there, after the walk, while
+    // d/z.wkt is replaced by a FIFO that no one will ever write.
+    let child = bin()
+        .current_dir(dir)
+        .args(["p.wkt", "d", "-o", "out", "--jobs", "1"])
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut writer = fs::OpenOptions::new()
+        .write(true)
+        .open(dir.join("p.wkt"))
+        .unwrap(); // returns once the run has opened p.wkt
+    fs::remove_file(dir.join("d/z.wkt")).unwrap();
+    mkfifo(&dir.join("d/z.wkt"));
+    writer.write_all(U_SHAPE.as_bytes()).unwrap();
+    drop(writer);
+    let output = {
+        let mut child = child;
+        let mut err = String::new();
+        use std::io::Read;
+        let mut pipe = child.stderr.take().unwrap();
+        let reader = std::thread::spawn(move || {
+            pipe.read_to_string(&mut err).unwrap();
+            err
+        });
+        let code = wait_at_most(child, Duration::from_secs(60));
+        (code, reader.join().unwrap())
+    };
+    let (code, err) = output;
+    assert_eq!(code, 1, "{err}");
+    assert!(
+        err.contains("minitri: d/z.wkt: skipped: a FIFO, not a regular file (it was replaced after the directory was read; name it to read it)\n"),
+        "{err}"
+    );
+    assert!(dir.join("out/p.json").is_file());
+}
+
+#[test]
+fn control_characters_in_file_names_are_escaped() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    fs::create_dir(dir.join("d")).unwrap();
+    let bowtie = "POLYGON ((0 0, 2 2, 2 0, 0 2, 0 0))";
+    fs::write(dir.join("d/a\nb.wkt"), bowtie).unwrap();
+    fs::write(dir.join("d/\u{1b}[31mred.wkt"), bowtie).unwrap();
+    let (code, _, err) = run_in(dir, &["d", "-q"]);
+    assert_eq!(code, 1, "{err}");
+    assert!(
+        !err.contains('\u{1b}'),
+        "an escape sequence reached the terminal: {err:?}"
+    );
+    let lines: Vec<&str> = err.lines().collect();
+    assert_eq!(lines.len(), 2, "one line per error: {err:?}");
+    assert!(
+        lines
+            .iter()
+            .any(|l| l.starts_with(r"minitri: d/\u{1b}[31mred.wkt: polygon 0: self-intersection")),
+        "{err:?}"
+    );
+    assert!(
+        lines
+            .iter()
+            .any(|l| l.starts_with(r"minitri: d/a\nb.wkt: polygon 0: self-intersection")),
+        "{err:?}"
+    );
+}
+
+#[test]
+fn an_unreadable_directory_says_cannot_read_once() {
+    use std::os::unix::fs::PermissionsExt;
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    fs::set_permissions(dir, fs::Permissions::from_mode(0o755)).unwrap();
+    fs::create_dir(dir.join("locked")).unwrap();
+    fs::set_permissions(dir.join("locked"), fs::Permissions::from_mode(0o000)).unwrap();
+    // Root reads a directory whatever its mode: run as nobody then, where that can be done.
+    let mut command = if is_root(dir) {
+        let mut c = Command::new("runuser");
+        c.args(["-u", "nobody", "--", env!("CARGO_BIN_EXE_minitri")]);
+        c
+    } else {
+        bin()
+    };
+    let out = command.current_dir(dir).arg("locked").output();
+    fs::set_permissions(dir.join("locked"), fs::Permissions::from_mode(0o755)).unwrap();
+    let Ok(out) = out else {
+        eprintln!("skipped: running as root without runuser, a mode-000 directory is readable");
+        return;
+    };
+    let err = text(&out.stderr);
+    if !err.starts_with("minitri: ") {
+        eprintln!("skipped: the binary cannot be run as nobody here: {err}");
+        return;
+    }
+    assert_eq!(code(out.status), 1, "{err}");
+    assert!(
+        err.starts_with("minitri: locked: cannot read: Permission denied"),
+        "{err}"
+    );
+    assert!(!err.contains("cannot read: cannot read"), "{err}");
+}
+
+#[test]
+fn a_directory_that_refuses_the_temporary_file_is_named() {
+    use std::os::unix::fs::PermissionsExt;
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    fs::set_permissions(dir, fs::Permissions::from_mode(0o755)).unwrap();
+    fs::write(dir.join("a.wkt"), U_SHAPE).unwrap();
+    fs::set_permissions(dir.join("a.wkt"), fs::Permissions::from_mode(0o644)).unwrap();
+    fs::create_dir(dir.join("ro")).unwrap();
+    // The output file itself is writable by anyone; its directory is not.
+    fs::write(dir.join("ro/out.json"), "old").unwrap();
+    fs::set_permissions(dir.join("ro/out.json"), fs::Permissions::from_mode(0o666)).unwrap();
+    fs::set_permissions(dir.join("ro"), fs::Permissions::from_mode(0o555)).unwrap();
+    let mut command = if is_root(dir) {
+        let mut c = Command::new("runuser");
+        c.args(["-u", "nobody", "--", env!("CARGO_BIN_EXE_minitri")]);
+        c
+    } else {
+        bin()
+    };
+    let out = command
+        .current_dir(dir)
+        .args(["a.wkt", "-o", "ro/out.json"])
+        .output();
+    fs::set_permissions(dir.join("ro"), fs::Permissions::from_mode(0o755)).unwrap();
+    let Ok(out) = out else {
+        eprintln!("skipped: running as root without runuser, every directory is writable");
+        return;
+    };
+    let err = text(&out.stderr);
+    if !err.starts_with("minitri: ") {
+        eprintln!("skipped: the binary cannot be run as nobody here: {err}");
+        return;
+    }
+    assert_eq!(code(out.status), 1, "{err}");
+    assert!(
+        err.starts_with("minitri: cannot write ro/out.json: the directory ro refuses a new file (Permission denied (os error 13)): the output is written to a temporary file there first"),
+        "{err}"
+    );
+    assert_eq!(fs::read_to_string(dir.join("ro/out.json")).unwrap(), "old");
+}

@@ -13,7 +13,7 @@
 //!   written atomically ([`AtomicFile`]); messages reported in input order.
 
 use super::atomic::AtomicFile;
-use super::discover::{Input, Unreadable};
+use super::discover::{Input, NotRegular, Unreadable};
 use super::guard::{file_id, FileId};
 use super::tally::Tally;
 use crate::feature::{Feature, Geometry, Identity};
@@ -133,7 +133,7 @@ pub fn run_document(
                 Err(e) => {
                     chunker.push(Item::Failed(Box::new(unreadable(
                         &e.name,
-                        Error::Read(e.message.clone()),
+                        Error::NotRead(e.message.clone()),
                     ))))?;
                     false
                 }
@@ -545,8 +545,12 @@ fn read_input(input: &Input, settings: &Settings, chunker: &mut Chunker) -> io::
     let reader: Box<dyn Read> = if input.is_stdin() {
         Box::new(io::stdin())
     } else {
-        match std::fs::File::open(&input.path) {
+        match input.open() {
             Ok(file) => Box::new(file),
+            // A walked input that is no longer a regular file: the message says it all.
+            Err(e) if e.get_ref().is_some_and(|e| e.is::<NotRegular>()) => {
+                return failed(chunker, Error::NotRead(e.to_string()))
+            }
             Err(e) => return failed(chunker, Error::Read(e.to_string())),
         }
     };
