@@ -1272,3 +1272,33 @@ fn a_directory_that_refuses_the_temporary_file_is_named() {
     );
     assert_eq!(fs::read_to_string(dir.join("ro/out.json")).unwrap(), "old");
 }
+
+#[test]
+fn the_cap_on_vertices_counts_what_the_output_counts() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    // A closed ring of exactly 4 vertices (5 positions with the closing one), in each format.
+    fs::write(dir.join("sq.wkt"), "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0))").unwrap();
+    fs::write(dir.join("sq.txt"), "0 0\n4 0\n4 4\n0 4\n0 0\n").unwrap();
+    let square = r#"{"type":"Polygon","coordinates":[[[0,0],[4,0],[4,4],[0,4],[0,0]]]}"#;
+    fs::write(dir.join("sq.geojson"), square).unwrap();
+    fs::write(dir.join("sq.ndjson"), format!("{square}\n")).unwrap();
+    for file in ["sq.wkt", "sq.txt", "sq.geojson", "sq.ndjson"] {
+        let (code, out, err) = run_in(dir, &[file, "--max-vertices", "4"]);
+        assert_eq!(code, 0, "{file}: {err}");
+        assert!(out.contains("\"vertices\": 4,"), "{file}: {out}");
+        // One fewer is refused.
+        let (code, _, err) = run_in(dir, &[file, "--max-vertices", "3"]);
+        assert_eq!(code, 1, "{file}");
+        assert!(
+            err.contains("too many vertices: more than 3 in one"),
+            "{file}: {err}"
+        );
+    }
+    // With a hole: 4 + 3 vertices, the two closing positions not counted.
+    let holed = r#"{"type":"Polygon","coordinates":[[[0,0],[4,0],[4,4],[0,4],[0,0]],[[1,1],[1,2],[2,2],[1,1]]]}"#;
+    fs::write(dir.join("h.geojson"), holed).unwrap();
+    let (code, out, err) = run_in(dir, &["h.geojson", "--max-vertices", "7"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("\"vertices\": 7,"), "{out}");
+}
