@@ -93,6 +93,10 @@ fn stdout_is_open() -> bool {
 #[cfg(target_os = "linux")]
 static STDOUT_AT_START: AtomicBool = AtomicBool::new(true);
 
+/// The same for descriptor 0, standard input.
+#[cfg(target_os = "linux")]
+static STDIN_AT_START: AtomicBool = AtomicBool::new(true);
+
 #[cfg(target_os = "linux")]
 #[used]
 #[link_section = ".init_array"]
@@ -101,6 +105,9 @@ static RECORD_STDOUT: extern "C" fn() = {
         // SAFETY: `fcntl(F_GETFD)` only reads the descriptor's flags (-1 when it is not open).
         let open = unsafe { libc::fcntl(1, libc::F_GETFD) } != -1;
         STDOUT_AT_START.store(open, Ordering::Relaxed);
+        // SAFETY: as above, for descriptor 0.
+        let open = unsafe { libc::fcntl(0, libc::F_GETFD) } != -1;
+        STDIN_AT_START.store(open, Ordering::Relaxed);
     }
     record
 };
@@ -201,7 +208,19 @@ fn run() -> anyhow::Result<ExitCode> {
             return Ok(ExitCode::from(2));
         }
     }
-    let (inputs, skipped) = discover_counting(&config.inputs, out_dir);
+    let (mut inputs, skipped) = discover_counting(&config.inputs, out_dir);
+    // Standard input closed, or open for writing only: Rust reads either as an empty input
+    // (EBADF taken for the end), which would say "empty input: no polygon found".
+    if let Some(why) = stdin_not_readable() {
+        for input in &mut inputs {
+            if input.as_ref().is_ok_and(|i| i.is_stdin()) {
+                *input = Err(minitri::batch::Unreadable {
+                    name: "-".into(),
+                    message: format!("standard input is {why}: nothing to read (name a file, or redirect one with <)"),
+                });
+            }
+        }
+    }
     // Standard output being an input, named or found in a directory, also through `>>`, `1<>`
     // or standard input redirected from it: it would be written while read (`--to geojsonl
     // f.ndjson >> f.ndjson` grows without end). (`-o FILE` is compared above.)
@@ -411,6 +430,27 @@ fn stdout_not_writable() -> Option<&'static str> {
             } else {
                 "open for reading only"
             });
+        }
+    }
+    None
+}
+
+/// Why standard input cannot be read, if it cannot: closed at start (reopened on `/dev/null`
+/// by Rust's start-up code), or open for writing only.
+fn stdin_not_readable() -> Option<&'static str> {
+    #[cfg(target_os = "linux")]
+    if !STDIN_AT_START.load(Ordering::Relaxed) {
+        return Some("closed");
+    }
+    #[cfg(unix)]
+    {
+        // SAFETY: `fcntl(F_GETFL)` only reads the descriptor's status flags.
+        let flags = unsafe { libc::fcntl(0, libc::F_GETFL) };
+        if flags == -1 {
+            return Some("closed");
+        }
+        if flags & libc::O_ACCMODE == libc::O_WRONLY {
+            return Some("open for writing only");
         }
     }
     None

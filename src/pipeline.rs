@@ -230,12 +230,37 @@ impl Outcome {
                 }
             }
         }
-        if let Err(e) = &self.result {
-            for message in e.messages() {
-                lines.push(format!("{self}: {message}"));
-            }
+        for message in self.error_messages() {
+            lines.push(format!("{self}: {message}"));
         }
         lines
+    }
+
+    /// The messages of this outcome's error (none when it succeeded), one per problem. With
+    /// `--repair` (`repaired` is `Some`), a hint that `--repair` would mend the problem is
+    /// replaced by the fact that it did not: `...; --repair splits it there` becomes `...
+    /// (not mended by --repair)`.
+    pub fn error_messages(&self) -> Vec<String> {
+        let Err(e) = &self.result else {
+            return Vec::new();
+        };
+        let mut messages = e.messages();
+        if self.repaired.is_some() {
+            for message in &mut messages {
+                if let Some(at) = message.find("; --repair ") {
+                    message.truncate(at);
+                    message.push_str(" (not mended by --repair)");
+                }
+            }
+        }
+        messages
+    }
+
+    /// [`Outcome::error_messages`] joined by `; `, as one line (the JSON's `errors`).
+    pub fn error_message(&self) -> Option<String> {
+        self.result
+            .is_err()
+            .then(|| self.error_messages().join("; "))
     }
 }
 

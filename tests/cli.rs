@@ -754,7 +754,7 @@ fn a_directory_without_input_files_is_named_and_skipped_files_are_counted() {
     assert_eq!(code, 1, "{err}");
     assert!(
         err.contains(&format!(
-            "minitri: {name}: cannot read: no input file found in this directory (2 other files; \
+            "minitri: {name}: no input file found in this directory (2 other files; \
              inputs end in .wkt, .geojson"
         )),
         "{err}"

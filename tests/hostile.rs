@@ -1302,3 +1302,56 @@ fn the_cap_on_vertices_counts_what_the_output_counts() {
     assert_eq!(code, 0, "{err}");
     assert!(out.contains("\"vertices\": 7,"), "{out}");
 }
+
+#[test]
+fn closed_or_write_only_standard_input_is_named_as_such() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    fs::write(dir.join("a.wkt"), U_SHAPE).unwrap();
+    for (script, why) in [
+        ("\"$0\" <&-", "closed"),
+        ("\"$0\" - <&-", "closed"),
+        ("\"$0\" 0>w.txt", "open for writing only"),
+    ] {
+        let (code, out, err) = shell(dir, script);
+        assert_eq!(code, 1, "{script}: {err}");
+        let line = format!("minitri: -: standard input is {why}: nothing to read (name a file, or redirect one with <)\n");
+        assert_eq!(err, line, "{script}");
+        assert!(!out.contains("empty input"), "{out}");
+    }
+    // The other inputs of the run go on.
+    let (code, out, err) = shell(dir, "\"$0\" -q a.wkt - <&-");
+    assert_eq!(code, 1, "{err}");
+    assert!(out.contains("\"triangle_count\": 5"), "{out}");
+}
+
+#[test]
+fn no_repair_hint_when_repair_was_given() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    // Two identical holes: --repair does not mend them (their overlap is the whole ring).
+    let twin = "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (2 2, 8 2, 8 8, 2 8, 2 2), (2 2, 8 2, 8 8, 2 8, 2 2))";
+    fs::write(dir.join("twin.wkt"), twin).unwrap();
+    let (code, _, err) = run_in(dir, &["twin.wkt"]);
+    assert_eq!(code, 1);
+    assert!(
+        err.contains("; --repair merges rings sharing a stretch of edge"),
+        "{err}"
+    );
+    for args in [
+        &["twin.wkt", "--repair"][..],
+        &["twin.wkt", "--repair", "--to", "geojson"],
+        &["twin.wkt", "--repair", "--to", "svg"],
+    ] {
+        let (code, out, err) = run_in(dir, args);
+        assert_eq!(code, 1, "{args:?}");
+        assert!(!err.contains("; --repair"), "{args:?}: {err}");
+        assert!(!out.contains("; --repair"), "{args:?}: {out}");
+        assert!(
+            err.contains("at vertex 5 (8, 2) (not mended by --repair)"),
+            "{args:?}: {err}"
+        );
+    }
+    let (_, out, _) = run_in(dir, &["twin.wkt", "--repair"]);
+    assert!(out.contains("(not mended by --repair)"), "{out}");
+}

@@ -86,7 +86,7 @@ impl<W: Write> JsonWriter<W> {
     /// Any I/O error of the output.
     pub fn push_rendered(&mut self, outcome: &Outcome, text: Option<String>) -> io::Result<()> {
         let Some(text) = text else {
-            if let Err(e) = &outcome.result {
+            if let Some(message) = outcome.error_message() {
                 let feature = outcome.feature.as_ref();
                 self.errors.push(ErrorEntry {
                     source: outcome.source.clone(),
@@ -96,7 +96,7 @@ impl<W: Write> JsonWriter<W> {
                     part: feature.filter(|f| f.multipart()).map(|f| f.part),
                     line: feature.and_then(|f| f.feature.line),
                     id: feature.and_then(|f| f.feature.id.clone()),
-                    message: e.to_string(),
+                    message,
                 });
             }
             return Ok(());
