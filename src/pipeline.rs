@@ -205,8 +205,9 @@ pub struct Outcome {
     /// What the tool changed in the input (dropped duplicate vertices). For a polygon split into
     /// pieces by `--repair`, the warnings about the input polygon are its first piece's.
     pub warnings: Vec<Warning>,
-    /// With `--repair`: what was repaired in the input polygon (the same list for each of its
-    /// pieces); `None` without `--repair`.
+    /// With `--repair`: what was repaired in the input polygon, listed once, with its first
+    /// piece (piece 0, or the only outcome); the later pieces of a polygon split in several
+    /// have an empty list (their repairs are piece 0's); `None` without `--repair`.
     pub repaired: Option<Vec<Repair>>,
     /// The input feature and part this outcome is (GeoJSON inputs; see [`crate::feature`]).
     pub feature: Option<Identity>,
@@ -652,16 +653,24 @@ pub fn process_raw(source: &str, index: usize, raw: RawPolygon, options: &Option
         let count = pieces.pieces.len();
         // The input polygon's warnings are told once, with its first piece.
         let mut input_warnings = Some(pieces.warnings);
+        let mut repairs = pieces.repairs;
         return pieces
             .pieces
             .into_iter()
             .enumerate()
             .map(|(k, piece)| {
                 let mut warnings = input_warnings.take().unwrap_or_default();
+                // The repairs once, with the first piece: a ring touching itself k times gives
+                // k pieces and k repairs, and a copy for every piece grew as k^2.
+                let repaired = if k == 0 {
+                    std::mem::take(&mut repairs)
+                } else {
+                    Vec::new()
+                };
                 let mut one = Outcome {
                     piece: (count > 1).then_some(k),
                     pieces: count.max(1),
-                    repaired: Some(pieces.repairs.clone()),
+                    repaired: Some(repaired),
                     ..outcome.clone()
                 };
                 match piece {

@@ -1355,3 +1355,41 @@ fn no_repair_hint_when_repair_was_given() {
     let (_, out, _) = run_in(dir, &["twin.wkt", "--repair"]);
     assert!(out.contains("(not mended by --repair)"), "{out}");
 }
+
+#[test]
+fn repairs_are_listed_once_not_once_per_piece() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    // A chain of 200 diamonds, one ring touching itself at the 199 points between them.
+    let m = 200;
+    let mut points: Vec<(i64, i64)> = Vec::new();
+    for i in 0..m {
+        points.extend([(2 * i, 0), (2 * i + 1, 1)]);
+    }
+    points.push((2 * m, 0));
+    for i in (0..m).rev() {
+        points.push((2 * i + 1, -1));
+        if i > 0 {
+            points.push((2 * i, 0));
+        }
+    }
+    points.push((0, 0));
+    let ring: Vec<String> = points.iter().map(|(x, y)| format!("{x} {y}")).collect();
+    fs::write(
+        dir.join("chain.wkt"),
+        format!("POLYGON (({}))", ring.join(", ")),
+    )
+    .unwrap();
+    let (code, out, err) = run_in(dir, &["chain.wkt", "--repair", "-q"]);
+    assert_eq!(code, 0, "{err}");
+    let doc: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let polygons = doc["polygons"].as_array().unwrap();
+    assert_eq!(polygons.len(), 200);
+    assert_eq!(polygons[0]["repaired"].as_array().unwrap().len(), 199);
+    for piece in &polygons[1..] {
+        assert!(piece.get("repaired").is_none(), "{piece}");
+        assert_eq!(piece["repaired_in_piece"], 0);
+    }
+    // 199 repairs in all (199 x 200 when each piece carried the list).
+    assert_eq!(out.matches("\"split_ring\"").count(), 199);
+}

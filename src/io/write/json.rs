@@ -175,9 +175,17 @@ pub fn render(outcome: &Outcome) -> Option<String> {
         let warnings: Vec<String> = outcome.warnings.iter().map(ToString::to_string).collect();
         out.push_str(&json(&warnings));
     }
-    if let Some(repaired) = &outcome.repaired {
-        out.push_str(",\n      \"repaired\": ");
-        out.push_str(&json(repaired));
+    match (&outcome.repaired, outcome.piece) {
+        // A later piece of a polygon split in several: its repairs are listed once, with
+        // piece 0 (a copy for every piece grew as k^2 for a ring touching itself k times).
+        (Some(_), Some(piece)) if piece > 0 => {
+            out.push_str(",\n      \"repaired_in_piece\": 0");
+        }
+        (Some(repaired), _) => {
+            out.push_str(",\n      \"repaired\": ");
+            out.push_str(&json(repaired));
+        }
+        (None, _) => {}
     }
     if let Some(v) = &solved.verification {
         out.push_str(",\n      \"verification\": ");
