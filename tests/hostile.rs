@@ -1393,3 +1393,45 @@ fn repairs_are_listed_once_not_once_per_piece() {
     // 199 repairs in all (199 x 200 when each piece carried the list).
     assert_eq!(out.matches("\"split_ring\"").count(), 199);
 }
+
+#[test]
+fn a_feature_collection_on_one_line_of_geojson_lines_is_an_error_of_its_line() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    let feature = |id: &str, x: i64| {
+        format!(
+            r#"{{"type": "Feature", "id": "{id}", "properties": {{"k": "{id}"}}, "geometry": {{"type": "Polygon", "coordinates": [[[{x}, 0], [{}, 0], [{x}, 4], [{x}, 0]]]}}}}"#,
+            x + 4
+        )
+    };
+    let collection = format!(
+        r#"{{"type": "FeatureCollection", "features": [{}, {}]}}"#,
+        feature("a", 0),
+        feature("b", 10)
+    );
+    let lines = format!("{}\n{collection}\n{}\n", feature("x", 20), feature("y", 30));
+    fs::write(dir.join("f.ndjson"), &lines).unwrap();
+    let (code, out, err) = run_in(dir, &["f.ndjson", "--to", "geojsonl"]);
+    assert_eq!(code, 1, "{err}");
+    assert_eq!(
+        err,
+        "minitri: f.ndjson: line 2, column 1: a FeatureCollection on one line of GeoJSON Lines: its features would be merged into one record, their ids and properties lost; give one Feature per line\n"
+    );
+    // One record per line still; the lines around it keep their identity; no merged record.
+    let records: Vec<serde_json::Value> = out
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert_eq!(records.len(), 3, "{out}");
+    assert_eq!(records[0]["id"], "x");
+    assert_eq!(records[1]["geometry"], serde_json::Value::Null);
+    assert_eq!(records[2]["id"], "y");
+    // The same collection in a .geojson file keeps each feature.
+    fs::write(dir.join("c.geojson"), &collection).unwrap();
+    let (code, out, err) = run_in(dir, &["c.geojson", "--to", "geojsonl"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        out.contains(r#""id": "a""#) && out.contains(r#""id": "b""#),
+        "{out}"
+    );
+}
