@@ -1435,3 +1435,22 @@ fn a_feature_collection_on_one_line_of_geojson_lines_is_an_error_of_its_line() {
         "{out}"
     );
 }
+
+#[test]
+fn coordinates_beyond_the_range_of_a_double_are_drawn_to_scale() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    // 4e400 rounds to infinity as a double, 4e-400 to 0: every point was drawn at one place
+    // (an empty picture, exit 0). The panel is scaled from the exact values now.
+    for (name, unit) in [("huge.wkt", "e400"), ("tiny.wkt", "e-400")] {
+        let square = format!("POLYGON ((0 0, 4{unit} 0, 4{unit} 4{unit}, 0 4{unit}, 0 0))");
+        fs::write(dir.join(name), square).unwrap();
+        let (code, out, err) = run_in(dir, &[name, "--to", "svg"]);
+        assert_eq!(code, 0, "{name}: {err}");
+        // The outline: the square's four corners, filling the 640-pixel panel within its margin.
+        assert!(
+            out.contains(r#"d="M52 636L636 636 636 52 52 52Z""#),
+            "{name}: {out}"
+        );
+    }
+}
