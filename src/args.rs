@@ -339,12 +339,27 @@ impl Flags {
     }
 }
 
-/// A number of seconds: finite, not negative, at most a year.
+/// A number of seconds: finite, not negative, at most a year. A positive number too small for
+/// a double (`1e-400`, which `f64` rounds to 0, "no limit") or for a nanosecond is the smallest
+/// limit, one nanosecond; a negative one that rounds to `-0` is refused like any negative.
 fn seconds(text: &str) -> Result<f64, String> {
-    match text.parse::<f64>() {
-        Ok(v) if v.is_finite() && (0.0..=3.2e7).contains(&v) => Ok(v),
-        _ => Err(format!(
-            "expected a number of seconds from 0 (no limit) to 32000000, got {text:?}"
-        )),
+    let refused =
+        || format!("expected a number of seconds from 0 (no limit) to 32000000, got {text:?}");
+    let v = text.parse::<f64>().map_err(|_| refused())?;
+    if !v.is_finite() || !(0.0..=3.2e7).contains(&v) {
+        return Err(refused());
     }
+    // Any digit but 0 before the exponent: the number written is not zero.
+    let mantissa = text.split(['e', 'E']).next().unwrap_or("");
+    let nonzero = mantissa.bytes().any(|b| (b'1'..=b'9').contains(&b));
+    if nonzero && text.trim_start().starts_with('-') {
+        return Err(refused());
+    }
+    if nonzero && std::time::Duration::from_secs_f64(v).is_zero() {
+        return Ok(SMALLEST_LIMIT);
+    }
+    Ok(v)
 }
+
+/// The smallest time limit, one nanosecond: what a positive `--time-limit` below it means.
+const SMALLEST_LIMIT: f64 = 1e-9;

@@ -45,7 +45,25 @@ const MAX_JOBS: usize = 256;
 /// A line on standard error, `minitri: ` first. A failure to write it (standard error closed,
 /// full, a broken pipe) is ignored: diagnostics never stop a run or lose its result.
 fn say(line: &str) {
-    let _ = writeln!(io::stderr().lock(), "minitri: {line}");
+    let _ = writeln!(io::stderr().lock(), "minitri: {}", printable(line));
+}
+
+/// `line` with its control characters escaped (`\n`, `\u{1b}`), as excerpts of an input's
+/// contents already are: a file name holding a newline stays on its one line, and an escape
+/// sequence in a name never reaches the terminal.
+fn printable(line: &str) -> std::borrow::Cow<'_, str> {
+    if !line.chars().any(char::is_control) {
+        return line.into();
+    }
+    let mut out = String::with_capacity(line.len() + 8);
+    for c in line.chars() {
+        if c.is_control() {
+            out.extend(c.escape_default());
+        } else {
+            out.push(c);
+        }
+    }
+    out.into()
 }
 
 /// Is standard output an open descriptor? A program started with it closed (`>&-`) finds it
@@ -75,6 +93,10 @@ fn stdout_is_open() -> bool {
 #[cfg(target_os = "linux")]
 static STDOUT_AT_START: AtomicBool = AtomicBool::new(true);
 
+/// The same for descriptor 0, standard input.
+#[cfg(target_os = "linux")]
+static STDIN_AT_START: AtomicBool = AtomicBool::new(true);
+
 #[cfg(target_os = "linux")]
 #[used]
 #[link_section = ".init_array"]
@@ -83,6 +105,9 @@ static RECORD_STDOUT: extern "C" fn() = {
         // SAFETY: `fcntl(F_GETFD)` only reads the descriptor's flags (-1 when it is not open).
         let open = unsafe { libc::fcntl(1, libc::F_GETFD) } != -1;
         STDOUT_AT_START.store(open, Ordering::Relaxed);
+        // SAFETY: as above, for descriptor 0.
+        let open = unsafe { libc::fcntl(0, libc::F_GETFD) } != -1;
+        STDIN_AT_START.store(open, Ordering::Relaxed);
     }
     record
 };
@@ -98,6 +123,14 @@ fn run() -> anyhow::Result<ExitCode> {
         return Ok(ExitCode::SUCCESS);
     }
     let mut config = flags.into_config();
+    // A file-size limit (`ulimit -f`) would kill the process with SIGXFSZ at the write that
+    // crosses it (status 153, no message, a temporary file left); ignored, that write fails
+    // with EFBIG instead: reported, exit status 1, the temporary file removed.
+    #[cfg(unix)]
+    // SAFETY: setting a signal's disposition to "ignore" runs no code of ours in a handler.
+    unsafe {
+        libc::signal(libc::SIGXFSZ, libc::SIG_IGN);
+    }
     // SIGINT (Ctrl-C), SIGTERM, SIGHUP: remove the temporary files of outputs being written and
     // stop, with exit status 130 for all three (the handler is not told which signal came; 130
     // is what a shell reports for SIGINT); outputs already written stay, complete. Without the
@@ -115,11 +148,44 @@ fn run() -> anyhow::Result<ExitCode> {
         }
         config.jobs = Some(MAX_JOBS);
     }
+    // Without --jobs, rayon reads its own variables: the same cap applies to them.
+    if config.jobs.is_none() {
+        for var in ["RAYON_NUM_THREADS", "RAYON_RS_NUM_CPUS"] {
+            let asked = std::env::var(var)
+                .ok()
+                .and_then(|v| v.trim().parse::<usize>().ok());
+            if let Some(threads) = asked.filter(|&n| n > MAX_JOBS) {
+                if !config.quiet {
+                    say(&format!(
+                        "{var}={threads}: using {MAX_JOBS} threads, the most minitri starts"
+                    ));
+                }
+                config.jobs = Some(MAX_JOBS);
+                break;
+            }
+            if asked.is_some() {
+                break; // rayon takes the first one set
+            }
+        }
+    }
     if let Some(code) = refuse_overwriting_inputs(&config.inputs, config.output.as_deref()) {
         return Ok(code);
     }
+    let closed = "standard output is closed: the result could not be written (give -o FILE)";
     if config.output.is_none() && !stdout_is_open() {
-        anyhow::bail!("standard output is closed: the result could not be written (give -o FILE)");
+        anyhow::bail!(closed);
+    }
+    // `-o /dev/stdout` (or `/dev/fd/1`, `/proc/self/fd/1`) with standard output closed names the
+    // `/dev/null` put in its place at start: the result would be lost with exit status 0.
+    if config.output.as_deref().is_some_and(names_stdout) && !stdout_is_open() {
+        anyhow::bail!(closed);
+    }
+    if config.output.is_none() {
+        if let Some(why) = stdout_not_writable() {
+            anyhow::bail!(
+                "standard output is {why}: the result could not be written (give -o FILE)"
+            );
+        }
     }
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(config.jobs.unwrap_or(0))
@@ -142,7 +208,27 @@ fn run() -> anyhow::Result<ExitCode> {
             return Ok(ExitCode::from(2));
         }
     }
-    let (inputs, skipped) = discover_counting(&config.inputs, out_dir);
+    let (mut inputs, skipped) = discover_counting(&config.inputs, out_dir);
+    // Standard input closed, or open for writing only: Rust reads either as an empty input
+    // (EBADF taken for the end), which would say "empty input: no polygon found".
+    if let Some(why) = stdin_not_readable() {
+        for input in &mut inputs {
+            if input.as_ref().is_ok_and(|i| i.is_stdin()) {
+                *input = Err(minitri::batch::Unreadable {
+                    name: "-".into(),
+                    message: format!("standard input is {why}: nothing to read (name a file, or redirect one with <)"),
+                });
+            }
+        }
+    }
+    // Standard output being an input, named or found in a directory, also through `>>`, `1<>`
+    // or standard input redirected from it: it would be written while read (`--to geojsonl
+    // f.ndjson >> f.ndjson` grows without end). (`-o FILE` is compared above.)
+    if config.output.is_none() {
+        if let Some(code) = refuse_writing_to_an_input(&inputs) {
+            return Ok(code);
+        }
+    }
     // Waiting for a terminal to type into would otherwise look like a hang.
     let typing = inputs.iter().flatten().any(|i| i.is_stdin()) && io::stdin().is_terminal();
     if typing && !config.quiet {
@@ -213,7 +299,7 @@ fn run() -> anyhow::Result<ExitCode> {
         (None, None) => {
             let report = pool
                 .install(|| {
-                    let stdout = io::BufWriter::new(io::stdout().lock());
+                    let stdout = io::BufWriter::new(stdout_file()?);
                     run_document(&inputs, &settings, config.to.sink(stdout)?, &progress)
                 })
                 .context("cannot write to standard output")?;
@@ -249,6 +335,138 @@ fn refuse_overwriting_inputs(
         out.display()
     ));
     Some(ExitCode::from(2))
+}
+
+/// Exit status 2 (with a message) when standard output is a regular file that is one of the
+/// inputs (also one found in a directory, or standard input redirected from it), compared by
+/// device and inode.
+fn refuse_writing_to_an_input(
+    inputs: &[Result<minitri::batch::Input, minitri::batch::Unreadable>],
+) -> Option<ExitCode> {
+    let id = stdout_file_id()?;
+    let input = inputs.iter().flatten().find(|input| {
+        if input.is_stdin() {
+            stdin_file_id().is_some_and(|stdin| stdin == id)
+        } else {
+            minitri::batch::file_id(&input.path).is_some_and(|i| i == id)
+        }
+    })?;
+    let name = if input.is_stdin() {
+        "standard input".to_string()
+    } else {
+        input.name()
+    };
+    say(&format!(
+        "standard output is the input {name}; it would be written while it is read (choose another output)"
+    ));
+    Some(ExitCode::from(2))
+}
+
+/// The identity of the regular file open as descriptor `fd` (standard output or input), if it
+/// is one.
+#[cfg(unix)]
+fn fd_file_id(fd: std::os::fd::BorrowedFd<'_>) -> Option<minitri::batch::FileId> {
+    let file = std::fs::File::from(fd.try_clone_to_owned().ok()?);
+    let meta = file.metadata().ok().filter(|m| m.is_file())?;
+    Some(minitri::batch::file_id_of(&meta))
+}
+
+fn stdout_file_id() -> Option<minitri::batch::FileId> {
+    #[cfg(unix)]
+    {
+        use std::os::fd::AsFd;
+        fd_file_id(io::stdout().as_fd())
+    }
+    #[cfg(not(unix))]
+    None
+}
+
+fn stdin_file_id() -> Option<minitri::batch::FileId> {
+    #[cfg(unix)]
+    {
+        use std::os::fd::AsFd;
+        fd_file_id(io::stdin().as_fd())
+    }
+    #[cfg(not(unix))]
+    None
+}
+
+/// Does `path` name descriptor 1 (`/dev/stdout`, `/dev/fd/1`, `/proc/self/fd/1`, or a link to
+/// one of them)?
+fn names_stdout(path: &Path) -> bool {
+    let own = format!("/proc/{}/fd/1", std::process::id());
+    let names = [
+        "/dev/stdout",
+        "/dev/fd/1",
+        "/proc/self/fd/1",
+        "/proc/thread-self/fd/1",
+    ];
+    let mut path = path.to_path_buf();
+    for _ in 0..40 {
+        let absolute = std::path::absolute(&path).unwrap_or_else(|_| path.clone());
+        if names.iter().any(|n| absolute == Path::new(n)) || absolute == Path::new(&own) {
+            return true;
+        }
+        let Ok(next) = std::fs::read_link(&path) else {
+            return false;
+        };
+        path = path.parent().unwrap_or(Path::new("")).join(next);
+    }
+    false
+}
+
+/// Why standard output cannot take the result, if it cannot: open read-only (`1<file`), on a
+/// directory. Every write would fail with EBADF, which Rust's standard output ignores: the
+/// result lost with exit status 0.
+fn stdout_not_writable() -> Option<&'static str> {
+    #[cfg(unix)]
+    {
+        // SAFETY: `fcntl(F_GETFL)` only reads the descriptor's status flags.
+        let flags = unsafe { libc::fcntl(1, libc::F_GETFL) };
+        if flags != -1 && flags & libc::O_ACCMODE == libc::O_RDONLY {
+            let dir = std::fs::metadata("/dev/stdout").is_ok_and(|m| m.is_dir());
+            return Some(if dir {
+                "a directory"
+            } else {
+                "open for reading only"
+            });
+        }
+    }
+    None
+}
+
+/// Why standard input cannot be read, if it cannot: closed at start (reopened on `/dev/null`
+/// by Rust's start-up code), or open for writing only.
+fn stdin_not_readable() -> Option<&'static str> {
+    #[cfg(target_os = "linux")]
+    if !STDIN_AT_START.load(Ordering::Relaxed) {
+        return Some("closed");
+    }
+    #[cfg(unix)]
+    {
+        // SAFETY: `fcntl(F_GETFL)` only reads the descriptor's status flags.
+        let flags = unsafe { libc::fcntl(0, libc::F_GETFL) };
+        if flags == -1 {
+            return Some("closed");
+        }
+        if flags & libc::O_ACCMODE == libc::O_WRONLY {
+            return Some("open for writing only");
+        }
+    }
+    None
+}
+
+/// Standard output as a file of its own (a duplicate of descriptor 1): unlike `io::stdout()`,
+/// which takes EBADF for success, every error of a write is reported.
+fn stdout_file() -> io::Result<Box<dyn Write + Send>> {
+    #[cfg(unix)]
+    {
+        use std::os::fd::AsFd;
+        let fd = io::stdout().as_fd().try_clone_to_owned()?;
+        Ok(Box::new(std::fs::File::from(fd)))
+    }
+    #[cfg(not(unix))]
+    Ok(Box::new(io::stdout()))
 }
 
 /// Does `-o out` name a directory mirroring the inputs (rather than one output file)?

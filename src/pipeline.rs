@@ -63,6 +63,10 @@ pub enum Error {
     /// The input could not be read from its file or stream.
     #[error("cannot read: {0}")]
     Read(String),
+    /// The input was not read, and why, in full (`cannot read: Permission denied`, `skipped: a
+    /// FIFO, not a regular file ...`): what a directory walk reports.
+    #[error("{0}")]
+    NotRead(String),
     /// Even the least memory a polygon of this size needs could not be had ([`reserve_for`]).
     #[error("not enough memory: {n} vertices need at least {memory} to be validated and triangulated, and a reservation of that much failed")]
     OutOfMemory {
@@ -201,8 +205,9 @@ pub struct Outcome {
     /// What the tool changed in the input (dropped duplicate vertices). For a polygon split into
     /// pieces by `--repair`, the warnings about the input polygon are its first piece's.
     pub warnings: Vec<Warning>,
-    /// With `--repair`: what was repaired in the input polygon (the same list for each of its
-    /// pieces); `None` without `--repair`.
+    /// With `--repair`: what was repaired in the input polygon, listed once, with its first
+    /// piece (piece 0, or the only outcome); the later pieces of a polygon split in several
+    /// have an empty list (their repairs are piece 0's); `None` without `--repair`.
     pub repaired: Option<Vec<Repair>>,
     /// The input feature and part this outcome is (GeoJSON inputs; see [`crate::feature`]).
     pub feature: Option<Identity>,
@@ -226,12 +231,37 @@ impl Outcome {
                 }
             }
         }
-        if let Err(e) = &self.result {
-            for message in e.messages() {
-                lines.push(format!("{self}: {message}"));
-            }
+        for message in self.error_messages() {
+            lines.push(format!("{self}: {message}"));
         }
         lines
+    }
+
+    /// The messages of this outcome's error (none when it succeeded), one per problem. With
+    /// `--repair` (`repaired` is `Some`), a hint that `--repair` would mend the problem is
+    /// replaced by the fact that it did not: `...; --repair splits it there` becomes `...
+    /// (not mended by --repair)`.
+    pub fn error_messages(&self) -> Vec<String> {
+        let Err(e) = &self.result else {
+            return Vec::new();
+        };
+        let mut messages = e.messages();
+        if self.repaired.is_some() {
+            for message in &mut messages {
+                if let Some(at) = message.find("; --repair ") {
+                    message.truncate(at);
+                    message.push_str(" (not mended by --repair)");
+                }
+            }
+        }
+        messages
+    }
+
+    /// [`Outcome::error_messages`] joined by `; `, as one line (the JSON's `errors`).
+    pub fn error_message(&self) -> Option<String> {
+        self.result
+            .is_err()
+            .then(|| self.error_messages().join("; "))
     }
 }
 
@@ -623,16 +653,24 @@ pub fn process_raw(source: &str, index: usize, raw: RawPolygon, options: &Option
         let count = pieces.pieces.len();
         // The input polygon's warnings are told once, with its first piece.
         let mut input_warnings = Some(pieces.warnings);
+        let mut repairs = pieces.repairs;
         return pieces
             .pieces
             .into_iter()
             .enumerate()
             .map(|(k, piece)| {
                 let mut warnings = input_warnings.take().unwrap_or_default();
+                // The repairs once, with the first piece: a ring touching itself k times gives
+                // k pieces and k repairs, and a copy for every piece grew as k^2.
+                let repaired = if k == 0 {
+                    std::mem::take(&mut repairs)
+                } else {
+                    Vec::new()
+                };
                 let mut one = Outcome {
                     piece: (count > 1).then_some(k),
                     pieces: count.max(1),
-                    repaired: Some(pieces.repairs.clone()),
+                    repaired: Some(repaired),
                     ..outcome.clone()
                 };
                 match piece {

@@ -265,9 +265,11 @@ fn long_names_read_only_outputs_and_stale_temporaries() {
     fs::create_dir(dir.join("in")).unwrap();
     fs::write(dir.join("in").join(&long), U_SHAPE).unwrap();
     fs::create_dir(dir.join("out")).unwrap();
-    // Left by a run killed outright (no such process: pid_max is at most 2^22).
+    // Left by a run of an older minitri killed outright, which did not name its host: removed
+    // only once old (more than an hour) and unlocked.
     let stale = dir.join("out/.x.json.minitri-99999999-0.tmp");
     fs::write(&stale, "partial").unwrap();
+    age(&stale, 7200);
     let (code, _, err) = run_in(dir, &["in", "-o", "out"]);
     assert_eq!(code, 0, "{err}");
     assert!(dir
@@ -286,6 +288,13 @@ fn long_names_read_only_outputs_and_stale_temporaries() {
     assert_eq!(code, 1, "{err}");
     assert!(err.contains("read-only"), "{err}");
     assert_eq!(fs::read_to_string(&ro).unwrap(), "kept");
+}
+
+/// Sets the modification time of `path` to `seconds` ago.
+fn age(path: &Path, seconds: u64) {
+    let then = std::time::SystemTime::now() - Duration::from_secs(seconds);
+    let file = fs::OpenOptions::new().write(true).open(path).unwrap();
+    file.set_modified(then).unwrap();
 }
 
 /// A square with a `k` x `k` grid of tiny triangular holes, as WKT (slow to search).
@@ -762,4 +771,686 @@ fn a_polygon_with_too_many_vertices_is_reported_and_the_others_go_on() {
     // A bad value is a command-line error.
     let (code, _, err) = run_in(dir, &["--max-vertices", "0", "big.wkt"]);
     assert_eq!(code, 2, "{err}");
+}
+
+// Issue 34: the second campaign.
+
+#[test]
+fn a_batch_never_writes_through_a_link_into_an_input() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    fs::create_dir_all(dir.join("in/sub")).unwrap();
+    fs::create_dir(dir.join("out")).unwrap();
+    for name in ["a.wkt", "b.wkt", "c.wkt"] {
+        fs::write(dir.join("in").join(name), U_SHAPE).unwrap();
+    }
+    // Two outputs linked to one input, a third output plain.
+    std::os::unix::fs::symlink("../in/a.wkt", dir.join("out/a.json")).unwrap();
+    std::os::unix::fs::symlink("../in/a.wkt", dir.join("out/b.json")).unwrap();
+    // A subdirectory of the output tree linked into the input tree, where an input's output
+    // has the input's own name (a GeoJSON input named .json).
+    let geojson = r#"{"type": "Polygon", "coordinates": [[[0, 0], [4, 0], [0, 4], [0, 0]]]}"#;
+    fs::write(dir.join("in/sub/d.json"), geojson).unwrap();
+    std::os::unix::fs::symlink("../in/sub", dir.join("out/sub")).unwrap();
+    let (code, _, err) = run_in(dir, &["in", "-o", "out", "--jobs", "2"]);
+    assert_eq!(code, 1, "a batch with a failed file: {err}");
+    for (input, output) in [("a", "a"), ("b", "a")] {
+        let line = format!("minitri: in/{input}.wkt: not processed: its output out/{input}.json is the input in/{output}.wkt (the same file, through a link); it would be overwritten");
+        assert!(err.contains(&line), "{err}");
+    }
+    assert!(
+        err.contains(
+            "in/sub/d.json: not processed: its output out/sub/d.json is the input in/sub/d.json"
+        ),
+        "{err}"
+    );
+    assert_eq!(fs::read_to_string(dir.join("in/a.wkt")).unwrap(), U_SHAPE);
+    assert_eq!(
+        fs::read_to_string(dir.join("in/sub/d.json")).unwrap(),
+        geojson
+    );
+    // The links stay links; the other file of the batch is written.
+    assert!(fs::symlink_metadata(dir.join("out/a.json"))
+        .unwrap()
+        .is_symlink());
+    assert!(fs::read_to_string(dir.join("out/c.json"))
+        .unwrap()
+        .contains("\"triangle_count\": 5"));
+    assert!(temporaries(dir).is_empty(), "{:?}", temporaries(dir));
+}
+
+#[test]
+fn a_link_planted_at_a_temporary_name_is_never_written_through() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    fs::write(dir.join("a.wkt"), U_SHAPE).unwrap();
+    fs::create_dir(dir.join("out")).unwrap();
+    fs::write(dir.join("victim"), "precious").unwrap();
+    // The names the old scheme gave the next processes' first temporaries
+    // (`.NAME.minitri-PID-K.tmp`): process IDs are handed out in order.
+    let mut next = Command::new("true").spawn().unwrap();
+    let first = next.id();
+    next.wait().unwrap();
+    for pid in first..first + 300 {
+        for k in 0..2 {
+            let name = format!("out/.x.json.minitri-{pid}-{k}.tmp");
+            std::os::unix::fs::symlink("../victim", dir.join(name)).unwrap();
+        }
+    }
+    let child = bin()
+        .current_dir(dir)
+        .args(["a.wkt", "-o", "out/x.json"])
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let pid = child.id();
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(code(out.status), 0, "{}", text(&out.stderr));
+    assert_eq!(fs::read_to_string(dir.join("victim")).unwrap(), "precious");
+    assert!(fs::read_to_string(dir.join("out/x.json"))
+        .unwrap()
+        .contains("\"triangle_count\": 5"));
+    // (Whether the run's own process ID was among the planted ones depends on the other
+    // processes started meanwhile; it usually is.)
+    if !(first..first + 300).contains(&pid) {
+        eprintln!(
+            "process {pid} outside the planted range {first}..{}",
+            first + 300
+        );
+    }
+    // The planted links are not the run's: they stay, unfollowed.
+    let planted = format!("out/.x.json.minitri-{first}-0.tmp");
+    assert!(fs::symlink_metadata(dir.join(planted))
+        .unwrap()
+        .is_symlink());
+}
+
+#[test]
+fn a_temporary_of_another_host_or_namespace_is_kept_until_provably_stale() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    fs::write(dir.join("a.wkt"), U_SHAPE).unwrap();
+    fs::create_dir(dir.join("out")).unwrap();
+    // A live run in another container or on another machine (its process ID means nothing
+    // here, and may well be missing from this /proc): kept.
+    let live = dir.join("out/.y.json.minitri-99999999-fedcba9876543210-AbCdE12345.tmp");
+    fs::write(&live, "being written").unwrap();
+    // The same, but held open and locked by its writer, and old: kept.
+    let locked = dir.join("out/.z.json.minitri-99999998-fedcba9876543210-AbCdE12346.tmp");
+    fs::write(&locked, "being written slowly").unwrap();
+    age(&locked, 7200);
+    let holder = fs::File::open(&locked).unwrap();
+    holder.try_lock().unwrap();
+    // Old, and no one holds its lock: stale, removed.
+    let stale = dir.join("out/.w.json.minitri-99999997-fedcba9876543210-AbCdE12347.tmp");
+    fs::write(&stale, "left by a killed run").unwrap();
+    age(&stale, 7200);
+    let (code, _, err) = run_in(dir, &["a.wkt", "-o", "out/a.json"]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(fs::read_to_string(&live).unwrap(), "being written");
+    assert!(locked.exists());
+    assert!(!stale.exists());
+    drop(holder);
+}
+
+#[test]
+fn a_replaced_output_keeps_its_mode_and_owner() {
+    use std::os::unix::fs::{MetadataExt, PermissionsExt};
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    fs::write(dir.join("a.wkt"), U_SHAPE).unwrap();
+    fs::create_dir_all(dir.join("in")).unwrap();
+    fs::write(dir.join("in/b.wkt"), U_SHAPE).unwrap();
+    fs::write(dir.join("in/c.wkt"), U_SHAPE).unwrap();
+    fs::create_dir(dir.join("out")).unwrap();
+    let root = is_root(dir);
+    for path in ["x.json", "out/b.json"] {
+        fs::write(dir.join(path), "old").unwrap();
+        fs::set_permissions(dir.join(path), fs::Permissions::from_mode(0o600)).unwrap();
+        if root {
+            // Root may give the file away, and minitri (as root) may give it back.
+            std::os::unix::fs::chown(dir.join(path), Some(4321), Some(4322)).unwrap();
+        }
+    }
+    let (code, _, err) = run_in(dir, &["a.wkt", "-o", "x.json"]);
+    assert_eq!(code, 0, "{err}");
+    let (code, _, err) = run_in(dir, &["in", "-o", "out"]);
+    assert_eq!(code, 0, "{err}");
+    let plain = fs::metadata(dir.join("a.wkt")).unwrap().mode() & 0o777;
+    for path in ["x.json", "out/b.json"] {
+        let meta = fs::metadata(dir.join(path)).unwrap();
+        assert_eq!(meta.mode() & 0o7777, 0o600, "{path}");
+        if root {
+            assert_eq!((meta.uid(), meta.gid()), (4321, 4322), "{path}");
+        }
+        assert!(fs::read_to_string(dir.join(path))
+            .unwrap()
+            .contains("\"triangle_count\": 5"));
+    }
+    // A new output gets the mode of any new file (0666 less the umask), not 0600.
+    assert_eq!(
+        fs::metadata(dir.join("out/c.json")).unwrap().mode() & 0o777,
+        plain
+    );
+}
+
+/// Is the test running as root (who may change a file's owner)? Judged by the owner of a file
+/// it makes in `dir`.
+fn is_root(dir: &Path) -> bool {
+    use std::os::unix::fs::MetadataExt;
+    let probe = dir.join(".owner-probe");
+    fs::write(&probe, "").unwrap();
+    let uid = fs::metadata(&probe).unwrap().uid();
+    fs::remove_file(probe).unwrap();
+    uid == 0
+}
+
+/// Runs `script` with `sh -c` in `dir`, `$0` the binary: (code, stdout, stderr).
+fn shell(dir: &Path, script: &str) -> (i32, String, String) {
+    let out = Command::new("sh")
+        .current_dir(dir)
+        .args(["-c", script, env!("CARGO_BIN_EXE_minitri")])
+        .output()
+        .unwrap();
+    (code(out.status), text(&out.stdout), text(&out.stderr))
+}
+
+#[test]
+fn standard_output_that_is_an_input_is_refused() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    fs::write(dir.join("a.wkt"), U_SHAPE).unwrap();
+    let line = r#"{"type": "Polygon", "coordinates": [[[0, 0], [4, 0], [0, 4], [0, 0]]]}"#;
+    fs::write(dir.join("f.ndjson"), format!("{line}\n")).unwrap();
+    fs::create_dir(dir.join("d")).unwrap();
+    fs::write(dir.join("d/b.wkt"), U_SHAPE).unwrap();
+    let cases = [
+        ("\"$0\" a.wkt >> a.wkt", "a.wkt", "a.wkt"),
+        ("\"$0\" a.wkt 1<> a.wkt", "a.wkt", "a.wkt"),
+        ("\"$0\" < a.wkt >> a.wkt", "a.wkt", "standard input"),
+        (
+            "\"$0\" --to geojsonl f.ndjson >> f.ndjson",
+            "f.ndjson",
+            "f.ndjson",
+        ),
+        // Found in a directory: the shell makes d/out.json before minitri starts.
+        ("\"$0\" d > d/out.json", "", "d/out.json"),
+    ];
+    for (script, file, input) in cases {
+        let before = if file.is_empty() {
+            String::new()
+        } else {
+            fs::read_to_string(dir.join(file)).unwrap()
+        };
+        let (code, _, err) = shell(dir, script);
+        assert_eq!(code, 2, "{script}: {err}");
+        let message = format!("minitri: standard output is the input {input}; it would be written while it is read (choose another output)\n");
+        assert_eq!(err, message, "{script}");
+        if !file.is_empty() {
+            assert_eq!(
+                fs::read_to_string(dir.join(file)).unwrap(),
+                before,
+                "{script}"
+            );
+        }
+    }
+    // Another file, appended to: written as asked.
+    let (code, _, err) = shell(dir, "\"$0\" a.wkt >> other.json");
+    assert_eq!(code, 0, "{err}");
+    assert!(fs::read_to_string(dir.join("other.json"))
+        .unwrap()
+        .contains("\"triangle_count\": 5"));
+}
+
+#[test]
+fn standard_output_that_cannot_take_the_result_is_exit_1() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    fs::write(dir.join("a.wkt"), U_SHAPE).unwrap();
+    fs::write(dir.join("out.json"), "old").unwrap();
+    // Open for reading only, or a directory: every write would fail with EBADF.
+    for (script, why) in [
+        ("\"$0\" a.wkt 1<out.json", "open for reading only"),
+        ("\"$0\" a.wkt 1<.", "a directory"),
+    ] {
+        let (code, _, err) = shell(dir, script);
+        assert_eq!(code, 1, "{script}: {err}");
+        let message = format!(
+            "minitri: standard output is {why}: the result could not be written (give -o FILE)\n"
+        );
+        assert_eq!(err, message, "{script}");
+    }
+    assert_eq!(fs::read_to_string(dir.join("out.json")).unwrap(), "old");
+    // `-o` naming standard output when it is closed: refused like a closed standard output.
+    for name in ["/dev/stdout", "/dev/fd/1", "/proc/self/fd/1"] {
+        if !Path::new(name).exists() {
+            continue; // not on this system
+        }
+        let (code, _, err) = shell(dir, &format!("\"$0\" a.wkt -o {name} >&-"));
+        assert_eq!(code, 1, "-o {name}: {err}");
+        assert!(err.contains("standard output is closed"), "{err}");
+    }
+    // With standard output open, -o /dev/stdout writes into it.
+    let (code, out, err) = shell(dir, "\"$0\" a.wkt -o /dev/stdout");
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("\"triangle_count\": 5"));
+}
+
+#[test]
+fn a_file_size_limit_is_a_reported_error_and_leaves_no_temporary() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    // Its JSON is about 30 KB, far above `ulimit -f 4` (2 KiB in sh's 512-byte blocks or 4 KiB).
+    fs::write(dir.join("z.geojson"), geojson_polygon(&zigzag(400))).unwrap();
+    fs::create_dir(dir.join("in")).unwrap();
+    fs::write(dir.join("in/z.geojson"), geojson_polygon(&zigzag(400))).unwrap();
+    for (script, message) in [
+        (
+            "ulimit -f 4; \"$0\" z.geojson -o out.json",
+            "minitri: cannot write out.json: File too large (os error 27) (temporary file ",
+        ),
+        (
+            "ulimit -f 4; \"$0\" in -o out",
+            "minitri: cannot write out/z.json: File too large (os error 27) (temporary file ",
+        ),
+        (
+            "ulimit -f 4; \"$0\" z.geojson > stdout.json",
+            "minitri: cannot write to standard output: File too large (os error 27)",
+        ),
+    ] {
+        let (code, _, err) = shell(dir, script);
+        assert_eq!(code, 1, "{script}: {err}");
+        assert!(err.starts_with(message), "{script}: {err}");
+        if script.contains("-o") {
+            // The temporary file named, and said to be removed.
+            assert!(
+                err.contains(".minitri-") && err.contains(".tmp, removed)\n"),
+                "{err}"
+            );
+        }
+    }
+    assert!(!dir.join("out.json").exists() && !dir.join("out/z.json").exists());
+    assert!(temporaries(dir).is_empty(), "{:?}", temporaries(dir));
+}
+
+#[test]
+fn rayon_num_threads_is_capped_like_jobs() {
+    let tmp = tempfile::tempdir().unwrap();
+    fs::write(tmp.path().join("a.wkt"), U_SHAPE).unwrap();
+    let child = bin()
+        .current_dir(tmp.path())
+        .arg("a.wkt")
+        .env("RAYON_NUM_THREADS", "1000000")
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(code(out.status), 0);
+    assert_eq!(
+        text(&out.stderr),
+        "minitri: RAYON_NUM_THREADS=1000000: using 256 threads, the most minitri starts\n"
+    );
+    assert!(text(&out.stdout).contains("\"triangle_count\": 5"));
+}
+
+#[test]
+fn a_positive_time_limit_too_small_for_a_double_is_the_smallest_limit() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    fs::write(dir.join("h.wkt"), hole_grid(3)).unwrap();
+    // 1e-400 is 0 as a double, which meant "no limit"; 1e-12 is 0 nanoseconds.
+    for limit in ["1e-400", "1e-12"] {
+        let child = bin()
+            .current_dir(dir)
+            .args(["h.wkt", "--time-limit", limit])
+            .stdout(Stdio::piped())
+            .spawn()
+            .unwrap();
+        let out = child.wait_with_output().unwrap();
+        assert_eq!(code(out.status), 0, "{limit}");
+        assert!(
+            text(&out.stdout).contains("\"stopped_by\": \"time limit\""),
+            "{limit}"
+        );
+    }
+    let (code, _, err) = run_in(dir, &["h.wkt", "--time-limit=-1e-400"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("expected a number of seconds from 0"), "{err}");
+    let (code, out, _) = run_in(dir, &["h.wkt", "--time-limit", "0e5"]);
+    assert_eq!(code, 0);
+    assert!(!out.contains("\"stopped_by\""), "0e5 is 0, no limit");
+}
+
+#[test]
+fn an_input_replaced_by_a_fifo_after_the_walk_is_skipped_not_waited_on() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    fs::create_dir(dir.join("d")).unwrap();
+    fs::write(dir.join("d/z.wkt"), U_SHAPE).unwrap();
+    mkfifo(&dir.join("p.wkt"));
+    // The named FIFO is read first (one thread): the run waits there, after the walk, while
+    // d/z.wkt is replaced by a FIFO that no one will ever write.
+    let child = bin()
+        .current_dir(dir)
+        .args(["p.wkt", "d", "-o", "out", "--jobs", "1"])
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut writer = fs::OpenOptions::new()
+        .write(true)
+        .open(dir.join("p.wkt"))
+        .unwrap(); // returns once the run has opened p.wkt
+    fs::remove_file(dir.join("d/z.wkt")).unwrap();
+    mkfifo(&dir.join("d/z.wkt"));
+    writer.write_all(U_SHAPE.as_bytes()).unwrap();
+    drop(writer);
+    let output = {
+        let mut child = child;
+        let mut err = String::new();
+        use std::io::Read;
+        let mut pipe = child.stderr.take().unwrap();
+        let reader = std::thread::spawn(move || {
+            pipe.read_to_string(&mut err).unwrap();
+            err
+        });
+        let code = wait_at_most(child, Duration::from_secs(60));
+        (code, reader.join().unwrap())
+    };
+    let (code, err) = output;
+    assert_eq!(code, 1, "{err}");
+    assert!(
+        err.contains("minitri: d/z.wkt: skipped: a FIFO, not a regular file (it was replaced after the directory was read; name it to read it)\n"),
+        "{err}"
+    );
+    assert!(dir.join("out/p.json").is_file());
+}
+
+#[test]
+fn control_characters_in_file_names_are_escaped() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    fs::create_dir(dir.join("d")).unwrap();
+    let bowtie = "POLYGON ((0 0, 2 2, 2 0, 0 2, 0 0))";
+    fs::write(dir.join("d/a\nb.wkt"), bowtie).unwrap();
+    fs::write(dir.join("d/\u{1b}[31mred.wkt"), bowtie).unwrap();
+    let (code, _, err) = run_in(dir, &["d", "-q"]);
+    assert_eq!(code, 1, "{err}");
+    assert!(
+        !err.contains('\u{1b}'),
+        "an escape sequence reached the terminal: {err:?}"
+    );
+    let lines: Vec<&str> = err.lines().collect();
+    assert_eq!(lines.len(), 2, "one line per error: {err:?}");
+    assert!(
+        lines
+            .iter()
+            .any(|l| l.starts_with(r"minitri: d/\u{1b}[31mred.wkt: polygon 0: self-intersection")),
+        "{err:?}"
+    );
+    assert!(
+        lines
+            .iter()
+            .any(|l| l.starts_with(r"minitri: d/a\nb.wkt: polygon 0: self-intersection")),
+        "{err:?}"
+    );
+}
+
+#[test]
+fn an_unreadable_directory_says_cannot_read_once() {
+    use std::os::unix::fs::PermissionsExt;
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    fs::set_permissions(dir, fs::Permissions::from_mode(0o755)).unwrap();
+    fs::create_dir(dir.join("locked")).unwrap();
+    fs::set_permissions(dir.join("locked"), fs::Permissions::from_mode(0o000)).unwrap();
+    // Root reads a directory whatever its mode: run as nobody then, where that can be done.
+    let mut command = if is_root(dir) {
+        let mut c = Command::new("runuser");
+        c.args(["-u", "nobody", "--", env!("CARGO_BIN_EXE_minitri")]);
+        c
+    } else {
+        bin()
+    };
+    let out = command.current_dir(dir).arg("locked").output();
+    fs::set_permissions(dir.join("locked"), fs::Permissions::from_mode(0o755)).unwrap();
+    let Ok(out) = out else {
+        eprintln!("skipped: running as root without runuser, a mode-000 directory is readable");
+        return;
+    };
+    let err = text(&out.stderr);
+    if !err.starts_with("minitri: ") {
+        eprintln!("skipped: the binary cannot be run as nobody here: {err}");
+        return;
+    }
+    assert_eq!(code(out.status), 1, "{err}");
+    assert!(
+        err.starts_with("minitri: locked: cannot read: Permission denied"),
+        "{err}"
+    );
+    assert!(!err.contains("cannot read: cannot read"), "{err}");
+}
+
+#[test]
+fn a_directory_that_refuses_the_temporary_file_is_named() {
+    use std::os::unix::fs::PermissionsExt;
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    fs::set_permissions(dir, fs::Permissions::from_mode(0o755)).unwrap();
+    fs::write(dir.join("a.wkt"), U_SHAPE).unwrap();
+    fs::set_permissions(dir.join("a.wkt"), fs::Permissions::from_mode(0o644)).unwrap();
+    fs::create_dir(dir.join("ro")).unwrap();
+    // The output file itself is writable by anyone; its directory is not.
+    fs::write(dir.join("ro/out.json"), "old").unwrap();
+    fs::set_permissions(dir.join("ro/out.json"), fs::Permissions::from_mode(0o666)).unwrap();
+    fs::set_permissions(dir.join("ro"), fs::Permissions::from_mode(0o555)).unwrap();
+    let mut command = if is_root(dir) {
+        let mut c = Command::new("runuser");
+        c.args(["-u", "nobody", "--", env!("CARGO_BIN_EXE_minitri")]);
+        c
+    } else {
+        bin()
+    };
+    let out = command
+        .current_dir(dir)
+        .args(["a.wkt", "-o", "ro/out.json"])
+        .output();
+    fs::set_permissions(dir.join("ro"), fs::Permissions::from_mode(0o755)).unwrap();
+    let Ok(out) = out else {
+        eprintln!("skipped: running as root without runuser, every directory is writable");
+        return;
+    };
+    let err = text(&out.stderr);
+    if !err.starts_with("minitri: ") {
+        eprintln!("skipped: the binary cannot be run as nobody here: {err}");
+        return;
+    }
+    assert_eq!(code(out.status), 1, "{err}");
+    assert!(
+        err.starts_with("minitri: cannot write ro/out.json: the directory ro refuses a new file (Permission denied (os error 13)): the output is written to a temporary file there first"),
+        "{err}"
+    );
+    assert_eq!(fs::read_to_string(dir.join("ro/out.json")).unwrap(), "old");
+}
+
+#[test]
+fn the_cap_on_vertices_counts_what_the_output_counts() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    // A closed ring of exactly 4 vertices (5 positions with the closing one), in each format.
+    fs::write(dir.join("sq.wkt"), "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0))").unwrap();
+    fs::write(dir.join("sq.txt"), "0 0\n4 0\n4 4\n0 4\n0 0\n").unwrap();
+    let square = r#"{"type":"Polygon","coordinates":[[[0,0],[4,0],[4,4],[0,4],[0,0]]]}"#;
+    fs::write(dir.join("sq.geojson"), square).unwrap();
+    fs::write(dir.join("sq.ndjson"), format!("{square}\n")).unwrap();
+    for file in ["sq.wkt", "sq.txt", "sq.geojson", "sq.ndjson"] {
+        let (code, out, err) = run_in(dir, &[file, "--max-vertices", "4"]);
+        assert_eq!(code, 0, "{file}: {err}");
+        assert!(out.contains("\"vertices\": 4,"), "{file}: {out}");
+        // One fewer is refused.
+        let (code, _, err) = run_in(dir, &[file, "--max-vertices", "3"]);
+        assert_eq!(code, 1, "{file}");
+        assert!(
+            err.contains("too many vertices: more than 3 in one"),
+            "{file}: {err}"
+        );
+    }
+    // With a hole: 4 + 3 vertices, the two closing positions not counted.
+    let holed = r#"{"type":"Polygon","coordinates":[[[0,0],[4,0],[4,4],[0,4],[0,0]],[[1,1],[1,2],[2,2],[1,1]]]}"#;
+    fs::write(dir.join("h.geojson"), holed).unwrap();
+    let (code, out, err) = run_in(dir, &["h.geojson", "--max-vertices", "7"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("\"vertices\": 7,"), "{out}");
+}
+
+#[test]
+fn closed_or_write_only_standard_input_is_named_as_such() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    fs::write(dir.join("a.wkt"), U_SHAPE).unwrap();
+    for (script, why) in [
+        ("\"$0\" <&-", "closed"),
+        ("\"$0\" - <&-", "closed"),
+        ("\"$0\" 0>w.txt", "open for writing only"),
+    ] {
+        let (code, out, err) = shell(dir, script);
+        assert_eq!(code, 1, "{script}: {err}");
+        let line = format!("minitri: -: standard input is {why}: nothing to read (name a file, or redirect one with <)\n");
+        assert_eq!(err, line, "{script}");
+        assert!(!out.contains("empty input"), "{out}");
+    }
+    // The other inputs of the run go on.
+    let (code, out, err) = shell(dir, "\"$0\" -q a.wkt - <&-");
+    assert_eq!(code, 1, "{err}");
+    assert!(out.contains("\"triangle_count\": 5"), "{out}");
+}
+
+#[test]
+fn no_repair_hint_when_repair_was_given() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    // Two identical holes: --repair does not mend them (their overlap is the whole ring).
+    let twin = "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (2 2, 8 2, 8 8, 2 8, 2 2), (2 2, 8 2, 8 8, 2 8, 2 2))";
+    fs::write(dir.join("twin.wkt"), twin).unwrap();
+    let (code, _, err) = run_in(dir, &["twin.wkt"]);
+    assert_eq!(code, 1);
+    assert!(
+        err.contains("; --repair merges rings sharing a stretch of edge"),
+        "{err}"
+    );
+    for args in [
+        &["twin.wkt", "--repair"][..],
+        &["twin.wkt", "--repair", "--to", "geojson"],
+        &["twin.wkt", "--repair", "--to", "svg"],
+    ] {
+        let (code, out, err) = run_in(dir, args);
+        assert_eq!(code, 1, "{args:?}");
+        assert!(!err.contains("; --repair"), "{args:?}: {err}");
+        assert!(!out.contains("; --repair"), "{args:?}: {out}");
+        assert!(
+            err.contains("at vertex 5 (8, 2) (not mended by --repair)"),
+            "{args:?}: {err}"
+        );
+    }
+    let (_, out, _) = run_in(dir, &["twin.wkt", "--repair"]);
+    assert!(out.contains("(not mended by --repair)"), "{out}");
+}
+
+#[test]
+fn repairs_are_listed_once_not_once_per_piece() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    // A chain of 200 diamonds, one ring touching itself at the 199 points between them.
+    let m = 200;
+    let mut points: Vec<(i64, i64)> = Vec::new();
+    for i in 0..m {
+        points.extend([(2 * i, 0), (2 * i + 1, 1)]);
+    }
+    points.push((2 * m, 0));
+    for i in (0..m).rev() {
+        points.push((2 * i + 1, -1));
+        if i > 0 {
+            points.push((2 * i, 0));
+        }
+    }
+    points.push((0, 0));
+    let ring: Vec<String> = points.iter().map(|(x, y)| format!("{x} {y}")).collect();
+    fs::write(
+        dir.join("chain.wkt"),
+        format!("POLYGON (({}))", ring.join(", ")),
+    )
+    .unwrap();
+    let (code, out, err) = run_in(dir, &["chain.wkt", "--repair", "-q"]);
+    assert_eq!(code, 0, "{err}");
+    let doc: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let polygons = doc["polygons"].as_array().unwrap();
+    assert_eq!(polygons.len(), 200);
+    assert_eq!(polygons[0]["repaired"].as_array().unwrap().len(), 199);
+    for piece in &polygons[1..] {
+        assert!(piece.get("repaired").is_none(), "{piece}");
+        assert_eq!(piece["repaired_in_piece"], 0);
+    }
+    // 199 repairs in all (199 x 200 when each piece carried the list).
+    assert_eq!(out.matches("\"split_ring\"").count(), 199);
+}
+
+#[test]
+fn a_feature_collection_on_one_line_of_geojson_lines_is_an_error_of_its_line() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    let feature = |id: &str, x: i64| {
+        format!(
+            r#"{{"type": "Feature", "id": "{id}", "properties": {{"k": "{id}"}}, "geometry": {{"type": "Polygon", "coordinates": [[[{x}, 0], [{}, 0], [{x}, 4], [{x}, 0]]]}}}}"#,
+            x + 4
+        )
+    };
+    let collection = format!(
+        r#"{{"type": "FeatureCollection", "features": [{}, {}]}}"#,
+        feature("a", 0),
+        feature("b", 10)
+    );
+    let lines = format!("{}\n{collection}\n{}\n", feature("x", 20), feature("y", 30));
+    fs::write(dir.join("f.ndjson"), &lines).unwrap();
+    let (code, out, err) = run_in(dir, &["f.ndjson", "--to", "geojsonl"]);
+    assert_eq!(code, 1, "{err}");
+    assert_eq!(
+        err,
+        "minitri: f.ndjson: line 2, column 1: a FeatureCollection on one line of GeoJSON Lines: its features would be merged into one record, their ids and properties lost; give one Feature per line\n"
+    );
+    // One record per line still; the lines around it keep their identity; no merged record.
+    let records: Vec<serde_json::Value> = out
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert_eq!(records.len(), 3, "{out}");
+    assert_eq!(records[0]["id"], "x");
+    assert_eq!(records[1]["geometry"], serde_json::Value::Null);
+    assert_eq!(records[2]["id"], "y");
+    // The same collection in a .geojson file keeps each feature.
+    fs::write(dir.join("c.geojson"), &collection).unwrap();
+    let (code, out, err) = run_in(dir, &["c.geojson", "--to", "geojsonl"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        out.contains(r#""id": "a""#) && out.contains(r#""id": "b""#),
+        "{out}"
+    );
+}
+
+#[test]
+fn coordinates_beyond_the_range_of_a_double_are_drawn_to_scale() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    // 4e400 rounds to infinity as a double, 4e-400 to 0: every point was drawn at one place
+    // (an empty picture, exit 0). The panel is scaled from the exact values now.
+    for (name, unit) in [("huge.wkt", "e400"), ("tiny.wkt", "e-400")] {
+        let square = format!("POLYGON ((0 0, 4{unit} 0, 4{unit} 4{unit}, 0 4{unit}, 0 0))");
+        fs::write(dir.join(name), square).unwrap();
+        let (code, out, err) = run_in(dir, &[name, "--to", "svg"]);
+        assert_eq!(code, 0, "{name}: {err}");
+        // The outline: the square's four corners, filling the 640-pixel panel within its margin.
+        assert!(
+            out.contains(r#"d="M52 636L636 636 636 52 52 52Z""#),
+            "{name}: {out}"
+        );
+    }
 }

@@ -3,28 +3,32 @@
 //!
 //! Guarantee: the target path holds either its previous content (or nothing) or the complete new
 //! output, never a truncated one, whatever happens to the process. A temporary file
-//! `.NAME.minitri-PID-K.tmp` lives beside the target while it is written; it is removed when the
-//! output is abandoned (an error, or [`AtomicFile`] dropped without [`AtomicFile::commit`]) and
-//! on an interruption ([`exit_removing_temporaries`], which the binary calls on SIGINT, SIGTERM
-//! and SIGHUP); only a process killed outright (SIGKILL, a crash) can leave one behind (a rename
-//! is atomic on POSIX file systems), and the next write into the same directory removes it (a
-//! temporary file of this form whose process is gone, [`remove_stale`]). The name is
-//! shortened to fit 255 bytes (`NAME` cut at a character boundary). A target that exists and is
-//! read-only is not replaced (an error: renaming over it would succeed on POSIX).
+//! `.NAME.minitri-PID-HOST-RANDOM.tmp` lives beside the target while it is written; it is
+//! removed when the output is abandoned (an error, or [`AtomicFile`] dropped without
+//! [`AtomicFile::commit`]) and on an interruption ([`exit_removing_temporaries`], which the
+//! binary calls on SIGINT, SIGTERM and SIGHUP); only a process killed outright (SIGKILL, a crash)
+//! can leave one behind (a rename is atomic on POSIX file systems), and a later write into the
+//! same directory removes it once it is proved stale ([`remove_stale`]). The name is shortened
+//! to fit 255 bytes (`NAME` cut at a character boundary). A target that exists and is read-only
+//! is not replaced (an error: renaming over it would succeed on POSIX).
+//!
+//! The temporary file is created with `O_CREAT | O_EXCL` (and `O_NOFOLLOW`) under a name with
+//! a random part (the `tempfile` crate), so that a link or a file planted at its path is never
+//! written through, and its name cannot be guessed in advance. Its writer holds an exclusive
+//! lock on it (`flock`) until it is renamed or removed. Replacing a file carries over its
+//! permission bits (and its owner and group where the process may set them), as `install` and
+//! editors do: a 0600 output stays 0600. A new file gets 0666 less the umask, as `File::create`.
 //!
 //! Two exceptions: a target that is a device or a pipe (`/dev/stdout`, a FIFO) is written
 //! directly, like standard output (there is no file to replace; renaming over it would replace
 //! the device node); a target that is a symbolic link has the file it points to replaced, the
 //! link itself stays.
 
-use std::fs::File;
+use std::fs::{File, OpenOptions};
 use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::{Mutex, MutexGuard};
-
-/// Distinguishes the temporary files of one process.
-static NEXT: AtomicUsize = AtomicUsize::new(0);
+use std::sync::{Mutex, MutexGuard, OnceLock};
+use std::time::Duration;
 
 /// The temporary files of this process not yet renamed or removed. Its lock is held across
 /// every rename and removal, so [`exit_removing_temporaries`] sees each file either still
@@ -62,11 +66,15 @@ pub struct AtomicFile {
     file: Option<BufWriter<File>>,
 }
 
+/// Random characters in a temporary file's name (62 possible each: about 60 bits).
+const RANDOM_CHARS: usize = 10;
+
 impl AtomicFile {
     /// Starts writing `target` (its directory must exist).
     ///
     /// # Errors
-    /// When the temporary file cannot be created.
+    /// When the temporary file cannot be created (the message names the directory that
+    /// refuses it), or its permissions cannot be set to the replaced file's.
     pub fn create(target: &Path) -> io::Result<AtomicFile> {
         // A device or a pipe (`/dev/stdout`, `/dev/null`, a FIFO) is written directly, as
         // standard output is: renaming a file over it would replace the device itself.
@@ -78,23 +86,16 @@ impl AtomicFile {
                 file: Some(BufWriter::new(file)),
             });
         }
-        // A symbolic link: the file it points to is replaced, and the link stays.
-        let resolved;
-        let target = if std::fs::symlink_metadata(target).is_ok_and(|m| m.is_symlink()) {
-            // (A dangling link: the file it names, relative to the link's directory.)
-            resolved = std::fs::canonicalize(target).or_else(|_| {
-                let named = std::fs::read_link(target)?;
-                Ok::<_, io::Error>(target.parent().unwrap_or(Path::new("")).join(named))
-            })?;
-            resolved.as_path()
-        } else {
-            target
-        };
+        let target = final_path(target)?;
         let dir = target
             .parent()
             .filter(|d| !d.as_os_str().is_empty())
             .unwrap_or(Path::new("."));
-        if std::fs::metadata(target).is_ok_and(|m| m.permissions().readonly()) {
+        let replaced = std::fs::metadata(&target).ok().filter(|m| m.is_file());
+        if replaced
+            .as_ref()
+            .is_some_and(|m| m.permissions().readonly())
+        {
             return Err(io::Error::new(
                 io::ErrorKind::PermissionDenied,
                 "the file is read-only; not replaced",
@@ -105,24 +106,60 @@ impl AtomicFile {
             .file_name()
             .map(|n| n.to_string_lossy().into_owned())
             .unwrap_or_default();
-        let k = NEXT.fetch_add(1, Ordering::Relaxed);
-        let temp = dir.join(temporary_name(&name, std::process::id(), k));
-        let file = {
+        let prefix = temporary_prefix(&name, std::process::id(), host_namespace());
+        let (file, temp) = {
             let mut live = live();
-            let file = File::create(&temp)?;
+            let made = tempfile::Builder::new()
+                .prefix(&prefix)
+                .suffix(".tmp")
+                .rand_bytes(RANDOM_CHARS)
+                .disable_cleanup(true)
+                .make_in(dir, create_new)
+                .map_err(|e| {
+                    let dir = dir.display();
+                    io::Error::new(
+                        e.kind(),
+                        format!("the directory {dir} refuses a new file ({e}): the output is written to a temporary file there first"),
+                    )
+                })?;
+            let (file, temp) = made.into_parts();
+            let temp = temp.to_path_buf();
             live.push(temp.clone());
-            file
+            (file, temp)
         };
-        Ok(AtomicFile {
-            target: target.to_path_buf(),
+        let mut atomic = AtomicFile {
+            target,
             temp,
-            file: Some(BufWriter::new(file)),
-        })
+            file: None,
+        };
+        // Held until the file is renamed or removed: proof that it is not stale (a lock that is
+        // not to be had, as on some network file systems, proves nothing either way).
+        let _ = file.try_lock();
+        if let Some(replaced) = &replaced {
+            carry_over(&file, replaced).map_err(|e| atomic.named(e))?;
+        }
+        atomic.file = Some(BufWriter::new(file));
+        Ok(atomic)
     }
 
     /// Is the target a device or a pipe, written directly (so nothing can be held back)?
     pub fn is_direct(&self) -> bool {
         self.temp.as_os_str().is_empty()
+    }
+
+    /// The file that [`AtomicFile::commit`] replaces: the target with the links of its last
+    /// component resolved.
+    pub fn target(&self) -> &Path {
+        &self.target
+    }
+
+    /// An error of the temporary file, naming it.
+    fn named(&self, e: io::Error) -> io::Error {
+        if self.is_direct() {
+            return e;
+        }
+        let temp = self.temp.display();
+        io::Error::new(e.kind(), format!("{e} (temporary file {temp}, removed)"))
     }
 
     /// Flushes, syncs and renames the temporary file over the target.
@@ -131,26 +168,71 @@ impl AtomicFile {
     /// Any I/O error; the temporary file is then removed and the target left as it was.
     pub fn commit(mut self) -> io::Result<()> {
         let file = self.file.take().ok_or_else(closed)?;
-        let file = file.into_inner().map_err(|e| e.into_error())?;
+        let file = file.into_inner().map_err(|e| self.named(e.into_error()))?;
         if self.is_direct() {
             return Ok(()); // a device or a pipe, written directly
         }
-        file.sync_all()?;
+        file.sync_all().map_err(|e| self.named(e))?;
         let mut live = live();
-        std::fs::rename(&self.temp, &self.target)?;
+        std::fs::rename(&self.temp, &self.target).map_err(|e| self.named(e))?;
         forget(&mut live, &self.temp);
         self.temp = PathBuf::new(); // nothing left to remove
         Ok(())
     }
 }
 
+/// The file a write to `target` replaces: a symbolic link as last component resolved (the file
+/// it points to is replaced and the link stays; a dangling link: the file it names, relative
+/// to the link's directory).
+fn final_path(target: &Path) -> io::Result<PathBuf> {
+    if !std::fs::symlink_metadata(target).is_ok_and(|m| m.is_symlink()) {
+        return Ok(target.to_path_buf());
+    }
+    std::fs::canonicalize(target).or_else(|_| {
+        let named = std::fs::read_link(target)?;
+        Ok(target.parent().unwrap_or(Path::new("")).join(named))
+    })
+}
+
+/// Creates `path` new, never through a link or over a file already there (`O_CREAT | O_EXCL`,
+/// and `O_NOFOLLOW`), with mode 0666 less the umask (as `File::create`).
+fn create_new(path: &Path) -> io::Result<File> {
+    let mut options = OpenOptions::new();
+    options.write(true).create_new(true);
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::OpenOptionsExt;
+        options.mode(0o666).custom_flags(libc::O_NOFOLLOW);
+    }
+    options.open(path)
+}
+
+/// Gives the new file `file` the permissions (and, where permitted, the owner and group) of
+/// `replaced`, the file it is to replace. The owner first: changing it may clear set-id bits.
+fn carry_over(file: &File, replaced: &std::fs::Metadata) -> io::Result<()> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::{MetadataExt, PermissionsExt};
+        // Refused unless the process may (root, or a group it belongs to): then the new file
+        // keeps the writer's owner, as a file written anew would.
+        let _ = std::os::unix::fs::fchown(file, Some(replaced.uid()), Some(replaced.gid()));
+        let mode = replaced.mode() & 0o7777;
+        file.set_permissions(std::fs::Permissions::from_mode(mode))
+    }
+    #[cfg(not(unix))]
+    {
+        file.set_permissions(replaced.permissions())
+    }
+}
+
 /// The longest file name most file systems take, in bytes.
 const NAME_MAX: usize = 255;
 
-/// `.NAME.minitri-PID-K.tmp`, `NAME` shortened (at a character boundary) to fit [`NAME_MAX`].
-fn temporary_name(name: &str, pid: u32, k: usize) -> String {
-    let tail = format!(".minitri-{pid}-{k}.tmp");
-    let room = NAME_MAX - 1 - tail.len();
+/// `.NAME.minitri-PID-HOST-` (the random part and `.tmp` follow), `NAME` shortened (at a
+/// character boundary) so that the whole name fits [`NAME_MAX`].
+fn temporary_prefix(name: &str, pid: u32, host: &str) -> String {
+    let tail = format!(".minitri-{pid}-{host}-");
+    let room = NAME_MAX - 1 - tail.len() - RANDOM_CHARS - ".tmp".len();
     let mut cut = name.len().min(room);
     while !name.is_char_boundary(cut) {
         cut -= 1;
@@ -158,31 +240,82 @@ fn temporary_name(name: &str, pid: u32, k: usize) -> String {
     format!(".{}{tail}", &name[..cut])
 }
 
-/// The process that made a temporary file of this module's form, if the name is one.
-fn temporary_owner(name: &str) -> Option<u32> {
-    let rest = name.strip_prefix('.')?.strip_suffix(".tmp")?;
-    let (_, numbers) = rest.rsplit_once(".minitri-")?;
-    let (pid, k) = numbers.split_once('-')?;
-    k.parse::<usize>().ok()?;
-    pid.parse().ok()
+/// Who made a temporary file of this module's form.
+#[derive(Debug, PartialEq, Eq)]
+struct Owner {
+    pid: u32,
+    /// Its host and process namespace ([`host_namespace`]), `None` for the older form
+    /// `.NAME.minitri-PID-K.tmp`, which did not say.
+    host: Option<String>,
 }
 
-/// Is process `pid` still running? (Linux: its `/proc` entry; elsewhere assumed running unless
-/// the file is more than a day old, see [`remove_stale`].)
-fn running(pid: u32) -> Option<bool> {
-    if cfg!(target_os = "linux") {
-        Some(Path::new("/proc").join(pid.to_string()).exists())
-    } else {
-        None
+/// The process that made a temporary file of this module's form, if the name is one.
+fn temporary_owner(name: &str) -> Option<Owner> {
+    let rest = name.strip_prefix('.')?.strip_suffix(".tmp")?;
+    let (_, numbers) = rest.rsplit_once(".minitri-")?;
+    let mut fields = numbers.split('-');
+    let pid = fields.next()?.parse().ok()?;
+    let (a, b, none) = (fields.next()?, fields.next(), fields.next());
+    match (b, none) {
+        (None, _) => {
+            a.parse::<usize>().ok()?;
+            Some(Owner { pid, host: None })
+        }
+        (Some(random), None) if random.chars().all(|c| c.is_ascii_alphanumeric()) => Some(Owner {
+            pid,
+            host: Some(a.to_string()),
+        }),
+        _ => None,
     }
 }
+
+/// Sixteen hex digits naming this machine's boot and this process's PID namespace (Linux:
+/// `/proc/sys/kernel/random/boot_id` and `/proc/self/ns/pid`), or `x` where they cannot be
+/// known: two processes with the same value see the same process IDs, so one can tell whether
+/// the other is still running.
+fn host_namespace() -> &'static str {
+    static HOST: OnceLock<String> = OnceLock::new();
+    HOST.get_or_init(|| {
+        let boot = std::fs::read_to_string("/proc/sys/kernel/random/boot_id");
+        let namespace = std::fs::read_link("/proc/self/ns/pid");
+        match (boot, namespace) {
+            (Ok(boot), Ok(namespace)) if cfg!(target_os = "linux") => {
+                // FNV-1a, 64 bits: a fingerprint, not a secret.
+                let mut hash: u64 = 0xcbf2_9ce4_8422_2325;
+                let text = format!("{}\n{}", boot.trim(), namespace.display());
+                for byte in text.bytes() {
+                    hash = (hash ^ u64::from(byte)).wrapping_mul(0x0100_0000_01b3);
+                }
+                format!("{hash:016x}")
+            }
+            _ => "x".to_string(),
+        }
+    })
+}
+
+/// Is process `pid` (of this PID namespace) running? Its `/proc` entry exists. Asked only when
+/// [`host_namespace`] is known, that is when `/proc/self` is this process, so that `/proc` shows
+/// this PID namespace.
+fn running(pid: u32) -> bool {
+    pid == 0 || Path::new("/proc").join(pid.to_string()).exists()
+}
+
+/// How old a temporary file of another host or process namespace (or of the older form) must
+/// be before it may be removed, besides its lock being free: the lock proves that no process
+/// holds the file open any more, the age that its maker is past creating it (and allows for
+/// clocks of network file systems that differ by minutes).
+pub const STALE_AGE: Duration = Duration::from_secs(3600);
 
 /// Directories already cleaned by this process.
 static CLEANED: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
 
 /// Removes, once per directory and process, the temporary files left in `dir` by a process
-/// killed outright: names of the form `.NAME.minitri-PID-K.tmp` whose process is gone (on
-/// Linux; elsewhere, those more than a day old). Errors are ignored: cleaning is a courtesy.
+/// killed outright, those (and only those) that can be proved stale: a name of the form
+/// `.NAME.minitri-PID-HOST-RANDOM.tmp`, a regular file (never a link), whose lock is free
+/// (its writer holds it while it lives), and either made on this host and in this PID
+/// namespace by a process that is gone, or older than [`STALE_AGE`] (another container or
+/// machine sharing the directory, whose process IDs mean nothing here). Errors are ignored:
+/// cleaning is a courtesy.
 pub fn remove_stale(dir: &Path) {
     let key = std::path::absolute(dir).unwrap_or_else(|_| dir.to_path_buf());
     {
@@ -197,23 +330,52 @@ pub fn remove_stale(dir: &Path) {
     let Ok(entries) = std::fs::read_dir(dir) else {
         return;
     };
-    let me = std::process::id();
     for entry in entries.flatten() {
         let name = entry.file_name();
-        let Some(pid) = name.to_str().and_then(temporary_owner) else {
+        let Some(owner) = name.to_str().and_then(temporary_owner) else {
             continue;
         };
-        let stale = pid != me
-            && match running(pid) {
-                Some(alive) => !alive,
-                None => entry
-                    .metadata()
-                    .and_then(|m| m.modified())
-                    .is_ok_and(|t| t.elapsed().is_ok_and(|a| a.as_secs() > 86_400)),
-            };
-        if stale && entry.file_type().is_ok_and(|t| t.is_file()) {
+        if is_stale(&entry.path(), &owner) {
             let _ = std::fs::remove_file(entry.path());
         }
+    }
+}
+
+/// Can the temporary file at `path`, made by `owner`, be proved stale (see [`remove_stale`])?
+fn is_stale(path: &Path, owner: &Owner) -> bool {
+    let here = host_namespace();
+    let ours = here != "x" && owner.host.as_deref() == Some(here);
+    if ours && owner.pid == std::process::id() {
+        return false; // this process's own
+    }
+    let Ok(meta) = std::fs::symlink_metadata(path) else {
+        return false;
+    };
+    if !meta.is_file() {
+        return false;
+    }
+    let gone = ours && !running(owner.pid);
+    let old = meta
+        .modified()
+        .is_ok_and(|t| t.elapsed().is_ok_and(|age| age > STALE_AGE));
+    if !gone && !old {
+        return false;
+    }
+    let mut options = OpenOptions::new();
+    options.write(true);
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::OpenOptionsExt;
+        options.custom_flags(libc::O_NOFOLLOW | libc::O_NONBLOCK);
+    }
+    let Ok(file) = options.open(path) else {
+        return false;
+    };
+    match file.try_lock() {
+        Ok(()) => true, // no process holds it: kept locked (open) while it is removed
+        Err(std::fs::TryLockError::WouldBlock) => false,
+        // Locks not to be had here: the process gone is proof enough, age alone is not.
+        Err(std::fs::TryLockError::Error(_)) => gone,
     }
 }
 
@@ -223,11 +385,13 @@ fn closed() -> io::Error {
 
 impl Write for AtomicFile {
     fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
-        self.file.as_mut().ok_or_else(closed)?.write(buf)
+        let written = self.file.as_mut().ok_or_else(closed)?.write(buf);
+        written.map_err(|e| self.named(e))
     }
 
     fn flush(&mut self) -> io::Result<()> {
-        self.file.as_mut().ok_or_else(closed)?.flush()
+        let flushed = self.file.as_mut().ok_or_else(closed)?.flush();
+        flushed.map_err(|e| self.named(e))
     }
 }
 
@@ -303,12 +467,116 @@ mod tests {
     #[test]
     fn temporary_names_fit_255_bytes_and_are_recognised() {
         let long = "é".repeat(126) + ".json"; // 257 bytes
-        let name = temporary_name(&long, 4_000_000, 12);
+        let host = "0123456789abcdef";
+        let name = temporary_prefix(&long, 4_000_000, host) + "AbCdE12345.tmp";
         assert!(name.len() <= 255, "{}", name.len());
-        assert_eq!(temporary_owner(&name), Some(4_000_000));
-        assert_eq!(temporary_owner(".a.json.minitri-12-3.tmp"), Some(12));
+        let owner = temporary_owner(&name).unwrap();
+        assert_eq!((owner.pid, owner.host.as_deref()), (4_000_000, Some(host)));
+        // The older form, which did not name its host.
+        let old = Owner {
+            pid: 12,
+            host: None,
+        };
+        assert_eq!(temporary_owner(".a.json.minitri-12-3.tmp"), Some(old));
         assert_eq!(temporary_owner("a.json"), None);
         assert_eq!(temporary_owner(".a.minitri-x-3.tmp"), None);
+        assert_eq!(temporary_owner(".a.minitri-1-x-a.b.tmp"), None);
+    }
+
+    #[test]
+    fn a_replaced_file_keeps_its_mode_and_a_new_one_gets_the_default() {
+        use std::os::unix::fs::PermissionsExt;
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("secret.json");
+        std::fs::write(&path, "old").unwrap();
+        std::fs::set_permissions(&path, std::fs::Permissions::from_mode(0o600)).unwrap();
+        write_atomically(&path, |out| out.write_all(b"new")).unwrap();
+        let mode = std::fs::metadata(&path).unwrap().permissions().mode() & 0o7777;
+        assert_eq!(mode, 0o600);
+        assert_eq!(std::fs::read_to_string(&path).unwrap(), "new");
+        // A new file: 0666 less the umask, like File::create (not tempfile's 0600).
+        let plain = dir.path().join("plain");
+        File::create(&plain).unwrap();
+        let new = dir.path().join("new.json");
+        write_atomically(&new, |out| out.write_all(b"x")).unwrap();
+        let mode = |p: &Path| std::fs::metadata(p).unwrap().permissions().mode() & 0o7777;
+        assert_eq!(mode(&new), mode(&plain));
+    }
+
+    #[test]
+    fn a_link_planted_at_a_temporary_path_is_never_followed() {
+        let dir = tempfile::tempdir().unwrap();
+        let victim = dir.path().join("victim");
+        std::fs::write(&victim, "precious").unwrap();
+        // Every name the old scheme would have used for this process's first outputs.
+        for k in 0..4 {
+            let name = format!(".out.json.minitri-{}-{k}.tmp", std::process::id());
+            symlink(&victim, dir.path().join(name)).unwrap();
+        }
+        let out = dir.path().join("out.json");
+        write_atomically(&out, |o| o.write_all(b"result")).unwrap();
+        assert_eq!(std::fs::read_to_string(&victim).unwrap(), "precious");
+        assert_eq!(std::fs::read_to_string(&out).unwrap(), "result");
+        // create_new refuses a link, dangling or not.
+        let planted = dir.path().join("planted");
+        symlink(dir.path().join("nowhere"), &planted).unwrap();
+        assert_eq!(
+            create_new(&planted).unwrap_err().kind(),
+            io::ErrorKind::AlreadyExists
+        );
+        assert!(!dir.path().join("nowhere").exists());
+    }
+
+    #[test]
+    fn only_provably_stale_temporaries_are_removed() {
+        let dir = tempfile::tempdir().unwrap();
+        let here = host_namespace();
+        // A live writer of this namespace (this very process's parent, which runs): kept.
+        let parent = std::os::unix::process::parent_id();
+        let live = dir
+            .path()
+            .join(format!(".a.minitri-{parent}-{here}-aaaaaaaaaa.tmp"));
+        // Another namespace or host, process ID meaningless here, new: kept.
+        let elsewhere = dir
+            .path()
+            .join(".b.minitri-1-fedcba9876543210-bbbbbbbbbb.tmp");
+        // This namespace, a process ID that cannot run (above the kernel's maximum): removed.
+        let gone = dir
+            .path()
+            .join(format!(".c.minitri-2147483646-{here}-cccccccccc.tmp"));
+        // The same but locked by a live writer (this process holds the lock): kept.
+        let locked = dir
+            .path()
+            .join(format!(".d.minitri-2147483645-{here}-dddddddddd.tmp"));
+        for path in [&live, &elsewhere, &gone, &locked] {
+            std::fs::write(path, "x").unwrap();
+        }
+        let holder = File::open(&locked).unwrap();
+        holder.try_lock().unwrap();
+        remove_stale(dir.path());
+        assert!(live.exists() && elsewhere.exists() && locked.exists());
+        if here != "x" {
+            assert!(
+                !gone.exists(),
+                "a temporary of a process gone here is removed"
+            );
+        }
+        drop(holder);
+        // An old one of another namespace whose lock is free: removed.
+        let other = tempfile::tempdir().unwrap();
+        let old = other
+            .path()
+            .join(".e.minitri-1-fedcba9876543210-eeeeeeeeee.tmp");
+        std::fs::write(&old, "x").unwrap();
+        let long_ago = std::time::SystemTime::now() - STALE_AGE - Duration::from_secs(60);
+        File::options()
+            .write(true)
+            .open(&old)
+            .unwrap()
+            .set_modified(long_ago)
+            .unwrap();
+        remove_stale(other.path());
+        assert!(!old.exists());
     }
 
     #[test]

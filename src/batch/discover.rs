@@ -23,6 +23,10 @@ pub struct Input {
     /// The path relative to the directory input it was found in, or its file name when it was
     /// given directly.
     pub relative: PathBuf,
+    /// Found by walking a directory (a regular file then), not named: opened, it must still be
+    /// a regular file (one replaced by a FIFO since would block the run), see
+    /// [`Input::open`].
+    pub walked: bool,
 }
 
 impl Input {
@@ -35,7 +39,55 @@ impl Input {
     pub fn is_stdin(&self) -> bool {
         self.path == Path::new("-")
     }
+
+    /// Opens the file for reading, never blocking on it when it was found by a walk: it is
+    /// opened with `O_NONBLOCK`, its type checked on the open descriptor (`fstat`), and the flag
+    /// cleared. A walked input that is no longer a regular file (replaced by a FIFO after the
+    /// walk, whose `open` would wait for a writer forever) is an error naming what it is. A
+    /// named input is opened as it is (a FIFO named is read).
+    ///
+    /// # Errors
+    /// The file cannot be opened, or a walked one is not a regular file any more (the message
+    /// is the whole reason).
+    pub fn open(&self) -> std::io::Result<fs::File> {
+        if !self.walked {
+            return fs::File::open(&self.path);
+        }
+        let mut options = fs::OpenOptions::new();
+        options.read(true);
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::OpenOptionsExt;
+            options.custom_flags(libc::O_NONBLOCK);
+        }
+        let file = options.open(&self.path)?;
+        let kind = file.metadata()?.file_type();
+        if !kind.is_file() {
+            let what = special_kind(&kind);
+            return Err(std::io::Error::other(NotRegular(format!(
+                "skipped: {what}, not a regular file (it was replaced after the directory was read; name it to read it)"
+            ))));
+        }
+        #[cfg(unix)]
+        {
+            let flags = rustix::fs::fcntl_getfl(&file)?;
+            rustix::fs::fcntl_setfl(&file, flags - rustix::fs::OFlags::NONBLOCK)?;
+        }
+        Ok(file)
+    }
 }
+
+/// Why a walked input was not read: it is no longer a regular file (the whole message).
+#[derive(Debug)]
+pub struct NotRegular(pub String);
+
+impl std::fmt::Display for NotRegular {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for NotRegular {}
 
 /// An input (a directory) that could not be read, and why.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -100,6 +152,7 @@ pub fn discover_counting(
                     Input {
                         path: file,
                         relative,
+                        walked: true,
                     }
                 })
             }));
@@ -108,6 +161,7 @@ pub fn discover_counting(
             out.push(Ok(Input {
                 path: path.clone(),
                 relative,
+                walked: false,
             }));
         }
     }

@@ -7,6 +7,33 @@
 
 use std::path::{Path, PathBuf};
 
+/// The identity of an existing file: its device and inode numbers (following links), or where
+/// the platform has none, its canonical path.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct FileId(#[cfg(unix)] (u64, u64), #[cfg(not(unix))] PathBuf);
+
+/// The identity of the file `path` names, following links, if it exists.
+pub fn file_id(path: &Path) -> Option<FileId> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        std::fs::metadata(path)
+            .ok()
+            .map(|m| FileId((m.dev(), m.ino())))
+    }
+    #[cfg(not(unix))]
+    {
+        std::fs::canonicalize(path).ok().map(FileId)
+    }
+}
+
+/// The identity of a file from its metadata (an open descriptor's `fstat`).
+#[cfg(unix)]
+pub fn file_id_of(meta: &std::fs::Metadata) -> FileId {
+    use std::os::unix::fs::MetadataExt;
+    FileId((meta.dev(), meta.ino()))
+}
+
 /// Do `a` and `b` name the same existing file or directory?
 pub fn same_file(a: &Path, b: &Path) -> bool {
     #[cfg(unix)]

@@ -21,7 +21,9 @@ mod tally;
 
 pub use atomic::{exit_removing_temporaries, write_atomically, AtomicFile};
 pub use discover::{discover, discover_counting, Input, Unreadable, EXTENSIONS};
-pub use guard::{input_that_is, same_file};
+#[cfg(unix)]
+pub use guard::file_id_of;
+pub use guard::{file_id, input_that_is, same_file, FileId};
 pub use plan::plan;
 pub use run::{run_document, run_tree, DocumentReport, Observer, Settings, Silent, TreeJob};
 pub use tally::{Summary, Tally};

@@ -22,7 +22,7 @@ use std::path::{Path, PathBuf};
 /// ```
 /// use minitri::batch::{plan, Input};
 /// use std::path::PathBuf;
-/// let input = |p: &str, r: &str| Input { path: p.into(), relative: r.into() };
+/// let input = |p: &str, r: &str| Input { path: p.into(), relative: r.into(), walked: true };
 /// let inputs = [input("in/a.wkt", "a.wkt"), input("in/a.geojson", "a.geojson"), input("in/d/b.txt", "d/b.txt")];
 /// let outputs = plan(&inputs, "out".as_ref(), "json");
 /// assert_eq!(outputs[0], Ok(PathBuf::from("out/a.wkt.json")));
@@ -90,6 +90,7 @@ mod tests {
         Input {
             path: path.into(),
             relative: relative.into(),
+            walked: true,
         }
     }
 

@@ -13,7 +13,8 @@
 //!   written atomically ([`AtomicFile`]); messages reported in input order.
 
 use super::atomic::AtomicFile;
-use super::discover::{Input, Unreadable};
+use super::discover::{Input, NotRegular, Unreadable};
+use super::guard::{file_id, FileId};
 use super::tally::Tally;
 use crate::feature::{Feature, Geometry, Identity};
 use crate::io::read::geojson::JSON_WHITESPACE;
@@ -22,7 +23,7 @@ use crate::io::read::{self, detect_start, Format, ParseError, RawPolygon};
 use crate::io::write::{OutputFormat, Renderer, Sink};
 use crate::pipeline::{process_raw, unreadable, Error, Options, Outcome};
 use rayon::prelude::*;
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, HashMap};
 use std::io::{self, BufRead, BufReader, Read};
 use std::path::PathBuf;
 use std::sync::{Arc, Mutex};
@@ -132,7 +133,7 @@ pub fn run_document(
                 Err(e) => {
                     chunker.push(Item::Failed(Box::new(unreadable(
                         &e.name,
-                        Error::Read(e.message.clone()),
+                        Error::NotRead(e.message.clone()),
                     ))))?;
                     false
                 }
@@ -183,13 +184,20 @@ pub fn run_tree(
     format: OutputFormat,
     observer: &dyn Observer,
 ) -> Tally {
+    // Every input file by identity: an output that is one of them, whatever the links of the
+    // output tree, is refused (renaming over it would replace the input).
+    let inputs: HashMap<FileId, &Input> = jobs
+        .iter()
+        .filter_map(|job| job.input.as_ref().ok())
+        .filter_map(|input| Some((file_id(&input.path)?, input)))
+        .collect();
     let order = Mutex::new(Reorder {
         next: 0,
         waiting: BTreeMap::new(),
         tally: Tally::default(),
     });
     jobs.par_iter().enumerate().for_each(|(k, job)| {
-        let report = run_file(job, settings, format, observer);
+        let report = run_file(job, &inputs, settings, format, observer);
         observer.input_finished();
         let mut order = order
             .lock()
@@ -227,6 +235,7 @@ struct FileReport {
 /// One input of a tree run, into its own output file.
 fn run_file(
     job: &TreeJob,
+    inputs: &HashMap<FileId, &Input>,
     settings: &Settings,
     format: OutputFormat,
     observer: &dyn Observer,
@@ -257,6 +266,21 @@ fn run_file(
         }
     };
     let cannot_write = |e: io::Error| format!("cannot write {}: {e}", target.display());
+    // The file the output would replace, with every link resolved (a link in the output tree,
+    // to a file or to a directory, can lead into the input tree).
+    let overwritten = |target: &std::path::Path| {
+        let other = inputs.get(&file_id(target)?)?;
+        Some(format!(
+            "{}: not processed: its output {} is the input {} (the same file, through a link); it would be overwritten",
+            input.name(),
+            target.display(),
+            other.name()
+        ))
+    };
+    if let Some(line) = overwritten(target) {
+        fail(&mut report, line);
+        return report;
+    }
     if let Some(dir) = target.parent().filter(|d| !d.as_os_str().is_empty()) {
         if let Err(e) = std::fs::create_dir_all(dir) {
             fail(
@@ -292,7 +316,10 @@ fn run_file(
     })();
     match written {
         Ok(true) if report.tally.solved > 0 => {
-            if let Err(e) = file.commit() {
+            // Again just before the rename: a link may have been planted while it was written.
+            if let Some(line) = overwritten(target) {
+                fail(&mut report, line);
+            } else if let Err(e) = file.commit() {
                 fail(&mut report, cannot_write(e));
             }
         }
@@ -518,8 +545,12 @@ fn read_input(input: &Input, settings: &Settings, chunker: &mut Chunker) -> io::
     let reader: Box<dyn Read> = if input.is_stdin() {
         Box::new(io::stdin())
     } else {
-        match std::fs::File::open(&input.path) {
+        match input.open() {
             Ok(file) => Box::new(file),
+            // A walked input that is no longer a regular file: the message says it all.
+            Err(e) if e.get_ref().is_some_and(|e| e.is::<NotRegular>()) => {
+                return failed(chunker, Error::NotRead(e.to_string()))
+            }
             Err(e) => return failed(chunker, Error::Read(e.to_string())),
         }
     };

@@ -220,6 +220,24 @@ impl Decimal {
         }
     }
 
+    /// `floor(log10(|self|))`, exactly; `i32::MIN` for zero.
+    pub(crate) fn magnitude(&self) -> i32 {
+        if self.mantissa == 0 {
+            return i32::MIN;
+        }
+        self.exponent + self.mantissa.ilog10() as i32
+    }
+
+    /// The nearest `f64` to `self / 10^shift` (for drawing only): finite for any decimal when
+    /// `shift` is near its [`Decimal::magnitude`].
+    pub(crate) fn shifted_f64(&self, shift: i32) -> f64 {
+        let sign = if self.negative { "-" } else { "" };
+        let exponent = i64::from(self.exponent) - i64::from(shift);
+        format!("{sign}{}e{exponent}", self.mantissa)
+            .parse()
+            .unwrap_or(0.0)
+    }
+
     /// The nearest `f64` (for drawing only, never for decisions).
     pub fn to_f64(&self) -> f64 {
         // Formatting then parsing gives the correctly rounded value.

@@ -75,8 +75,21 @@ pub trait Coord: Copy + Eq + Ord + Hash + fmt::Debug + Send + Sync + 'static {
     /// heuristics only).
     fn offset_f64(self, origin: Self) -> [f64; 2];
     /// This point on a grid for drawing only: for [`Point`] itself; for the wide kernel
-    /// `(self - origin) * scale` rounded (see [`crate::geom::polygon::Polygon::drawing_point`]).
-    fn drawing_point(self, origin: Self, scale: f64) -> Point;
+    /// `(self - origin) * scale` rounded, in units of `10^shift` input units (see
+    /// [`crate::geom::polygon::Polygon::drawing_point`]).
+    fn drawing_point(self, origin: Self, scale: f64, shift: i32) -> Point;
+    /// The decimal order of magnitude of the larger coordinate, from the exact value
+    /// (`floor(log10(max(|x|, |y|)))`; `i32::MIN` for the origin; 0 for the fast grid, whose
+    /// offsets always fit `f64`).
+    fn magnitude(self) -> i32 {
+        0
+    }
+    /// [`Coord::offset_f64`] in units of `10^shift` input units, computed from the exact values:
+    /// finite even where the coordinates themselves are beyond the range of `f64`.
+    fn offset_f64_shifted(self, origin: Self, shift: i32) -> [f64; 2] {
+        let _ = shift;
+        self.offset_f64(origin)
+    }
     /// APPROXIMATELY the in-circle determinant of [`incircle_approx`].
     fn incircle_approx(a: Self, b: Self, c: Self, d: Self) -> f64;
     /// Coordinate `axis` (0 = x, 1 = y) in input coordinates, exactly, as text.
@@ -213,7 +226,7 @@ impl Coord for Point {
         [(self.x - origin.x) as f64, (self.y - origin.y) as f64]
     }
 
-    fn drawing_point(self, _origin: Point, _scale: f64) -> Point {
+    fn drawing_point(self, _origin: Point, _scale: f64, _shift: i32) -> Point {
         self
     }
 

@@ -284,11 +284,11 @@ impl AnyPolygon {
         match self {
             AnyPolygon::Fast(p) => Cow::Borrowed(p),
             AnyPolygon::Wide(p) => {
-                let (origin, scale) = p.drawing_frame();
+                let (origin, scale, shift) = p.drawing_frame();
                 let points = p
                     .points
                     .iter()
-                    .map(|&q| q.drawing_point(origin, scale))
+                    .map(|&q| q.drawing_point(origin, scale, shift))
                     .collect();
                 Cow::Owned(Polygon {
                     points,
@@ -729,12 +729,21 @@ impl<P: Coord> Polygon<P> {
     /// itself; for a wide polygon, its offset from the bounding box's lower left corner scaled so
     /// that the larger side spans `2^40` units (SVG panels and the checker's faults).
     pub fn drawing_point(&self, p: P) -> Point {
-        let (origin, scale) = self.drawing_frame();
-        p.drawing_point(origin, scale)
+        let (origin, scale, shift) = self.drawing_frame();
+        p.drawing_point(origin, scale, shift)
     }
 
-    /// The lower left corner of the bounding box and the scale of [`Polygon::drawing_point`].
-    fn drawing_frame(&self) -> (P, f64) {
+    /// The lower left corner of the bounding box, the scale of [`Polygon::drawing_point`], and
+    /// the power of ten of its unit: 0, unless the coordinates are beyond the range where `f64`
+    /// holds them and their differences (magnitudes past 10^±300, such as `4e400`, which
+    /// rounds to infinity: every point was drawn at one place), then the largest magnitude,
+    /// found from the exact values.
+    fn drawing_frame(&self) -> (P, f64, i32) {
+        let magnitude = self.points.iter().map(|&q| q.magnitude()).max();
+        let shift = match magnitude {
+            Some(m) if m != i32::MIN && !(-300..=300).contains(&m) => m,
+            _ => 0,
+        };
         let first = self.points[0];
         let (mut lo, mut hi) = ([first; 2], [first; 2]);
         for &q in &self.points {
@@ -749,7 +758,7 @@ impl<P: Coord> Polygon<P> {
             }
         }
         let (lo, hi) = (P::corner(lo[0], lo[1]), P::corner(hi[0], hi[1]));
-        let [w, h] = hi.offset_f64(lo);
+        let [w, h] = hi.offset_f64_shifted(lo, shift);
         let span = w.max(h);
         (
             lo,
@@ -758,6 +767,7 @@ impl<P: Coord> Polygon<P> {
             } else {
                 1.0
             },
+            shift,
         )
     }
 

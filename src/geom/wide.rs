@@ -428,9 +428,10 @@ impl Coord for WidePoint {
         ]
     }
 
-    fn drawing_point(self, origin: WidePoint, scale: f64) -> Point {
+    fn drawing_point(self, origin: WidePoint, scale: f64, shift: i32) -> Point {
         // Rounded and clamped into the fast grid's range (`as` saturates; NaN becomes 0).
-        let [x, y] = self.offset_f64(origin).map(|v| (v * scale).round() as i64);
+        let offset = self.offset_f64_shifted(origin, shift);
+        let [x, y] = offset.map(|v| (v * scale).round() as i64);
         Point::new(x.clamp(0, MAX_COORD), y.clamp(0, MAX_COORD))
     }
 
@@ -440,6 +441,20 @@ impl Coord for WidePoint {
         (ax * ax + ay * ay) * (bx * cy - cx * by)
             + (bx * bx + by * by) * (cx * ay - ax * cy)
             + (cx * cx + cy * cy) * (ax * by - bx * ay)
+    }
+
+    fn magnitude(self) -> i32 {
+        self.x.magnitude().max(self.y.magnitude())
+    }
+
+    fn offset_f64_shifted(self, origin: WidePoint, shift: i32) -> [f64; 2] {
+        if shift == 0 {
+            return self.offset_f64(origin);
+        }
+        [
+            self.x.shifted_f64(shift) - origin.x.shifted_f64(shift),
+            self.y.shifted_f64(shift) - origin.y.shifted_f64(shift),
+        ]
     }
 
     fn format(self, _grid: &Grid, axis: usize) -> String {

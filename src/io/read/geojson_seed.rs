@@ -179,15 +179,23 @@ impl Vertices {
         }
     }
 
+    /// A ring ended with its closing position, dropped: it is not counted.
+    fn give_back(&self) {
+        self.read.set(self.read.get().saturating_sub(1));
+    }
+
     /// The next feature starts: its positions are counted from 0.
     pub(super) fn reset(&self) {
         self.read.set(0);
     }
 
-    /// Counts one more position; the failure when it is one too many.
-    fn take(&self) -> Result<(), Failure> {
+    /// Counts one more position; the failure when it is one too many. A position that repeats
+    /// its ring's first (`closing`) may be the ring's closing one, which the polygon does not
+    /// count ([`Vertices::give_back`] once the ring ends with it): it may be one past the cap,
+    /// and any position after it in the ring is then too many.
+    fn take(&self, closing: bool) -> Result<(), Failure> {
         let read = self.read.get();
-        if read >= self.max {
+        if read > self.max || (read == self.max && !closing) {
             let message = too_many_vertices(self.max, "one feature");
             return Err(Failure::new(message));
         }
@@ -846,7 +854,10 @@ impl Level for RingLevel<'_> {
         let mut ring = Vec::new();
         while let Some(position) = seq.next_element_seed(LevelSeed(PositionLevel))? {
             // One position too many for the feature: the ring is dropped, the rest not kept.
-            let position = position.and_then(|p| self.0.take().map(|()| p));
+            let position = position.and_then(|p| {
+                let closing = ring.first() == Some(&p);
+                self.0.take(closing).map(|()| p)
+            });
             match position {
                 // Memory refused is this polygon's failure (reading goes on), not an abort.
                 Ok(_) if ring.try_reserve(1).is_err() => {
@@ -868,7 +879,9 @@ impl Level for RingLevel<'_> {
         if ring.is_empty() {
             return Ok(Err(Failure::new("empty ring: expected positions [x, y]")));
         }
-        drop_closing_vertex(&mut ring);
+        if drop_closing_vertex(&mut ring) {
+            self.0.give_back(); // the closing position, not a vertex of the polygon
+        }
         ring.shrink_to_fit();
         Ok(Ok(ring))
     }

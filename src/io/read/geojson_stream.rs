@@ -350,9 +350,17 @@ pub fn read_line_feature_within(
         Ok(node) => node,
         Err(e) => return (None, Err(e)),
     };
+    let column = line.chars().count() - body.chars().count() + 1;
+    // A FeatureCollection is one record of the line: its features would be merged into one,
+    // their ids and properties lost. Refused, as a line of its own (the others go on).
+    if matches!(&node, Node::Object(object) if object.kind() == Some("FeatureCollection")) {
+        let message = "a FeatureCollection on one line of GeoJSON Lines: its features would be \
+                       merged into one record, their ids and properties lost; give one Feature \
+                       per line";
+        return (None, Err(ParseError::at(at(column), message)));
+    }
     let (id, properties, null) = identity(&mut node);
     let mut parts = Vec::new();
-    let column = line.chars().count() - body.chars().count() + 1;
     let located = |failure: Failure| ParseError::at(at(column), failure.to_string());
     let result = top_level(node, &mut parts).map_err(located);
     let geometry = geometry_of(result.is_ok(), null, parts.len());

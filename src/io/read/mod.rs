@@ -129,11 +129,14 @@ pub fn not_text(bytes: &[u8], whole: bool) -> Option<ParseError> {
     Some(ParseError::at(locate(before, at), message))
 }
 
-/// Drops a ring's last vertex when it repeats the first exactly (the optional closing vertex).
-pub(crate) fn drop_closing_vertex(ring: &mut Vec<[Decimal; 2]>) {
+/// Drops a ring's last vertex when it repeats the first exactly (the optional closing vertex);
+/// returns whether it did.
+pub(crate) fn drop_closing_vertex(ring: &mut Vec<[Decimal; 2]>) -> bool {
     if ring.len() > 1 && ring.first() == ring.last() {
         ring.pop();
+        return true;
     }
+    false
 }
 
 /// Decides the format from a file extension (`None` for standard input or an unknown extension),

@@ -208,7 +208,10 @@ impl Current {
         if self.over.is_some() {
             return Ok(());
         }
-        if self.count > max_vertices {
+        // A vertex repeating the ring's first may be its closing one, not counted (see
+        // `end_ring`): it may be one past the cap.
+        let closing = self.count == max_vertices + 1 && self.ring.first() == Some(&vertex);
+        if self.count > max_vertices && !closing {
             (self.rings, self.ring) = (Vec::new(), Vec::new());
             self.over = Some(at(too_many_vertices(max_vertices, "one polygon")));
             return Ok(());
@@ -225,7 +228,9 @@ impl Current {
 
     /// Ends the current ring.
     fn end_ring(&mut self) {
-        end_ring(&mut self.ring, &mut self.rings);
+        if end_ring(&mut self.ring, &mut self.rings) {
+            self.count -= 1; // the closing vertex, not a vertex of the polygon
+        }
     }
 
     /// Whether the polygon has nothing yet (after [`Current::end_ring`]).
@@ -281,12 +286,15 @@ fn is_space(c: char) -> bool {
     c.is_whitespace() || c == '\u{feff}'
 }
 
-/// Moves a finished, non-empty ring (without its closing vertex) to the polygon's rings.
-fn end_ring(ring: &mut Vec<[Decimal; 2]>, rings: &mut Vec<Vec<[Decimal; 2]>>) {
-    if !ring.is_empty() {
-        drop_closing_vertex(ring);
-        rings.push(std::mem::take(ring));
+/// Moves a finished, non-empty ring (without its closing vertex) to the polygon's rings;
+/// returns whether a closing vertex was dropped.
+fn end_ring(ring: &mut Vec<[Decimal; 2]>, rings: &mut Vec<Vec<[Decimal; 2]>>) -> bool {
+    if ring.is_empty() {
+        return false;
     }
+    let closed = drop_closing_vertex(ring);
+    rings.push(std::mem::take(ring));
+    closed
 }
 
 /// Parses a vertex line without its comment; errors carry the byte offset in the line.

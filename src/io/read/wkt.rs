@@ -511,7 +511,7 @@ impl<'a> Parser<'a> {
         loop {
             let token = self.peek();
             let point = self.point()?;
-            self.count_vertex(token, &mut ring);
+            self.count_vertex(token, &mut ring, &point);
             // Memory refused: the polygon is dropped and read on without storing its points.
             if self.no_room.is_none() && ring.try_reserve(1).is_err() {
                 let message = format!(
@@ -528,15 +528,26 @@ impl<'a> Parser<'a> {
                 break;
             }
         }
-        drop_closing_vertex(&mut ring);
+        // The closing vertex is not a vertex of the polygon: not counted against the cap.
+        if drop_closing_vertex(&mut ring) {
+            self.vertices -= 1;
+        }
         Ok(ring)
     }
 
     /// Counts one more vertex of the polygon; one too many drops it (`ring`, and the rings
-    /// before, by [`Parser::polygon`]) and makes it a failed part, located at `token`.
-    fn count_vertex(&mut self, token: Token<'_>, ring: &mut Vec<[Decimal; 2]>) {
+    /// before, by [`Parser::polygon`]) and makes it a failed part, located at `token`. A point
+    /// repeating the ring's first may be its closing one, which the polygon does not count: it
+    /// may be one past the cap (if another point follows in the ring, that one is too many).
+    fn count_vertex(
+        &mut self,
+        token: Token<'_>,
+        ring: &mut Vec<[Decimal; 2]>,
+        point: &[Decimal; 2],
+    ) {
         self.vertices += 1;
-        if self.vertices > self.max_vertices && self.no_room.is_none() {
+        let closing = self.vertices == self.max_vertices + 1 && ring.first() == Some(point);
+        if self.vertices > self.max_vertices && !closing && self.no_room.is_none() {
             *ring = Vec::new();
             let message = too_many_vertices(self.max_vertices, "one polygon");
             self.no_room = Some(self.error(token, message));
@@ -644,20 +655,32 @@ mod tests {
 
     #[test]
     fn a_polygon_past_the_cap_on_vertices_fails_alone() {
-        // Rings counted together, closing vertices included; each polygon counted alone.
+        // Rings counted together, as the output counts them (closing vertices left out); each
+        // polygon counted alone.
         let text = "GEOMETRYCOLLECTION (POLYGON ((0 0, 9 0, 9 9, 0 0), (1 1, 2 1, 1 2, 1 1)), \
                     MULTIPOLYGON (((0 0, 1 0, 0 1, 0 0)), ((5 5, 6 5, 5 6, 5 5))))";
         let ok = |parts: Vec<Result<RawPolygon, ParseError>>| -> Vec<bool> {
             parts.iter().map(Result::is_ok).collect()
         };
-        assert_eq!(ok(read_parts_within(text, 8).unwrap()), [true, true, true]);
-        let parts = read_parts_within(text, 7).unwrap();
+        assert_eq!(ok(read_parts_within(text, 6).unwrap()), [true, true, true]);
+        let parts = read_parts_within(text, 5).unwrap();
         assert_eq!(ok(parts.clone()), [false, true, true]);
         let error = parts[0].as_ref().unwrap_err().to_string();
         assert!(
-            error.starts_with("line 1, column 68: too many vertices: more than 7 in one polygon"),
+            error.starts_with("line 1, column 63: too many vertices: more than 5 in one polygon"),
             "{error}"
         );
+        // Exactly the cap, closed or not; a point repeating the first that is not the last
+        // counts.
+        for text in [
+            "POLYGON ((0 0, 1 0, 0 1, 0 0))",
+            "POLYGON ((0 0, 1 0, 0 1))",
+        ] {
+            assert_eq!(ok(read_parts_within(text, 3).unwrap()), [true], "{text}");
+        }
+        let through = "POLYGON ((0 0, 1 0, 1 1, 0 0, 0 1, 0 0))";
+        assert_eq!(ok(read_parts_within(through, 4).unwrap()), [false]);
+        assert_eq!(ok(read_parts_within(through, 5).unwrap()), [true]);
         // The rest of a polygon past the cap is still read: a syntax error in it is reported.
         let bad = "MULTIPOLYGON (((0 0, 1 0, 0 1, 0 2, x 3)), ((5 5, 6 5, 5 6)))";
         assert!(read_parts_within(bad, 3)

@@ -112,9 +112,9 @@ impl Summary {
                         summary.optimal &= t.optimal;
                     }
                 }
-                Err(e) => {
+                Err(_) => {
                     let prefix = prefix(outcome);
-                    let messages = e.messages().into_iter();
+                    let messages = outcome.error_messages().into_iter();
                     summary
                         .errors
                         .extend(messages.map(|m| format!("{prefix}{m}")));

@@ -86,7 +86,7 @@ impl<W: Write> JsonWriter<W> {
     /// Any I/O error of the output.
     pub fn push_rendered(&mut self, outcome: &Outcome, text: Option<String>) -> io::Result<()> {
         let Some(text) = text else {
-            if let Err(e) = &outcome.result {
+            if let Some(message) = outcome.error_message() {
                 let feature = outcome.feature.as_ref();
                 self.errors.push(ErrorEntry {
                     source: outcome.source.clone(),
@@ -96,7 +96,7 @@ impl<W: Write> JsonWriter<W> {
                     part: feature.filter(|f| f.multipart()).map(|f| f.part),
                     line: feature.and_then(|f| f.feature.line),
                     id: feature.and_then(|f| f.feature.id.clone()),
-                    message: e.to_string(),
+                    message,
                 });
             }
             return Ok(());
@@ -175,9 +175,17 @@ pub fn render(outcome: &Outcome) -> Option<String> {
         let warnings: Vec<String> = outcome.warnings.iter().map(ToString::to_string).collect();
         out.push_str(&json(&warnings));
     }
-    if let Some(repaired) = &outcome.repaired {
-        out.push_str(",\n      \"repaired\": ");
-        out.push_str(&json(repaired));
+    match (&outcome.repaired, outcome.piece) {
+        // A later piece of a polygon split in several: its repairs are listed once, with
+        // piece 0 (a copy for every piece grew as k^2 for a ring touching itself k times).
+        (Some(_), Some(piece)) if piece > 0 => {
+            out.push_str(",\n      \"repaired_in_piece\": 0");
+        }
+        (Some(repaired), _) => {
+            out.push_str(",\n      \"repaired\": ");
+            out.push_str(&json(repaired));
+        }
+        (None, _) => {}
     }
     if let Some(v) = &solved.verification {
         out.push_str(",\n      \"verification\": ");

@@ -163,9 +163,9 @@ pub fn write_outcomes(outcomes: &[Outcome], style: Style, out: &mut impl Write) 
             ..Figure::new(title, polygon)
         };
         let solved = match &o.result {
-            Err(e) => {
+            Err(_) => {
                 figures.push(Figure {
-                    error: Some(e.to_string()),
+                    error: o.error_message(),
                     ..base(title(o))
                 });
                 continue;
