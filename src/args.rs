@@ -48,8 +48,9 @@ NO_COLOR set to anything but the empty string turns colour off."
 
 /// Triangulate polygons with the minimum number of triangles, exactly.
 ///
-/// Reads WKT, GeoJSON or plain vertex lists (files, directories, or standard input) and writes
-/// JSON, GeoJSON, WKT, CSV or SVG. Coordinates are exact as written in decimal.
+/// Reads WKT, GeoJSON, plain vertex lists or WKB (files, gzip-compressed or not, directories, or
+/// standard input) and writes JSON, GeoJSON, WKT, CSV or SVG. Coordinates are exact as written in
+/// decimal (WKB's doubles: their shortest decimals).
 #[derive(Parser, Debug)]
 #[command(name = "minitri", version, about, after_help = examples!(),
     after_long_help = concat!(examples!(), shell_examples!()))]
@@ -154,6 +155,8 @@ pub enum FromFlag {
     Geojson,
     /// One `x y` vertex per line
     Vertices,
+    /// Well-known binary (WKB, EWKB): binary, or hex text one geometry per line
+    Wkb,
 }
 
 /// `--to`.
@@ -232,7 +235,7 @@ impl Flags {
             cmd.error(
                 clap::error::ErrorKind::UnknownArgument,
                 "there is no --format: the output format is --to (json, geojson, geojsonl, geojson-triangles, wkt, csv, svg), \
-                 the input format --from (auto, wkt, geojson, vertices)",
+                 the input format --from (auto, wkt, geojson, vertices, wkb)",
             )
             .exit();
         }
@@ -303,6 +306,7 @@ impl Flags {
             FromFlag::Wkt => Some(Format::Wkt),
             FromFlag::Geojson => Some(Format::GeoJson),
             FromFlag::Vertices => Some(Format::Vertices),
+            FromFlag::Wkb => Some(Format::Wkb),
         };
         let inputs = if self.inputs.is_empty() {
             vec![PathBuf::from("-")]

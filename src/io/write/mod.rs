@@ -44,7 +44,7 @@ impl OutputFormat {
         Some(match extension.to_ascii_lowercase().as_str() {
             "json" => OutputFormat::Json,
             "geojson" => OutputFormat::GeoJson,
-            "geojsonl" | "geojsons" | "ndjson" | "jsonl" => OutputFormat::GeoJsonLines,
+            e if crate::io::read::LINES_EXTENSIONS.contains(&e) => OutputFormat::GeoJsonLines,
             "wkt" => OutputFormat::Wkt,
             "csv" => OutputFormat::Csv,
             "svg" => OutputFormat::Svg(svg::Style::default()),
