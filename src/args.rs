@@ -164,14 +164,14 @@ pub enum FromFlag {
 pub enum ToFlag {
     /// The JSON document: every polygon with its triangles, counts, bounds and warnings
     Json,
-    /// A GeoJSON FeatureCollection, one Feature per input feature (a MultiPolygon of its
-    /// triangles, the input's id and properties)
+    /// A GeoJSON FeatureCollection, one Feature per input feature (a GeometryCollection of its
+    /// triangles as Polygons, the input's id and properties)
     Geojson,
     /// GeoJSON Lines: the same Features, one per line (a filter with GeoJSON Lines in)
     Geojsonl,
     /// A GeoJSON FeatureCollection, one Feature per triangle
     GeojsonTriangles,
-    /// WKT, one MULTIPOLYGON of triangles per line and input feature (EMPTY when it failed)
+    /// WKT, one GEOMETRYCOLLECTION of triangles per line and input feature (EMPTY when it failed)
     Wkt,
     /// CSV: one row per input feature, its triangles in a WKT column, its id and properties as
     /// written, ok, counts, errors

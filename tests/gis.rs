@@ -58,7 +58,10 @@ fn binary_wkb_and_postgis_hex_ewkb_give_the_triangles_of_the_wkt() {
     let lines = wkt(&["fixtures/gis/postgis_ewkb.wkb"]);
     let lines: Vec<&str> = lines.lines().collect();
     assert_eq!(lines[0], from_wkt.trim_end());
-    assert_eq!(lines[1], "MULTIPOLYGON (((0 0, 0.2 0.6, 0 1, 0 0)))");
+    assert_eq!(
+        lines[1],
+        "GEOMETRYCOLLECTION (POLYGON ((0 0, 0.2 0.6, 0 1, 0 0)))"
+    );
     // The same hex on standard input, without a name: recognised by content.
     let hex = std::fs::read(crate::util::fixtures().join("gis/postgis_ewkb.wkb")).unwrap();
     let (code, out, _) = run_bytes(&["--to", "wkt"], hex);
@@ -128,7 +131,10 @@ fn gzip_files_directories_and_standard_input_read_as_decompressed() {
     let (code, out, _) = run_bytes(&["--to", "wkt"], packed);
     assert_eq!(
         (code, out.as_str()),
-        (0, "MULTIPOLYGON (((0 0, 0.2 0.6, 0 1, 0 0)))\n")
+        (
+            0,
+            "GEOMETRYCOLLECTION (POLYGON ((0 0, 0.2 0.6, 0 1, 0 0)))\n"
+        )
     );
     // A directory: the .gz files are read, by their inner extension; `b.gz` has none and `c.csv.gz`
     // an unknown one: skipped.
