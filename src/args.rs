@@ -4,7 +4,7 @@ use clap::{ColorChoice, CommandFactory, FromArgMatches, Parser, ValueEnum};
 use clap_complete::Shell;
 use minitri::io::write::{svg, OutputFormat};
 use minitri::{Algorithm, Format, Options};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// The examples after `-h` and `--help` (a macro so that `--help` can append to it).
 macro_rules! examples {
@@ -255,15 +255,18 @@ impl Flags {
         flags
     }
 
-    /// The output format: `--to`, or else `-o`'s extension when it names one, or else JSON.
+    /// The output format: `--to`, or else `-o`'s extension when it names one output file, or
+    /// else JSON. A directory's name decides nothing ([`is_tree`]: the same for a directory that
+    /// exists and one that a batch creates).
     ///
     /// # Errors
     /// When `--to` and `-o`'s extension name different formats.
     pub fn output_format(&self) -> Result<ToFlag, String> {
+        let inputs = self.input_paths();
         let by_name = self
             .output
             .as_deref()
-            .filter(|out| !out.is_dir())
+            .filter(|out| !is_tree(&inputs, out))
             .and_then(|out| out.extension())
             .and_then(|e| e.to_str())
             .and_then(|e| OutputFormat::from_extension(e).map(|f| (e, f)));
@@ -291,6 +294,15 @@ impl Flags {
         }
     }
 
+    /// The inputs as given, standard input (`-`) when none.
+    fn input_paths(&self) -> Vec<PathBuf> {
+        if self.inputs.is_empty() {
+            vec![PathBuf::from("-")]
+        } else {
+            self.inputs.clone()
+        }
+    }
+
     /// Validates the flags into a [`Config`].
     pub fn into_config(self) -> Config {
         let to = self.output_format().unwrap_or(ToFlag::Json);
@@ -308,11 +320,7 @@ impl Flags {
             FromFlag::Vertices => Some(Format::Vertices),
             FromFlag::Wkb => Some(Format::Wkb),
         };
-        let inputs = if self.inputs.is_empty() {
-            vec![PathBuf::from("-")]
-        } else {
-            self.inputs
-        };
+        let inputs = self.input_paths();
         Config {
             inputs,
             from,
@@ -351,4 +359,10 @@ fn seconds(text: &str) -> Result<f64, String> {
             "expected a number of seconds from 0 (no limit) to 32000000, got {text:?}"
         )),
     }
+}
+
+/// Does `-o out` name a directory mirroring the inputs (rather than one output file)? With a
+/// directory input, several inputs, or an existing directory as `out`.
+pub fn is_tree(inputs: &[PathBuf], out: &Path) -> bool {
+    inputs.len() > 1 || inputs.iter().any(|p| p.is_dir()) || out.is_dir()
 }

@@ -311,3 +311,67 @@ fn a_directory_reads_geojson_lines_by_every_extension_the_writer_uses() {
         "3 triangles a line"
     );
 }
+
+#[test]
+fn a_directory_output_gets_its_format_from_to_never_from_its_name_new_or_existing() {
+    let dir = tempfile::tempdir().unwrap();
+    let shapes = dir.path().join("shapes");
+    std::fs::create_dir(&shapes).unwrap();
+    std::fs::copy("fixtures/valid/u_shape.wkt", shapes.join("u.wkt")).unwrap();
+    let listing = |d: &std::path::Path| -> Vec<String> {
+        let mut names: Vec<String> = std::fs::read_dir(d)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        names.sort();
+        names
+    };
+    for exists in [false, true] {
+        let out = dir.path().join(format!("d{exists}.svg"));
+        if exists {
+            std::fs::create_dir(&out).unwrap();
+        }
+        let (code, _, err) = run(
+            &[shapes.to_str().unwrap(), "-o", out.to_str().unwrap()],
+            None,
+        );
+        assert_eq!(code, 0, "{err}");
+        assert_eq!(listing(&out), ["u.json"], "exists: {exists}");
+        let text = std::fs::read_to_string(out.join("u.json")).unwrap();
+        assert_eq!(json(&text)["polygons"][0]["triangle_count"], 5);
+        // --to decides, and a --to that differs from the directory's "extension" is no conflict.
+        let (code, _, err) = run(
+            &[
+                shapes.to_str().unwrap(),
+                "-o",
+                out.to_str().unwrap(),
+                "--to",
+                "wkt",
+            ],
+            None,
+        );
+        assert_eq!(code, 0, "{err}");
+        assert_eq!(listing(&out), ["u.json", "u.wkt"], "exists: {exists}");
+    }
+    // Several files into a new directory named like a format: the same.
+    let out = dir.path().join("two.geojson");
+    let (code, _, err) = run(
+        &[
+            "fixtures/valid/u_shape.wkt",
+            "fixtures/valid/l_shape.wkt",
+            "-o",
+            out.to_str().unwrap(),
+        ],
+        None,
+    );
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(listing(&out), ["l_shape.json", "u_shape.json"]);
+    // One input file: `-o` names a file, and its extension decides.
+    let file = dir.path().join("one.svg");
+    let (code, _, err) = run(
+        &["fixtures/valid/u_shape.wkt", "-o", file.to_str().unwrap()],
+        None,
+    );
+    assert_eq!(code, 0, "{err}");
+    assert!(std::fs::read_to_string(&file).unwrap().contains("<svg"));
+}
