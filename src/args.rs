@@ -157,6 +157,8 @@ pub enum FromFlag {
     Vertices,
     /// Well-known binary (WKB, EWKB): binary, or hex text one geometry per line
     Wkb,
+    /// CSV with a WKT geometry column (as --to csv writes it)
+    Csv,
 }
 
 /// `--to`.
@@ -235,7 +237,7 @@ impl Flags {
             cmd.error(
                 clap::error::ErrorKind::UnknownArgument,
                 "there is no --format: the output format is --to (json, geojson, geojsonl, geojson-triangles, wkt, csv, svg), \
-                 the input format --from (auto, wkt, geojson, vertices, wkb)",
+                 the input format --from (auto, wkt, geojson, vertices, wkb, csv)",
             )
             .exit();
         }
@@ -319,6 +321,7 @@ impl Flags {
             FromFlag::Geojson => Some(Format::GeoJson),
             FromFlag::Vertices => Some(Format::Vertices),
             FromFlag::Wkb => Some(Format::Wkb),
+            FromFlag::Csv => Some(Format::Csv),
         };
         let inputs = self.input_paths();
         Config {

@@ -375,3 +375,84 @@ fn a_directory_output_gets_its_format_from_to_never_from_its_name_new_or_existin
     assert_eq!(code, 0, "{err}");
     assert!(std::fs::read_to_string(&file).unwrap().contains("<svg"));
 }
+
+/// The triangles of `--to wkt` lines, each as its sorted corners (start and turn aside).
+fn triangles_of(wkt_lines: &str) -> Vec<Vec<String>> {
+    let mut all: Vec<Vec<String>> = wkt_lines
+        .split("POLYGON ((")
+        .skip(1)
+        .map(|rest| {
+            let ring = &rest[..rest.find("))").expect("a closed ring")];
+            let mut corners: Vec<String> = ring.split(", ").map(str::to_string).collect();
+            assert_eq!(corners.first(), corners.last(), "closed: {ring}");
+            corners.pop();
+            corners.sort();
+            corners
+        })
+        .collect();
+    all.sort();
+    all
+}
+
+#[test]
+fn every_output_that_holds_geometry_reads_back_into_minitri() {
+    let dir = tempfile::tempdir().unwrap();
+    // A polygon with flat vertices, one with a hole and decimals, a GeoJSON Lines layer with a
+    // MultiPolygon feature and a failed one.
+    let layer = dir.path().join("layer.geojsonl");
+    std::fs::write(
+        &layer,
+        "{\"type\":\"Feature\",\"id\":1,\"properties\":{},\"geometry\":{\"type\":\"MultiPolygon\",\"coordinates\":[[[[0,0],[0.5,0],[1,0],[0,1],[0,0]]],[[[5,5],[6,5],[6,6],[5,6],[5,5]]]]}}\n\
+         {\"type\":\"Feature\",\"id\":2,\"properties\":{},\"geometry\":{\"type\":\"Polygon\",\"coordinates\":[[[0,0],[2,2],[2,0],[0,2],[0,0]]]}}\n",
+    )
+    .unwrap();
+    let inputs = [
+        "fixtures/valid/u_shape.wkt".to_string(),
+        "fixtures/holes/decimal_collinear_holes.wkt".to_string(),
+        layer.to_str().unwrap().to_string(),
+    ];
+    for input in &inputs {
+        let (_, first, err) = run(&["--to", "wkt", input], None);
+        let want = triangles_of(&first);
+        assert!(!want.is_empty(), "{input}: {err}");
+        for (to, name) in [
+            ("geojson", "out.geojson"),
+            ("geojsonl", "out.geojsonl"),
+            ("geojson-triangles", "out.geojson"),
+            ("wkt", "out.wkt"),
+            ("csv", "out.csv"),
+        ] {
+            let out = dir.path().join(name);
+            let out = out.to_str().unwrap();
+            let _ = std::fs::remove_file(out);
+            let (code, _, err) = run(&["--to", to, "-o", out, input], None);
+            assert!(code == 0 || input.ends_with(".geojsonl"), "{to}: {err}");
+            // Read back by its name, and by content on standard input: every triangle is a
+            // polygon of one triangle, the same corners exactly as written.
+            let text = std::fs::read_to_string(out).unwrap();
+            // The layer's failed feature (a bow tie) is a Feature with a null geometry in
+            // GeoJSON, which reads back as that feature's error; WKT and CSV skip its EMPTY.
+            let failed = input.ends_with(".geojsonl") && (to == "geojson" || to == "geojsonl");
+            let status = i32::from(failed);
+            for args in [vec!["--to", "wkt", out], vec!["--to", "wkt"]] {
+                let stdin = (args.len() == 2).then_some(text.as_str());
+                let (code, back, err) = run(&args, stdin);
+                assert_eq!(
+                    code, status,
+                    "{input} --to {to}, read back ({args:?}): {err}"
+                );
+                assert_eq!(triangles_of(&back), want, "{input} --to {to} ({args:?})");
+            }
+            // Each triangle read back is a polygon of its own, triangulated as one triangle
+            // (a GeoJSON feature's triangles stay one feature: its parts).
+            let (code, doc, err) = run(&[out], None);
+            assert_eq!(code, status, "{err}");
+            let polygons = json(&doc)["polygons"].as_array().unwrap().clone();
+            assert_eq!(polygons.len(), want.len(), "{input} --to {to}");
+            assert!(
+                polygons.iter().all(|p| p["triangle_count"] == 1),
+                "{input} --to {to}"
+            );
+        }
+    }
+}

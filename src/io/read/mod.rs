@@ -19,6 +19,7 @@ use crate::geom::decimal::Decimal;
 use std::fmt;
 use std::path::Path;
 
+pub mod csv;
 pub mod geojson;
 mod geojson_seed;
 pub mod geojson_stream;
@@ -46,6 +47,8 @@ pub enum Format {
     Vertices,
     /// Well-known binary (WKB, EWKB), binary or hex text, one geometry per line ([`wkb`]).
     Wkb,
+    /// CSV with a `WKT` geometry column, as `--to csv` writes it ([`csv`]).
+    Csv,
 }
 
 /// A position in the input text, both 1-based.
@@ -338,11 +341,15 @@ fn trim_start(line: &str) -> &str {
     line.trim_start_matches(|c: char| c.is_whitespace() || c == '\u{feff}')
 }
 
-/// Decides the format from the first meaningful line: a CSV header (`x,y`, two names and a
+/// Decides the format from the first meaningful line: a CSV header with a `WKT` column is CSV
+/// with geometries ([`csv`]); a CSV header (`x,y`, two names and a
 /// comma) is a vertex list; else by its first character: `{`/`[` is GeoJSON, a letter is WKT,
 /// anything else (digits, signs) is a vertex list.
 fn detect_content(text: &str) -> Format {
     let line = first_meaningful(text);
+    if line.is_some_and(csv::is_wkt_header) {
+        return Format::Csv;
+    }
     if line.is_some_and(vertices::is_header) {
         return Format::Vertices;
     }
@@ -365,6 +372,9 @@ pub fn read(format: Format, text: &str) -> Result<Vec<RawPolygon>, ParseError> {
         Format::GeoJson => geojson::read(text),
         Format::Vertices => vertices::read(text),
         Format::Wkb => wkb::read_parts_within(text.as_bytes(), limits::MAX_VERTICES)?
+            .into_iter()
+            .collect(),
+        Format::Csv => csv::read_parts_within(text, limits::MAX_VERTICES)?
             .into_iter()
             .collect(),
     }
@@ -409,5 +419,6 @@ pub fn read_parts_within(
         Format::GeoJson => geojson::read_parts(text),
         Format::Vertices => vertices::read_parts_within(text, max_vertices),
         Format::Wkb => wkb::read_parts_within(text.as_bytes(), max_vertices),
+        Format::Csv => csv::read_parts_within(text, max_vertices),
     }
 }
