@@ -161,14 +161,19 @@ pub fn detect_start(extension: Option<&str>, start: &str) -> Option<Format> {
             .map(trim_start)
             .any(|l| !l.is_empty() && !l.starts_with('#'))
     };
-    // A first line cut off at the end of `start` that may still become a CSV header (`x,y`)
-    // is decided on more text: `x` alone would look like WKT.
+    // A first line cut off at the end of `start` that may still become a CSV header (`x,y`,
+    // or one with a `WKT` column: any line starting with a letter or a quote may) is decided
+    // on more text: `x` alone would look like WKT. (WKT and CSV are read whole anyway; GeoJSON,
+    // which is streamed, starts with `{` or `[` and is never kept waiting.)
     let undecided = || {
         let (done, last) = match start.rfind('\n') {
             Some(i) => start.split_at(i + 1),
             None => ("", start),
         };
-        first_meaningful(done).is_none() && vertices::may_become_header(last.trim_start())
+        let last = trim_start(last);
+        first_meaningful(done).is_none()
+            && (vertices::may_become_header(last)
+                || last.starts_with(|c: char| c.is_ascii_alphabetic() || c == '"'))
     };
     by_extension(extension)
         .or_else(|| (meaningful() && !undecided()).then(|| detect_content(start)))
@@ -182,7 +187,9 @@ pub fn detect_start(extension: Option<&str>, start: &str) -> Option<Format> {
 /// ```
 /// use minitri::io::read::{sniff, Format};
 /// assert_eq!(sniff(None, b"0103000000010000000400000000"), Some(Format::Wkb));
-/// assert_eq!(sniff(None, b"POLYGON ((0 0, 1 0, 0 1))"), Some(Format::Wkt));
+/// assert_eq!(sniff(None, b"POLYGON ((0 0, 1 0, 0 1))\n"), Some(Format::Wkt));
+/// assert_eq!(sniff(None, b"WKT,id\r\n"), Some(Format::Csv));
+/// assert_eq!(sniff(None, b"POLYGON ((0 0, 1 0,"), None, "the first line may still be a CSV header");
 /// assert_eq!(sniff(Some("txt"), b"0103000000010000000400000000"), Some(Format::Vertices));
 /// ```
 pub fn sniff(extension: Option<&str>, start: &[u8]) -> Option<Format> {
@@ -420,5 +427,39 @@ pub fn read_parts_within(
         Format::Vertices => vertices::read_parts_within(text, max_vertices),
         Format::Wkb => wkb::read_parts_within(text.as_bytes(), max_vertices),
         Format::Csv => csv::read_parts_within(text, max_vertices),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_decision_on_a_prefix_is_the_decision_on_the_whole() {
+        // What the read_auto fuzz target requires: whatever `detect_start` decides on a prefix,
+        // `detect` decides on the whole text.
+        for text in [
+            "a,b,WKT\nPOLYGON ((0 0, 1 0, 0 1))\n",
+            "\"WKT\",id\n\"POLYGON ((0 0, 1 0, 0 1))\",1\n",
+            "ab(,WKT\n",
+            "x,y\n0,0\n1,0\n0,1\n",
+            "POLYGON ((0 0, 1 0, 0 1))\n",
+            "# comment\n\u{feff}lon,lat\n0 0\n",
+            "{\"type\": \"Polygon\", \"coordinates\": [[[0, 0], [1, 0], [0, 1]]]}",
+        ] {
+            let whole = detect(None, text);
+            for end in (0..=text.len()).filter(|&e| text.is_char_boundary(e)) {
+                if let Some(early) = detect_start(None, &text[..end]) {
+                    assert_eq!(early, whole, "{text:?} cut at {end}");
+                }
+            }
+        }
+        assert_eq!(detect(None, "a,b,WKT\n"), Format::Csv);
+        assert_eq!(detect(None, "x,y\n"), Format::Vertices);
+        // GeoJSON is decided on its first character, however long its first line.
+        assert_eq!(
+            detect_start(None, "{\"type\": \"Poly"),
+            Some(Format::GeoJson)
+        );
     }
 }
