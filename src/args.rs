@@ -4,7 +4,7 @@ use clap::{ColorChoice, CommandFactory, FromArgMatches, Parser, ValueEnum};
 use clap_complete::Shell;
 use minitri::io::write::{svg, OutputFormat};
 use minitri::{Algorithm, Format, Options};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// The examples after `-h` and `--help` (a macro so that `--help` can append to it).
 macro_rules! examples {
@@ -48,8 +48,9 @@ NO_COLOR set to anything but the empty string turns colour off."
 
 /// Triangulate polygons with the minimum number of triangles, exactly.
 ///
-/// Reads WKT, GeoJSON or plain vertex lists (files, directories, or standard input) and writes
-/// JSON, GeoJSON, WKT, CSV or SVG. Coordinates are exact as written in decimal.
+/// Reads WKT, GeoJSON, plain vertex lists or WKB (files, gzip-compressed or not, directories, or
+/// standard input) and writes JSON, GeoJSON, WKT, CSV or SVG. Coordinates are exact as written in
+/// decimal (WKB's doubles: their shortest decimals).
 #[derive(Parser, Debug)]
 #[command(name = "minitri", version, about, after_help = examples!(),
     after_long_help = concat!(examples!(), shell_examples!()))]
@@ -154,6 +155,10 @@ pub enum FromFlag {
     Geojson,
     /// One `x y` vertex per line
     Vertices,
+    /// Well-known binary (WKB, EWKB): binary, or hex text one geometry per line
+    Wkb,
+    /// CSV with a WKT geometry column (as --to csv writes it)
+    Csv,
 }
 
 /// `--to`.
@@ -161,14 +166,14 @@ pub enum FromFlag {
 pub enum ToFlag {
     /// The JSON document: every polygon with its triangles, counts, bounds and warnings
     Json,
-    /// A GeoJSON FeatureCollection, one Feature per input feature (a MultiPolygon of its
-    /// triangles, the input's id and properties)
+    /// A GeoJSON FeatureCollection, one Feature per input feature (a GeometryCollection of its
+    /// triangles as Polygons, the input's id and properties)
     Geojson,
     /// GeoJSON Lines: the same Features, one per line (a filter with GeoJSON Lines in)
     Geojsonl,
     /// A GeoJSON FeatureCollection, one Feature per triangle
     GeojsonTriangles,
-    /// WKT, one MULTIPOLYGON of triangles per line and input feature (EMPTY when it failed)
+    /// WKT, one GEOMETRYCOLLECTION of triangles per line and input feature (EMPTY when it failed)
     Wkt,
     /// CSV: one row per input feature, its triangles in a WKT column, its id and properties as
     /// written, ok, counts, errors
@@ -232,7 +237,7 @@ impl Flags {
             cmd.error(
                 clap::error::ErrorKind::UnknownArgument,
                 "there is no --format: the output format is --to (json, geojson, geojsonl, geojson-triangles, wkt, csv, svg), \
-                 the input format --from (auto, wkt, geojson, vertices)",
+                 the input format --from (auto, wkt, geojson, vertices, wkb, csv)",
             )
             .exit();
         }
@@ -252,15 +257,18 @@ impl Flags {
         flags
     }
 
-    /// The output format: `--to`, or else `-o`'s extension when it names one, or else JSON.
+    /// The output format: `--to`, or else `-o`'s extension when it names one output file, or
+    /// else JSON. A directory's name decides nothing ([`is_tree`]: the same for a directory that
+    /// exists and one that a batch creates).
     ///
     /// # Errors
     /// When `--to` and `-o`'s extension name different formats.
     pub fn output_format(&self) -> Result<ToFlag, String> {
+        let inputs = self.input_paths();
         let by_name = self
             .output
             .as_deref()
-            .filter(|out| !out.is_dir())
+            .filter(|out| !is_tree(&inputs, out))
             .and_then(|out| out.extension())
             .and_then(|e| e.to_str())
             .and_then(|e| OutputFormat::from_extension(e).map(|f| (e, f)));
@@ -288,6 +296,15 @@ impl Flags {
         }
     }
 
+    /// The inputs as given, standard input (`-`) when none.
+    fn input_paths(&self) -> Vec<PathBuf> {
+        if self.inputs.is_empty() {
+            vec![PathBuf::from("-")]
+        } else {
+            self.inputs.clone()
+        }
+    }
+
     /// Validates the flags into a [`Config`].
     pub fn into_config(self) -> Config {
         let to = self.output_format().unwrap_or(ToFlag::Json);
@@ -303,12 +320,10 @@ impl Flags {
             FromFlag::Wkt => Some(Format::Wkt),
             FromFlag::Geojson => Some(Format::GeoJson),
             FromFlag::Vertices => Some(Format::Vertices),
+            FromFlag::Wkb => Some(Format::Wkb),
+            FromFlag::Csv => Some(Format::Csv),
         };
-        let inputs = if self.inputs.is_empty() {
-            vec![PathBuf::from("-")]
-        } else {
-            self.inputs
-        };
+        let inputs = self.input_paths();
         Config {
             inputs,
             from,
@@ -363,3 +378,9 @@ fn seconds(text: &str) -> Result<f64, String> {
 
 /// The smallest time limit, one nanosecond: what a positive `--time-limit` below it means.
 const SMALLEST_LIMIT: f64 = 1e-9;
+
+/// Does `-o out` name a directory mirroring the inputs (rather than one output file)? With a
+/// directory input, several inputs, or an existing directory as `out`.
+pub fn is_tree(inputs: &[PathBuf], out: &Path) -> bool {
+    inputs.len() > 1 || inputs.iter().any(|p| p.is_dir()) || out.is_dir()
+}

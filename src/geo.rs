@@ -102,6 +102,18 @@ fn raw<T: ExactCoord>(polygon: &geo_types::Polygon<T>, index: usize) -> Result<R
     Ok(RawPolygon { rings })
 }
 
+/// Polygon `index` of a multipolygon as exact decimals, not yet validated (the readers of
+/// floating-point formats, WKB, share this path with the geo-types API).
+///
+/// # Errors
+/// [`Error::Parse`] for a NaN or infinite coordinate, naming the polygon, ring and vertex.
+pub(crate) fn raw_polygon<T: ExactCoord>(
+    polygon: &geo_types::Polygon<T>,
+    index: usize,
+) -> Result<RawPolygon, Error> {
+    raw(polygon, index)
+}
+
 /// Validates a polygon on the kernel its coordinates need (duplicate consecutive vertices are
 /// dropped silently).
 fn valid(raw: &RawPolygon) -> Result<AnyPolygon, Error> {

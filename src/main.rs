@@ -10,7 +10,7 @@ mod shell;
 static ALLOCATOR: allocator::Split = allocator::Split;
 
 use anyhow::Context;
-use args::Flags;
+use args::{is_tree, Flags};
 use indicatif::{ProgressBar, ProgressStyle};
 use minitri::batch::{
     discover_counting, plan, run_document, run_tree, AtomicFile, Observer, Settings, Tally, TreeJob,
@@ -467,11 +467,6 @@ fn stdout_file() -> io::Result<Box<dyn Write + Send>> {
     }
     #[cfg(not(unix))]
     Ok(Box::new(io::stdout()))
-}
-
-/// Does `-o out` name a directory mirroring the inputs (rather than one output file)?
-fn is_tree(inputs: &[std::path::PathBuf], out: &Path) -> bool {
-    inputs.len() > 1 || inputs.iter().any(|p| p.is_dir()) || out.is_dir()
 }
 
 /// The exit status (docs/cli.md): 3 a `--verify` problem, 1 a failure, 0 all processed.

@@ -922,8 +922,8 @@ fn repair_tells_an_input_warning_once_and_a_feature_stays_one_record() {
             }
             "wkt" => assert_eq!(
                 out,
-                "MULTIPOLYGON (((0 2, 0 0, 2 0, 0 2)), ((2 2, 0 2, 2 0, 2 2)), \
-                 ((2 4, 2 2, 4 2, 2 4)), ((4 4, 2 4, 4 2, 4 4)))\n"
+                "GEOMETRYCOLLECTION (POLYGON ((0 2, 0 0, 2 0, 0 2)), POLYGON ((2 2, 0 2, 2 0, 2 2)), \
+                 POLYGON ((2 4, 2 2, 4 2, 2 4)), POLYGON ((4 4, 2 4, 4 2, 4 4)))\n"
             ),
             _ => assert_eq!(
                 out.matches("\r\n").count(),

@@ -50,12 +50,15 @@ fn unquote(cell: &str) -> String {
     }
 }
 
-/// The `--from` value for a fixture's extension.
+/// The `--from` value for a fixture's extension (the one before `.gz`). Formats minitri does
+/// not read are recognised by content whatever `--from` says: `geojson` for them.
 fn format_of(fixture: &str) -> &'static str {
-    match Path::new(fixture).extension().and_then(|e| e.to_str()) {
+    match minitri::io::read::extension_of(Path::new(fixture)) {
         Some("wkt") => "wkt",
         Some("geojson" | "ndjson") => "geojson",
         Some("txt") => "vertices",
+        Some("wkb") => "wkb",
+        Some("kml" | "gml" | "shp" | "fgb" | "gpkg") => "geojson",
         other => panic!("{fixture}: no format for extension {other:?}"),
     }
 }

@@ -6,6 +6,7 @@ mod earcut;
 mod errors;
 mod formats;
 mod geo;
+mod gis;
 mod holes_dp;
 mod hostile;
 mod pipelines;

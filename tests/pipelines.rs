@@ -54,11 +54,12 @@ fn geojson_gives_one_feature_per_input_feature_with_its_id_and_properties() {
             "{out}"
         );
         let first = &features[0];
-        assert_eq!(first["geometry"]["type"], "MultiPolygon");
-        assert_eq!(
-            first["geometry"]["coordinates"].as_array().unwrap().len(),
-            2
-        );
+        // A collection of Polygons (OGC: the triangles share edges, which the polygons of a
+        // valid MultiPolygon may not).
+        assert_eq!(first["geometry"]["type"], "GeometryCollection");
+        let members = first["geometry"]["geometries"].as_array().unwrap();
+        assert_eq!(members.len(), 2);
+        assert!(members.iter().all(|m| m["type"] == "Polygon"));
         assert_eq!(facts(first)["triangle_count"], 2);
         assert_eq!(facts(first)["degenerate_count"], 1);
         assert_eq!(facts(first)["optimal"], true);
@@ -67,10 +68,7 @@ fn geojson_gives_one_feature_per_input_feature_with_its_id_and_properties() {
         let multi = &features[1];
         assert_eq!(facts(multi)["parts"], 2);
         assert_eq!(facts(multi)["triangle_count"], 3);
-        assert_eq!(
-            multi["geometry"]["coordinates"].as_array().unwrap().len(),
-            3
-        );
+        assert_eq!(multi["geometry"]["geometries"].as_array().unwrap().len(), 3);
         assert_eq!(multi["properties"].as_object().unwrap().len(), 1);
         // A null geometry is reported, not skipped; so are the Point and the bow tie.
         for (k, needle) in [
@@ -201,7 +199,7 @@ fn a_collection_member_that_is_not_a_polygon_is_a_failed_part_of_its_feature() {
             assert_eq!(facts(gc)["ok"], false);
             assert_eq!(facts(gc)["parts"], 4);
             assert_eq!(facts(gc)["triangle_count"], 3);
-            assert_eq!(gc["geometry"]["coordinates"].as_array().unwrap().len(), 3);
+            assert_eq!(gc["geometry"]["geometries"].as_array().unwrap().len(), 3);
             assert_eq!(
                 facts(gc)["errors"],
                 serde_json::json!([format!("part 0: {message}")])
@@ -272,12 +270,12 @@ fn layer_with_a_partial_failure() -> Vec<&'static str> {
 
 /// The `--to wkt` line of each feature of [`layer_with_a_partial_failure`].
 const LAYER_WKT: [&str; 6] = [
-    "MULTIPOLYGON (((0 2, 0 0, 2 0, 0 2)), ((2 2, 0 2, 2 0, 2 2)))",
-    "MULTIPOLYGON (((0 1, 0 0, 1 0, 0 1)), ((5 6, 5 5, 6 5, 5 6)), ((6 6, 5 6, 6 5, 6 6)))",
-    "MULTIPOLYGON EMPTY",
-    "MULTIPOLYGON EMPTY",
-    "MULTIPOLYGON EMPTY",
-    "MULTIPOLYGON (((0 1, 0 0, 1 0, 0 1)))",
+    "GEOMETRYCOLLECTION (POLYGON ((0 2, 0 0, 2 0, 0 2)), POLYGON ((2 2, 0 2, 2 0, 2 2)))",
+    "GEOMETRYCOLLECTION (POLYGON ((0 1, 0 0, 1 0, 0 1)), POLYGON ((5 6, 5 5, 6 5, 5 6)), POLYGON ((6 6, 5 6, 6 5, 6 6)))",
+    "GEOMETRYCOLLECTION EMPTY",
+    "GEOMETRYCOLLECTION EMPTY",
+    "GEOMETRYCOLLECTION EMPTY",
+    "GEOMETRYCOLLECTION (POLYGON ((0 1, 0 0, 1 0, 0 1)))",
 ];
 
 /// The layer as a FeatureCollection and as GeoJSON Lines (with a line that is not JSON and a
@@ -303,7 +301,7 @@ fn wkt_is_one_line_per_input_feature_in_order_empty_where_nothing_was_triangulat
         assert_eq!(code, 1, "{err}");
         let mut want = LAYER_WKT.to_vec();
         if from_lines {
-            want.push("MULTIPOLYGON EMPTY"); // the line that is not JSON
+            want.push("GEOMETRYCOLLECTION EMPTY"); // the line that is not JSON
         }
         assert_eq!(out.lines().collect::<Vec<_>>(), want, "{out}");
         // The failed part's error still goes to standard error.
@@ -323,7 +321,7 @@ fn wkt_is_one_line_per_input_feature_in_order_empty_where_nothing_was_triangulat
         let features: Vec<Value> = geo.lines().map(json).collect();
         assert_eq!(features.len(), want.len());
         for (f, line) in features.iter().zip(&want) {
-            let triangles = f["geometry"]["coordinates"].as_array().map_or(0, Vec::len);
+            let triangles = f["geometry"]["geometries"].as_array().map_or(0, Vec::len);
             assert_eq!(line.matches("((").count(), triangles, "{line} vs {f}");
         }
     }
@@ -435,7 +433,7 @@ fn csv_is_one_row_per_input_feature_with_its_id_and_properties_as_written() {
         if from_lines {
             assert_eq!(lines, ["1", "2", "3", "4", "5", "6", "8"]);
             assert_eq!(column("id")[6], "", "a line that is not JSON has no id");
-            assert_eq!(column("WKT")[6], "MULTIPOLYGON EMPTY");
+            assert_eq!(column("WKT")[6], "GEOMETRYCOLLECTION EMPTY");
         } else {
             assert!(lines.iter().all(|l| l.is_empty()));
         }
@@ -453,10 +451,10 @@ fn csv_rows_of_wkt_input_are_its_polygons_and_pseudotriangles_have_their_column(
     assert_eq!(
         rows,
         [
-            "MULTIPOLYGON (((0 0, 4 0, 2 1, 0 4, 0 0)))|-|0||||true|pseudo|1|||1|false",
+            "GEOMETRYCOLLECTION (POLYGON ((0 0, 4 0, 2 1, 0 4, 0 0)))|-|0||||true|pseudo|1|||1|false",
             // The Point is no polygon: a row about the input, without feature or geometry.
             "|-|||||false||1||||",
-            "MULTIPOLYGON EMPTY|-|1||||false||1||||",
+            "GEOMETRYCOLLECTION EMPTY|-|1||||false||1||||",
         ]
     );
     assert!(records[2][13].contains("found POINT"), "{out}");
@@ -464,7 +462,7 @@ fn csv_rows_of_wkt_input_are_its_polygons_and_pseudotriangles_have_their_column(
     let (_, out, _) = run(&["--from", "wkt", "-a", "pseudo", "--to", "wkt"], Some(wkt));
     assert_eq!(
         out,
-        "MULTIPOLYGON (((0 0, 4 0, 2 1, 0 4, 0 0)))\nMULTIPOLYGON EMPTY\n"
+        "GEOMETRYCOLLECTION (POLYGON ((0 0, 4 0, 2 1, 0 4, 0 0)))\nGEOMETRYCOLLECTION EMPTY\n"
     );
 }
 
@@ -488,7 +486,7 @@ fn the_output_format_follows_the_file_name_unless_told_otherwise() {
         ("a.geojson", "{\"type\": \"FeatureCollection\""),
         ("a.geojsonl", "{\"type\": \"Feature\""),
         ("a.ndjson", "{\"type\": \"Feature\""),
-        ("a.wkt", "MULTIPOLYGON"),
+        ("a.wkt", "GEOMETRYCOLLECTION"),
         ("a.csv", "WKT,source,feature,"),
         ("a.CSV", "WKT,source,feature,"),
         ("a.svg", "<svg"),

@@ -7,7 +7,7 @@ INPUT_DIR is a directory of GeoJSON Lines part files (one Feature per line). Eac
 piped through `minitri --from geojson - --to geojsonl`, which answers every line with one
 Feature line: the input's `id` and `properties` as given, minitri's facts under
 `properties.minitri` (`ok`, `triangle_count`, `optimal`, `errors`, ...) and the triangles as a
-MultiPolygon. The job writes
+GeometryCollection of Polygons. The job writes
 
     OUTPUT_DIR/features/   the output Features, GeoJSON Lines part files
     OUTPUT_DIR/results/    one JSON row per input feature: id, ok, parts, triangle_count,

@@ -14,8 +14,6 @@ use pyo3::prelude::*;
 use pyo3::types::PyBytes;
 use rayon::prelude::*;
 
-mod wkb_in;
-
 /// One geometry's result.
 #[derive(Default)]
 struct Item {
@@ -62,7 +60,7 @@ fn outcomes(input: &Input<'_>, options: &Options) -> Vec<(Outcome, Option<Vec<[f
             .into_iter()
             .map(|outcome| (outcome, None))
             .collect(),
-        Input::Wkb(bytes) => match wkb_in::polygons(bytes) {
+        Input::Wkb(bytes) => match read::wkb::polygons(bytes) {
             Ok(polygons) => polygons
                 .into_iter()
                 .enumerate()
@@ -74,7 +72,7 @@ fn outcomes(input: &Input<'_>, options: &Options) -> Vec<(Outcome, Option<Vec<[f
                         .map(move |outcome| (outcome, Some(floats.clone())))
                 })
                 .collect(),
-            Err(e) => vec![(pipeline::unreadable("-", e), None)],
+            Err(e) => vec![(pipeline::unreadable("-", Error::Parse(e)), None)],
         },
     }
 }
@@ -359,11 +357,6 @@ fn push<'py>(
     c.5.push(wkb);
     c.6.push(error);
     c.7.push(warnings);
-}
-
-/// A parse error of the WKB input, as the library's [`Error`].
-pub(crate) fn parse_error(message: String) -> Error {
-    Error::Parse(ParseError::new(message))
 }
 
 /// The module `minitri._minitri`.

@@ -10,10 +10,9 @@
 use std::fs;
 use std::path::{Path, PathBuf};
 
-/// File extensions read from a directory (lowercase): every input format's.
-pub const EXTENSIONS: &[&str] = &[
-    "wkt", "geojson", "json", "geojsonl", "geojsons", "ndjson", "txt", "xy", "vertices",
-];
+/// File extensions read from a directory (lowercase): every input format's, also before `.gz`
+/// (the readers' list, [`crate::io::read::EXTENSIONS`]).
+pub use crate::io::read::EXTENSIONS;
 
 /// One input file of a run.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -138,7 +137,7 @@ pub fn discover_counting(
                 out.push(Err(Unreadable {
                     name: path.display().to_string(),
                     message: format!(
-                        "no input file found in this directory ({unknown} other file{}; inputs end in .{})",
+                        "no input file found in this directory ({unknown} other file{}; inputs end in .{}, or one of these and .gz)",
                         if unknown == 1 { "" } else { "s" },
                         EXTENSIONS.join(", .")
                     ),
@@ -206,12 +205,7 @@ fn walk(
             }
             continue;
         }
-        let known = entry
-            .path()
-            .extension()
-            .and_then(|e| e.to_str())
-            .is_some_and(|e| EXTENSIONS.contains(&e.to_ascii_lowercase().as_str()));
-        if !known {
+        if !crate::io::read::is_input_name(entry.path()) {
             *unknown += 1;
             continue;
         }

@@ -19,7 +19,7 @@ use super::tally::Tally;
 use crate::feature::{Feature, Geometry, Identity};
 use crate::io::read::geojson::JSON_WHITESPACE;
 use crate::io::read::geojson_stream::{self, Event, Stop};
-use crate::io::read::{self, detect_start, Format, ParseError, RawPolygon};
+use crate::io::read::{self, Format, ParseError, RawPolygon};
 use crate::io::write::{OutputFormat, Renderer, Sink};
 use crate::pipeline::{process_raw, unreadable, Error, Options, Outcome};
 use rayon::prelude::*;
@@ -555,20 +555,45 @@ fn read_input(input: &Input, settings: &Settings, chunker: &mut Chunker) -> io::
         }
     };
     let mut reader = BufReader::with_capacity(1 << 16, reader);
+    // `a.geojson.gz`: the extension before `.gz` decides.
     let extension = (!input.is_stdin())
-        .then(|| input.path.extension().and_then(|e| e.to_str()))
+        .then(|| read::extension_of(&input.path))
         .flatten();
-    let start = match reader.fill_buf() {
-        Ok(start) => start,
-        Err(e) => return failed(chunker, Error::Read(e.to_string())),
+    let mut gzip = false;
+    let start = loop {
+        let start = match reader.fill_buf() {
+            Ok(start) => start,
+            Err(e) => return failed(chunker, Error::Read(e.to_string())),
+        };
+        // gzip by its magic bytes: decompressed as it is read, then judged like any input.
+        if gzip || !read::gzip::is_gzip(start) {
+            break start;
+        }
+        gzip = true;
+        reader = BufReader::with_capacity(1 << 16, Box::new(read::gzip::decompress(reader)));
     };
-    let format = settings
-        .from
-        .or_else(|| detect_start(extension, &String::from_utf8_lossy(start)));
+    if let Some(error) = read::foreign(start) {
+        return failed(chunker, Error::Parse(error));
+    }
+    let format = settings.from.or_else(|| read::sniff(extension, start));
+    // Read chunk by chunk, at most `settings.limit` bytes (decompressed ones, for gzip).
+    let size = (!input.is_stdin() && !gzip)
+        .then(|| std::fs::metadata(&input.path).map(|m| m.len()).ok())
+        .flatten();
+    let note = if gzip { " decompressed" } else { "" };
+    if format == Some(Format::Wkb) {
+        let parts = match read::limits::read_bytes(reader, settings.limit, size.unwrap_or(0), note)
+        {
+            Ok(bytes) => read::wkb::read_parts_within(&bytes, settings.max_vertices),
+            Err(read::limits::NotRead::Io(e)) => {
+                return failed(chunker, Error::Read(e.to_string()))
+            }
+            Err(read::limits::NotRead::Parse(e)) => return failed(chunker, Error::Parse(e)),
+        };
+        return push_parts(&source, parts, chunker);
+    }
     if format == Some(Format::GeoJson) {
-        let lines_by_name = extension.is_some_and(|e| {
-            ["ndjson", "geojsonl", "geojsons"].contains(&e.to_ascii_lowercase().as_str())
-        });
+        let lines_by_name = read::lines_by_extension(extension);
         if lines_by_name || geojson_stream::looks_line_delimited(start) {
             return read_lines(&source, reader, settings, chunker);
         }
@@ -579,10 +604,8 @@ fn read_input(input: &Input, settings: &Settings, chunker: &mut Chunker) -> io::
         return stream_geojson(&source, reader, settings, chunker);
     }
     // Read chunk by chunk, stopping at the first byte that cannot be text (io/read/limits.rs).
-    let size = (!input.is_stdin())
-        .then(|| std::fs::metadata(&input.path).map(|m| m.len()).ok())
-        .flatten();
-    let text = match read::limits::read_text(reader, settings.limit, size.unwrap_or(0)) {
+    let text = match read::limits::read_text_noted(reader, settings.limit, size.unwrap_or(0), note)
+    {
         Ok(text) => text,
         Err(read::limits::NotRead::Io(e)) => return failed(chunker, Error::Read(e.to_string())),
         Err(read::limits::NotRead::Parse(e)) => return failed(chunker, Error::Parse(e)),
@@ -591,14 +614,24 @@ fn read_input(input: &Input, settings: &Settings, chunker: &mut Chunker) -> io::
     if format == Format::GeoJson {
         return stream_geojson(&source, text.as_bytes(), settings, chunker);
     }
-    // A member of a collection that is not a polygon is reported in its place; the polygons
-    // are numbered without it.
-    match read::read_parts_within(format, &text, settings.max_vertices) {
+    let parts = read::read_parts_within(format, &text, settings.max_vertices);
+    drop(text);
+    push_parts(&source, parts, chunker)
+}
+
+/// Pushes the parts of an input read whole into the chunker; returns whether it was read to
+/// its end. A member of a collection that is not a polygon is reported in its place; the
+/// polygons are numbered without it.
+fn push_parts(
+    source: &Arc<str>,
+    parts: Result<Vec<Result<RawPolygon, ParseError>>, ParseError>,
+    chunker: &mut Chunker,
+) -> io::Result<bool> {
+    match parts {
         Ok(parts) => {
-            drop(text);
             let mut index = 0;
             for part in parts {
-                let source = Arc::clone(&source);
+                let source = Arc::clone(source);
                 match part {
                     Ok(raw) => {
                         chunker.push(Item::Polygon {
@@ -615,7 +648,12 @@ fn read_input(input: &Input, settings: &Settings, chunker: &mut Chunker) -> io::
             }
             Ok(true)
         }
-        Err(e) => failed(chunker, Error::Parse(e)),
+        Err(e) => {
+            let outcome = unreadable(source, Error::Parse(e));
+            chunker
+                .push(Item::Failed(Box::new(outcome)))
+                .map(|()| false)
+        }
     }
 }
 

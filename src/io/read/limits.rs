@@ -130,7 +130,21 @@ pub enum NotRead {
 /// let Err(NotRead::Parse(e)) = read_text(spaces, 1000, 0) else { panic!() };
 /// assert!(e.to_string().contains("more than 1000 bytes"));
 /// ```
-pub fn read_text(mut reader: impl Read, limit: u64, expected: u64) -> Result<String, NotRead> {
+pub fn read_text(reader: impl Read, limit: u64, expected: u64) -> Result<String, NotRead> {
+    read_text_noted(reader, limit, expected, "")
+}
+
+/// [`read_text`], with `note` after the number of bytes in the message of an input above the
+/// cap (` decompressed` for a gzip-compressed input, whose decompressed bytes count).
+///
+/// # Errors
+/// As [`read_text`].
+pub fn read_text_noted(
+    mut reader: impl Read,
+    limit: u64,
+    expected: u64,
+    note: &str,
+) -> Result<String, NotRead> {
     let mut bytes: Vec<u8> = Vec::new();
     let reserve = usize::try_from(expected.min(limit)).unwrap_or(0);
     let _ = bytes.try_reserve_exact(reserve.saturating_add(1));
@@ -145,7 +159,7 @@ pub fn read_text(mut reader: impl Read, limit: u64, expected: u64) -> Result<Str
         };
         if bytes.len() as u64 + got as u64 > limit {
             return Err(NotRead::Parse(ParseError::new(format!(
-                "input too large: more than {limit} bytes (the most read as WKT or a vertex list)"
+                "input too large: more than {limit} bytes{note} (the most read as WKT or a vertex list)"
             ))));
         }
         // A failed reservation is reported (the run goes on with the next input), not an abort.
@@ -172,6 +186,52 @@ pub fn read_text(mut reader: impl Read, limit: u64, expected: u64) -> Result<Str
         return Err(NotRead::Parse(located(&bytes)));
     }
     String::from_utf8(bytes).map_err(|e| NotRead::Io(io::Error::other(e)))
+}
+
+/// The whole of `reader` as bytes (WKB, binary or hex), at most `limit` bytes, `expected`
+/// bytes reserved at once; `note` as for [`read_text_noted`].
+///
+/// # Errors
+/// [`NotRead::Io`] for a read error, [`NotRead::Parse`] past `limit` bytes or when memory
+/// cannot be had.
+///
+/// # Examples
+/// ```
+/// use minitri::io::read::limits::{read_bytes, NotRead};
+/// let Err(NotRead::Parse(e)) = read_bytes(std::io::repeat(1), 1000, 0, "") else { panic!() };
+/// assert_eq!(e.to_string(), "input too large: more than 1000 bytes (the most read as WKB)");
+/// assert_eq!(read_bytes(&[1u8, 2][..], 1000, 0, "").ok(), Some(vec![1, 2]));
+/// ```
+pub fn read_bytes(
+    mut reader: impl Read,
+    limit: u64,
+    expected: u64,
+    note: &str,
+) -> Result<Vec<u8>, NotRead> {
+    let mut bytes: Vec<u8> = Vec::new();
+    let reserve = usize::try_from(expected.min(limit)).unwrap_or(0);
+    let _ = bytes.try_reserve_exact(reserve.saturating_add(1));
+    let mut chunk = vec![0; CHUNK];
+    loop {
+        let got = match reader.read(&mut chunk) {
+            Ok(0) => return Ok(bytes),
+            Ok(got) => got,
+            Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(NotRead::Io(e)),
+        };
+        if bytes.len() as u64 + got as u64 > limit {
+            return Err(NotRead::Parse(ParseError::new(format!(
+                "input too large: more than {limit} bytes{note} (the most read as WKB)"
+            ))));
+        }
+        if bytes.try_reserve(got).is_err() {
+            return Err(NotRead::Parse(ParseError::new(format!(
+                "not enough memory to read the input: {} bytes read, no room for more",
+                bytes.len()
+            ))));
+        }
+        bytes.extend_from_slice(&chunk[..got]);
+    }
 }
 
 /// What [`read_line`] read.

@@ -1,6 +1,7 @@
-//! Readers: WKT, GeoJSON and the plain vertex list, all producing [`RawPolygon`]s.
+//! Readers: WKT, GeoJSON, the plain vertex list and WKB, all producing [`RawPolygon`]s.
 //!
-//! Input contract: UTF-8 text. Output guarantee: each polygon as rings of exact decimal
+//! Input contract: UTF-8 text (WKB: bytes, or hex text; see [`wkb`]); a gzip-compressed input
+//! is decompressed first ([`gzip`]), and what it is is decided on its decompressed bytes. Output guarantee: each polygon as rings of exact decimal
 //! coordinates (outer ring first, then the holes in input order), each ring WITHOUT its repeated
 //! closing vertex (a ring whose last vertex equals its first, exactly, loses the last one), so that
 //! the vertex numbering of `docs/cli.md` is simply the order of vertices over the rings. Nothing
@@ -16,12 +17,16 @@
 
 use crate::geom::decimal::Decimal;
 use std::fmt;
+use std::path::Path;
 
+pub mod csv;
 pub mod geojson;
 mod geojson_seed;
 pub mod geojson_stream;
+pub mod gzip;
 pub mod limits;
 pub mod vertices;
+pub mod wkb;
 pub mod wkt;
 
 /// A polygon as read: rings of exact coordinates, outer ring first.
@@ -40,6 +45,10 @@ pub enum Format {
     GeoJson,
     /// One `x y` or `x,y` vertex per line (see `docs/cli.md`).
     Vertices,
+    /// Well-known binary (WKB, EWKB), binary or hex text, one geometry per line ([`wkb`]).
+    Wkb,
+    /// CSV with a `WKT` geometry column, as `--to csv` writes it ([`csv`]).
+    Csv,
 }
 
 /// A position in the input text, both 1-based.
@@ -155,17 +164,105 @@ pub fn detect_start(extension: Option<&str>, start: &str) -> Option<Format> {
             .map(trim_start)
             .any(|l| !l.is_empty() && !l.starts_with('#'))
     };
-    // A first line cut off at the end of `start` that may still become a CSV header (`x,y`)
-    // is decided on more text: `x` alone would look like WKT.
+    // A first line cut off at the end of `start` that may still become a CSV header (`x,y`,
+    // or one with a `WKT` column: any line starting with a letter or a quote may) is decided
+    // on more text: `x` alone would look like WKT. (WKT and CSV are read whole anyway; GeoJSON,
+    // which is streamed, starts with `{` or `[` and is never kept waiting.)
     let undecided = || {
         let (done, last) = match start.rfind('\n') {
             Some(i) => start.split_at(i + 1),
             None => ("", start),
         };
-        first_meaningful(done).is_none() && vertices::may_become_header(last.trim_start())
+        let last = trim_start(last);
+        first_meaningful(done).is_none()
+            && (vertices::may_become_header(last)
+                || last.starts_with(|c: char| c.is_ascii_alphabetic() || c == '"'))
     };
     by_extension(extension)
         .or_else(|| (meaningful() && !undecided()).then(|| detect_content(start)))
+}
+
+/// Decides the format from a file extension, or else from the first bytes of the input
+/// (`start`, after gzip decompression): WKB (binary or hex, [`wkb::looks_like_wkb`]), or else
+/// as [`detect_start`] decides on the text. `None` when more text is needed to decide.
+///
+/// # Examples
+/// ```
+/// use minitri::io::read::{sniff, Format};
+/// assert_eq!(sniff(None, b"0103000000010000000400000000"), Some(Format::Wkb));
+/// assert_eq!(sniff(None, b"POLYGON ((0 0, 1 0, 0 1))\n"), Some(Format::Wkt));
+/// assert_eq!(sniff(None, b"WKT,id\r\n"), Some(Format::Csv));
+/// assert_eq!(sniff(None, b"POLYGON ((0 0, 1 0,"), None, "the first line may still be a CSV header");
+/// assert_eq!(sniff(Some("txt"), b"0103000000010000000400000000"), Some(Format::Vertices));
+/// ```
+pub fn sniff(extension: Option<&str>, start: &[u8]) -> Option<Format> {
+    by_extension(extension)
+        .or_else(|| wkb::looks_like_wkb(start).then_some(Format::Wkb))
+        .or_else(|| detect_start(None, &String::from_utf8_lossy(start)))
+}
+
+/// The error for an input in a format minitri does not read, recognised by its first bytes
+/// (`start`, after gzip decompression), whatever its name and `--from` say: KML, GML and other
+/// XML, a shapefile, FlatGeobuf, a GeoPackage or other SQLite database, (Geo)Parquet, a ZIP
+/// archive (KMZ, a zipped shapefile), or a compression other than gzip.
+///
+/// # Examples
+/// ```
+/// use minitri::io::read::foreign;
+/// let kml = "<?xml version=\"1.0\"?>\n<kml xmlns=\"http://www.opengis.net/kml/2.2\">";
+/// assert_eq!(
+///     foreign(kml.as_bytes()).map(|e| e.to_string()).as_deref(),
+///     Some("not a format minitri reads (KML); convert it first, e.g. to GeoJSON with \
+///           `ogr2ogr -f GeoJSON out.geojson INPUT`")
+/// );
+/// assert!(foreign(b"POLYGON ((0 0, 1 0, 0 1))").is_none());
+/// ```
+pub fn foreign(start: &[u8]) -> Option<ParseError> {
+    let text = start
+        .strip_prefix("\u{feff}".as_bytes())
+        .unwrap_or(start)
+        .trim_ascii_start();
+    let has = |needle: &str| {
+        let head = &start[..start.len().min(4096)];
+        head.windows(needle.len())
+            .any(|w| w.eq_ignore_ascii_case(needle.as_bytes()))
+    };
+    let name = if start.starts_with(b"SQLite format 3\0") {
+        "a GeoPackage or other SQLite database"
+    } else if start.starts_with(b"fgb\x03") {
+        "FlatGeobuf"
+    } else if start.starts_with(&[0x00, 0x00, 0x27, 0x0A]) {
+        "a shapefile"
+    } else if start.starts_with(b"PAR1") {
+        "Parquet or GeoParquet"
+    } else if start.starts_with(b"PK\x03\x04") {
+        "a ZIP archive, such as KMZ or a zipped shapefile"
+    } else if text.starts_with(b"<") {
+        if has("<kml") {
+            "KML"
+        } else if has("gml") {
+            "GML"
+        } else {
+            "XML"
+        }
+    } else {
+        let other = if start.starts_with(b"BZh") && start.get(3).is_some_and(u8::is_ascii_digit) {
+            "bzip2"
+        } else if start.starts_with(b"\xFD7zXZ\0") {
+            "xz"
+        } else if start.starts_with(&[0x28, 0xB5, 0x2F, 0xFD]) {
+            "zstd"
+        } else {
+            return None;
+        };
+        return Some(ParseError::new(format!(
+            "compressed with {other}, which minitri does not read (only gzip); decompress it first"
+        )));
+    };
+    Some(ParseError::new(format!(
+        "not a format minitri reads ({name}); convert it first, e.g. to GeoJSON with \
+         `ogr2ogr -f GeoJSON out.geojson INPUT`"
+    )))
 }
 
 /// The first line of `text` that is neither blank nor a `#` comment, without leading blanks.
@@ -175,14 +272,77 @@ fn first_meaningful(text: &str) -> Option<&str> {
         .find(|l| !l.is_empty() && !l.starts_with('#'))
 }
 
-/// The format a file extension stands for, if any.
-fn by_extension(extension: Option<&str>) -> Option<Format> {
-    match extension.map(str::to_ascii_lowercase).as_deref() {
-        Some("wkt") => Some(Format::Wkt),
-        Some("geojson" | "json" | "geojsonl" | "ndjson" | "geojsons") => Some(Format::GeoJson),
-        Some("txt" | "xy" | "vertices") => Some(Format::Vertices),
-        _ => None,
+/// The file extensions of the input formats (lowercase), the one list that both the readers
+/// ([`by_extension`]) and the walk of a directory use: a file found in a directory is read when
+/// its name ends in one of these, or in one of these and `.gz` (gzip, [`gzip`]).
+pub const EXTENSIONS: &[&str] = &[
+    "wkt", "geojson", "json", "geojsonl", "geojsons", "ndjson", "jsonl", "txt", "xy", "vertices",
+    "wkb",
+];
+
+/// Of [`EXTENSIONS`], those of GeoJSON Lines (read line by line, whatever their content looks
+/// like); the GeoJSON Lines writer's extensions are the same.
+pub const LINES_EXTENSIONS: &[&str] = &["geojsonl", "geojsons", "ndjson", "jsonl"];
+
+/// The format a file extension stands for, if any (one of [`EXTENSIONS`], any case).
+///
+/// # Examples
+/// ```
+/// use minitri::io::read::{by_extension, Format, EXTENSIONS};
+/// assert_eq!(by_extension(Some("JSONL")), Some(Format::GeoJson));
+/// assert_eq!(by_extension(Some("wkb")), Some(Format::Wkb));
+/// assert!(EXTENSIONS.iter().all(|e| by_extension(Some(e)).is_some()));
+/// assert_eq!(by_extension(Some("gz")), None);
+/// ```
+pub fn by_extension(extension: Option<&str>) -> Option<Format> {
+    let extension = extension?.to_ascii_lowercase();
+    if !EXTENSIONS.contains(&extension.as_str()) {
+        return None;
     }
+    Some(match extension.as_str() {
+        "wkt" => Format::Wkt,
+        "txt" | "xy" | "vertices" => Format::Vertices,
+        "wkb" => Format::Wkb,
+        _ => Format::GeoJson,
+    })
+}
+
+/// Is `extension` one of GeoJSON Lines' ([`LINES_EXTENSIONS`], any case)?
+pub fn lines_by_extension(extension: Option<&str>) -> bool {
+    extension.is_some_and(|e| LINES_EXTENSIONS.contains(&e.to_ascii_lowercase().as_str()))
+}
+
+/// The extension that decides a file's format: its last one, or for a gzip-compressed name
+/// (`a.geojson.gz`) the one before `.gz` (`None` when there is none: then the content decides).
+///
+/// # Examples
+/// ```
+/// use minitri::io::read::extension_of;
+/// assert_eq!(extension_of("d/a.wkt".as_ref()), Some("wkt"));
+/// assert_eq!(extension_of("d/a.GeoJSON.GZ".as_ref()), Some("GeoJSON"));
+/// assert_eq!(extension_of("d/a.gz".as_ref()), None);
+/// assert_eq!(extension_of("-".as_ref()), None);
+/// ```
+pub fn extension_of(path: &Path) -> Option<&str> {
+    let extension = path.extension()?.to_str()?;
+    if extension.eq_ignore_ascii_case("gz") {
+        Path::new(path.file_stem()?).extension()?.to_str()
+    } else {
+        Some(extension)
+    }
+}
+
+/// Is `path` the name of an input file, read when found in a directory: its extension, or the
+/// one before `.gz`, one of [`EXTENSIONS`]?
+///
+/// # Examples
+/// ```
+/// use minitri::io::read::is_input_name;
+/// assert!(is_input_name("a.jsonl".as_ref()) && is_input_name("a.wkt.gz".as_ref()));
+/// assert!(!is_input_name("a.gz".as_ref()) && !is_input_name("a.csv".as_ref()));
+/// ```
+pub fn is_input_name(path: &Path) -> bool {
+    by_extension(extension_of(path)).is_some()
 }
 
 /// A line without its leading blanks and byte-order marks (a file may start with one, and the
@@ -191,11 +351,15 @@ fn trim_start(line: &str) -> &str {
     line.trim_start_matches(|c: char| c.is_whitespace() || c == '\u{feff}')
 }
 
-/// Decides the format from the first meaningful line: a CSV header (`x,y`, two names and a
+/// Decides the format from the first meaningful line: a CSV header with a `WKT` column is CSV
+/// with geometries ([`csv`]); a CSV header (`x,y`, two names and a
 /// comma) is a vertex list; else by its first character: `{`/`[` is GeoJSON, a letter is WKT,
 /// anything else (digits, signs) is a vertex list.
 fn detect_content(text: &str) -> Format {
     let line = first_meaningful(text);
+    if line.is_some_and(csv::is_wkt_header) {
+        return Format::Csv;
+    }
     if line.is_some_and(vertices::is_header) {
         return Format::Vertices;
     }
@@ -217,6 +381,12 @@ pub fn read(format: Format, text: &str) -> Result<Vec<RawPolygon>, ParseError> {
         Format::Wkt => wkt::read(text),
         Format::GeoJson => geojson::read(text),
         Format::Vertices => vertices::read(text),
+        Format::Wkb => wkb::read_parts_within(text.as_bytes(), limits::MAX_VERTICES)?
+            .into_iter()
+            .collect(),
+        Format::Csv => csv::read_parts_within(text, limits::MAX_VERTICES)?
+            .into_iter()
+            .collect(),
     }
 }
 
@@ -258,5 +428,41 @@ pub fn read_parts_within(
         Format::Wkt => wkt::read_parts_within(text, max_vertices),
         Format::GeoJson => geojson::read_parts(text),
         Format::Vertices => vertices::read_parts_within(text, max_vertices),
+        Format::Wkb => wkb::read_parts_within(text.as_bytes(), max_vertices),
+        Format::Csv => csv::read_parts_within(text, max_vertices),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_decision_on_a_prefix_is_the_decision_on_the_whole() {
+        // What the read_auto fuzz target requires: whatever `detect_start` decides on a prefix,
+        // `detect` decides on the whole text.
+        for text in [
+            "a,b,WKT\nPOLYGON ((0 0, 1 0, 0 1))\n",
+            "\"WKT\",id\n\"POLYGON ((0 0, 1 0, 0 1))\",1\n",
+            "ab(,WKT\n",
+            "x,y\n0,0\n1,0\n0,1\n",
+            "POLYGON ((0 0, 1 0, 0 1))\n",
+            "# comment\n\u{feff}lon,lat\n0 0\n",
+            "{\"type\": \"Polygon\", \"coordinates\": [[[0, 0], [1, 0], [0, 1]]]}",
+        ] {
+            let whole = detect(None, text);
+            for end in (0..=text.len()).filter(|&e| text.is_char_boundary(e)) {
+                if let Some(early) = detect_start(None, &text[..end]) {
+                    assert_eq!(early, whole, "{text:?} cut at {end}");
+                }
+            }
+        }
+        assert_eq!(detect(None, "a,b,WKT\n"), Format::Csv);
+        assert_eq!(detect(None, "x,y\n"), Format::Vertices);
+        // GeoJSON is decided on its first character, however long its first line.
+        assert_eq!(
+            detect_start(None, "{\"type\": \"Poly"),
+            Some(Format::GeoJson)
+        );
     }
 }

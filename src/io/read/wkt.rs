@@ -91,9 +91,11 @@ pub fn read(text: &str) -> Result<Vec<RawPolygon>, ParseError> {
     read_parts(text)?.into_iter().collect()
 }
 
-/// Reads the one WKT geometry of `text` and returns its parts in input order: its polygons,
+/// Reads the WKT geometry of `text` and returns its parts in input order: its polygons,
 /// and for each member of a `GEOMETRYCOLLECTION` of another type (`POINT`, `LINESTRING`, ...)
-/// the error that names it, at its line and column.
+/// the error that names it, at its line and column. Several geometries, each starting on a
+/// new line (WKT lines, as `--to wkt` writes them), are read in turn, their polygons numbered
+/// on; a second geometry on the line where the previous one ends is an error.
 ///
 /// # Errors
 /// As [`read`], but for the members of collections of other types; a geometry without any part
@@ -151,6 +153,11 @@ pub fn read_parts_within(
     }
     parser.srid_prefix()?;
     parser.geometry(0)?;
+    // WKT lines: a further geometry on a later line (as `--to wkt` writes them).
+    while parser.next_line_geometry() {
+        parser.srid_prefix()?;
+        parser.geometry(0)?;
+    }
     parser.end()?;
     if parser.parts.is_empty() {
         return Err(ParseError::new("no polygon found: the geometry is EMPTY"));
@@ -618,6 +625,24 @@ impl<'a> Parser<'a> {
         Ok([x, y])
     }
 
+    /// Whether a further geometry (its type keyword, or `SRID=`) starts on a later line than the
+    /// end of the one just read, after an optional `;`: WKT lines, one geometry per line, read
+    /// one after the other. A second geometry on the same line stays an error ([`Self::end`]).
+    fn next_line_geometry(&mut self) -> bool {
+        let saved = self.pos;
+        if self.peek().kind == Tok::Semicolon {
+            self.next();
+        }
+        let token = self.peek();
+        let starts = matches!(token.kind, Tok::Word(w) if is_geometry_keyword(w) || w.eq_ignore_ascii_case("SRID"));
+        let between = self.text.get(saved..token.offset).unwrap_or_default();
+        if starts && between.contains('\n') {
+            return true;
+        }
+        self.pos = saved;
+        false
+    }
+
     /// Checks that nothing but an optional `;` follows the geometry.
     fn end(&mut self) -> Result<(), ParseError> {
         if self.peek().kind == Tok::Semicolon {
@@ -651,6 +676,32 @@ mod tests {
 
     fn error(text: &str) -> String {
         read(text).expect_err(text).to_string()
+    }
+
+    #[test]
+    fn wkt_lines_are_read_one_geometry_per_line_and_a_second_on_one_line_is_an_error() {
+        // What `--to wkt` writes: one collection of triangles per line, EMPTY for a failure.
+        let text =
+            "GEOMETRYCOLLECTION (POLYGON ((0 0, 1 0, 0 1, 0 0)), POLYGON ((1 0, 1 1, 0 1, 1 0)))\n\
+                    GEOMETRYCOLLECTION EMPTY\n\
+                    SRID=4326;POLYGON Z ((5 5 1, 6 5 1, 5 6 1));\n\
+                    # a comment\n\
+                    MULTIPOLYGON (((0 0, 2 0, 0 2)))\n";
+        let parts = read_parts(text).unwrap();
+        let sizes: Vec<usize> = parts
+            .iter()
+            .map(|p| p.as_ref().unwrap().rings[0].len())
+            .collect();
+        assert_eq!(sizes, [3, 3, 3, 3]);
+        assert_eq!(
+            error("POLYGON ((0 0, 1 0, 0 1)) POLYGON ((0 0, 1 0, 0 1))\nPOLYGON ((0 0, 1 0, 0 1))"),
+            "line 1, column 27: unexpected text after the geometry: \"POLYGON ((0 0, 1 0, 0 1))\" \
+             (a second geometry is not allowed; wrap several in a GEOMETRYCOLLECTION or MULTIPOLYGON)"
+        );
+        assert_eq!(
+            error("POLYGON ((0 0, 1 0, 0 1))\ngarbage"),
+            "line 2, column 1: unexpected text after the geometry: \"garbage\""
+        );
     }
 
     #[test]
@@ -979,9 +1030,10 @@ mod tests {
 
     #[test]
     fn rejects_text_after_the_geometry() {
+        // A second geometry on the same line (on a line of its own it is read: WKT lines).
         assert_eq!(
-            error("POLYGON ((0 0, 1 0, 0 1))\nPOLYGON ((5 5, 6 5, 5 6, 5 5), (1 1, 2 2, 1 2))"),
-            "line 2, column 1: unexpected text after the geometry: \"POLYGON ((5 5, 6 5, 5 6, 5 5), (1 1, 2 2...\" \
+            error("POLYGON ((0 0, 1 0, 0 1)) POLYGON ((5 5, 6 5, 5 6, 5 5), (1 1, 2 2, 1 2))"),
+            "line 1, column 27: unexpected text after the geometry: \"POLYGON ((5 5, 6 5, 5 6, 5 5), (1 1, 2 2...\" \
              (a second geometry is not allowed; wrap several in a GEOMETRYCOLLECTION or MULTIPOLYGON)"
         );
         assert_eq!(

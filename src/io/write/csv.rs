@@ -11,7 +11,7 @@
 //!
 //! | column | value |
 //! |---|---|
-//! | `WKT` | the feature's line of `--to wkt` (`MULTIPOLYGON EMPTY` when nothing was triangulated); empty for a failure of an input as a whole |
+//! | `WKT` | the feature's line of `--to wkt` (`GEOMETRYCOLLECTION EMPTY` when nothing was triangulated); empty for a failure of an input as a whole |
 //! | `source` | the input name (`-` for standard input) |
 //! | `feature` | the feature's number in its source, from 0; for an input without features (WKT, vertex lists) the polygon's; empty for a failure of an input as a whole |
 //! | `line` | for GeoJSON Lines, the feature's line (from 1) |
@@ -128,7 +128,7 @@ fn row(first: &Outcome, record: &[Rendered]) -> [String; COLUMNS.len()] {
     let triangulated = solved && summary.faces.is_none();
     [
         if is_feature(first) {
-            wkt::multipolygon(record)
+            wkt::collection(record)
         } else {
             String::new()
         },

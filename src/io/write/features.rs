@@ -7,16 +7,19 @@
 //! order, whatever happened to it:
 //!
 //! ```text
-//! {"type": "Feature", "id": 17, "geometry": {"type": "MultiPolygon", "coordinates": [...]},
+//! {"type": "Feature", "id": 17, "geometry": {"type": "GeometryCollection", "geometries": [...]},
 //!  "properties": {"name": "a", "minitri": {"source": "a.geojsonl", "feature": 0, "ok": true,
 //!  "algorithm": "minitri", "parts": 1, "triangle_count": 6, "degenerate_count": 0, "optimal": true}}}
 //! ```
 //!
 //! `id` and the input's `properties` members are the input's bytes as written; minitri's facts
 //! go in one member `minitri` added to the properties (so no name of the input's is taken).
-//! The geometry is a MultiPolygon of every triangle of every part (each a closed
-//! counter-clockwise ring, exact decimals as in the input), `null` when nothing was
-//! triangulated. A feature that failed (in any part, or a `null` geometry, or a line that is not
+//! The geometry is a GeometryCollection of Polygons, one per triangle of every part (each a
+//! closed counter-clockwise ring, exact decimals as in the input), `null` when nothing was
+//! triangulated. Not a MultiPolygon: the triangles share edges, which the parts of a valid
+//! MultiPolygon may not (OGC Simple Features; shapely and PostGIS call such a MultiPolygon
+//! invalid), and a GeometryCollection of Polygons is what PostGIS's `ST_TriangulatePolygon` and
+//! shapely's `constrained_delaunay_triangles` return. A feature that failed (in any part, or a `null` geometry, or a line that is not
 //! JSON) still gets its Feature, with `"ok": false` and `errors` (the messages); a polygon of an
 //! input without features (WKT or vertex input; with `--repair`, all its pieces) gets a Feature
 //! of its own, without `id`, and so does an outcome about an input as a whole (an unreadable
@@ -165,7 +168,7 @@ fn feature_text(first: &Outcome, outcomes: &[Rendered]) -> String {
         "null".to_string()
     } else {
         format!(
-            "{{\"type\": \"MultiPolygon\", \"coordinates\": [{}]}}",
+            "{{\"type\": \"GeometryCollection\", \"geometries\": [{}]}}",
             geometries.join(", ")
         )
     };
@@ -180,8 +183,9 @@ fn feature_text(first: &Outcome, outcomes: &[Rendered]) -> String {
     )
 }
 
-/// The MultiPolygon members of a solved outcome: its triangles (or pseudotriangles) as
-/// polygons `[[[x, y], ...]]`, comma-separated; `None` for a failed outcome.
+/// The GeometryCollection members of a solved outcome: its triangles (or pseudotriangles) as
+/// Polygons `{"type": "Polygon", "coordinates": [[[x, y], ...]]}`, comma-separated; `None` for
+/// a failed outcome.
 pub fn render(outcome: &Outcome) -> Option<String> {
     let (Ok(solved), Some(polygon)) = (&outcome.result, &outcome.polygon) else {
         return None;
@@ -191,7 +195,7 @@ pub fn render(outcome: &Outcome) -> Option<String> {
         if !out.is_empty() {
             out.push_str(", ");
         }
-        out.push_str("[[");
+        out.push_str("{\"type\": \"Polygon\", \"coordinates\": [[");
         let mut first = None;
         for v in vertices {
             let [x, y] = polygon.coordinates(v);
@@ -205,7 +209,7 @@ pub fn render(outcome: &Outcome) -> Option<String> {
         if let Some(first) = first {
             let _ = write!(out, ", {first}");
         }
-        out.push_str("]]");
+        out.push_str("]]}");
     };
     match &solved.pseudo {
         Some(p) => {

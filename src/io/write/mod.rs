@@ -21,14 +21,14 @@ use std::io::{self, Write};
 pub enum OutputFormat {
     /// The JSON document of `docs/cli.md`.
     Json,
-    /// A GeoJSON FeatureCollection, one Feature per input feature (a MultiPolygon of its
-    /// triangles; [`features`]).
+    /// A GeoJSON FeatureCollection, one Feature per input feature (a GeometryCollection of its
+    /// triangles as Polygons; [`features`]).
     GeoJson,
     /// GeoJSON Lines: the same Features, one per line ([`features`]).
     GeoJsonLines,
     /// A GeoJSON FeatureCollection, one Feature per triangle ([`geojson`]).
     GeoJsonTriangles,
-    /// WKT, one MULTIPOLYGON of triangles per line and input feature ([`wkt`]).
+    /// WKT, one GEOMETRYCOLLECTION of triangle POLYGONs per line and input feature ([`wkt`]).
     Wkt,
     /// CSV, one row per input feature: its triangles as WKT, its id and properties, minitri's
     /// facts ([`csv`]).
@@ -44,7 +44,7 @@ impl OutputFormat {
         Some(match extension.to_ascii_lowercase().as_str() {
             "json" => OutputFormat::Json,
             "geojson" => OutputFormat::GeoJson,
-            "geojsonl" | "geojsons" | "ndjson" | "jsonl" => OutputFormat::GeoJsonLines,
+            e if crate::io::read::LINES_EXTENSIONS.contains(&e) => OutputFormat::GeoJsonLines,
             "wkt" => OutputFormat::Wkt,
             "csv" => OutputFormat::Csv,
             "svg" => OutputFormat::Svg(svg::Style::default()),

@@ -1,4 +1,4 @@
-//! The WKT writer: one `MULTIPOLYGON` of triangles per line, one line per input feature.
+//! The WKT writer: one `GEOMETRYCOLLECTION` of triangles per line, one line per input feature.
 //!
 //! Input contract: outcomes in order, the outcomes of one input feature together
 //! ([`super::group`]); a solved outcome carries its
@@ -8,14 +8,17 @@
 //! that line k + 1 of the output is feature k of the input (features are numbered from 0; for
 //! several inputs, their features in turn):
 //!
-//! - a GeoJSON feature: `MULTIPOLYGON (((x y, x y, x y, x y)), ...)`, the triangles of all its
-//!   parts (a MultiPolygon's polygons, in order), like the geometry of its `--to geojson`
-//!   Feature; an input without features (WKT, vertex lists): one line per polygon;
+//! - a GeoJSON feature: `GEOMETRYCOLLECTION (POLYGON ((x y, x y, x y, x y)), ...)`, the
+//!   triangles of all its parts (a MultiPolygon's polygons, in order), like the geometry of its
+//!   `--to geojson` Feature; an input without features (WKT, vertex lists): one line per
+//!   polygon. A collection of polygons, not a `MULTIPOLYGON`: the triangles share edges, which
+//!   the polygons of a valid MultiPolygon may not (OGC); PostGIS's `ST_TriangulatePolygon`
+//!   gives the same form;
 //! - each triangle a closed counter-clockwise ring (first corner repeated), in the order of
 //!   the JSON output, coordinates the input decimals exactly
 //!   ([`crate::geom::polygon::Grid::format`]); for `pseudo` and `pseudo-hull`, the
 //!   pseudotriangles instead, in the order of the JSON output; with `--repair`, every piece's;
-//! - `MULTIPOLYGON EMPTY` when nothing of the feature was triangulated: an invalid polygon, a
+//! - `GEOMETRYCOLLECTION EMPTY` when nothing of the feature was triangulated: an invalid polygon, a
 //!   feature that is not a polygon, a `null` geometry, a line that is not JSON, a feature all
 //!   of whose parts failed;
 //! - a feature with some failed parts: the triangles of the parts that were triangulated, as
@@ -28,7 +31,9 @@
 //! `id` and `properties` are in `--to csv` ([`super::csv`]), whose `WKT` column holds the same
 //! lines.
 //!
-//! Why lines and not one `GEOMETRYCOLLECTION`: each line is a complete WKT geometry standing for
+//! The lines read back into minitri (its WKT reader takes one geometry per line).
+//!
+//! Why lines and not one `GEOMETRYCOLLECTION` for the run: each line is a complete WKT geometry standing for
 //! one input feature, the one-geometry-per-record form of WKT-lines files and of WKT columns in
 //! delimited text (which GIS tools import), and what shell tools (`wc -l`, `grep`, `split`,
 //! `paste` with the input's ids) take; it streams with nothing to close at the end. A
@@ -42,7 +47,7 @@ use super::{Renderer, Sink};
 use crate::pipeline::Outcome;
 use std::io::{self, Write};
 
-/// Writes one `MULTIPOLYGON` line per input feature.
+/// Writes one `GEOMETRYCOLLECTION` line per input feature.
 pub struct WktWriter<W: Write> {
     out: W,
     records: Records,
@@ -81,7 +86,7 @@ impl<W: Write> WktWriter<W> {
 /// Writes the line of one record: none for a failure about an input as a whole.
 fn write_line(out: &mut impl Write, record: &[Rendered]) -> io::Result<()> {
     match record.first() {
-        Some((first, _)) if is_feature(first) => writeln!(out, "{}", multipolygon(record)),
+        Some((first, _)) if is_feature(first) => writeln!(out, "{}", collection(record)),
         _ => Ok(()),
     }
 }
@@ -92,22 +97,22 @@ pub fn is_feature(outcome: &Outcome) -> bool {
     outcome.feature.is_some() || outcome.index.is_some()
 }
 
-/// The `MULTIPOLYGON` of a record's rendered outcomes: every triangle of every solved outcome,
-/// in order, or `MULTIPOLYGON EMPTY` when none was solved.
-pub fn multipolygon(record: &[Rendered]) -> String {
+/// The `GEOMETRYCOLLECTION` of a record's rendered outcomes: every triangle of every solved
+/// outcome, in order, or `GEOMETRYCOLLECTION EMPTY` when none was solved.
+pub fn collection(record: &[Rendered]) -> String {
     let members: Vec<&str> = record
         .iter()
         .filter_map(|(_, rendered)| rendered.as_deref().filter(|m| !m.is_empty()))
         .collect();
     if members.is_empty() {
-        "MULTIPOLYGON EMPTY".to_string()
+        "GEOMETRYCOLLECTION EMPTY".to_string()
     } else {
-        format!("MULTIPOLYGON ({})", members.join(", "))
+        format!("GEOMETRYCOLLECTION ({})", members.join(", "))
     }
 }
 
-/// The `MULTIPOLYGON` members of a solved outcome: its triangles (or pseudotriangles) as
-/// `((x y, x y, x y, x y))`, comma-separated; `None` for a failed outcome.
+/// The `GEOMETRYCOLLECTION` members of a solved outcome: its triangles (or pseudotriangles) as
+/// `POLYGON ((x y, x y, x y, x y))`, comma-separated; `None` for a failed outcome.
 pub fn render(outcome: &Outcome) -> Option<String> {
     let (Ok(solved), Some(polygon)) = (&outcome.result, &outcome.polygon) else {
         return None;
@@ -124,7 +129,7 @@ pub fn render(outcome: &Outcome) -> Option<String> {
             .map(|face| {
                 let ring: Vec<String> = face.cycle.iter().map(|&v| coordinate(v)).collect();
                 let first = ring.first().cloned().unwrap_or_default();
-                format!("(({}, {first}))", ring.join(", "))
+                format!("POLYGON (({}, {first}))", ring.join(", "))
             })
             .collect(),
         None => solved
@@ -133,7 +138,7 @@ pub fn render(outcome: &Outcome) -> Option<String> {
             .iter()
             .map(|tri| {
                 let [a, b, c] = tri.map(coordinate);
-                format!("(({a}, {b}, {c}, {a}))")
+                format!("POLYGON (({a}, {b}, {c}, {a}))")
             })
             .collect(),
     };
