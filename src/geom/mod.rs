@@ -3,6 +3,7 @@ pub mod decimal;
 pub mod kernel;
 pub mod polygon;
 pub mod repair;
+pub(crate) mod stabbing;
 pub mod status;
 pub(crate) mod touch;
 pub mod validate;

@@ -27,11 +27,15 @@
 //! 5. Around each touch point, the walk arriving along a ring's edge leaves along the edge that
 //!    follows clockwise: the next ring's outgoing edge. Following these links gives the walks.
 //!
-//! Complexity: O(n log n) for steps 1, 2, 3 and 5; step 4 is O(n) per group of touching rings
-//! (bounding boxes skip most rings).
+//! Complexity: O(n log n) for steps 1, 2, 3 and 5; step 4 tests one point per group of touching
+//! rings against the rings whose height range holds it and the outer ring's edges whose height
+//! range holds it, found by stabbing queries ([`super::stabbing`]): O(n log n) plus the rings
+//! and edges found (on a raster layer's polygon of 355,236 vertices and 39,723 holes, the step
+//! went from a third of `-a ear`, 2.8 s in all, to about 3%, 0.6 s in all).
 
 use super::kernel::{cmp_angle, cross, Coord};
 use super::polygon::{Polygon, Ring};
+use super::stabbing::{ByY, Stabbing};
 use super::validate::{self, Contacts, InvalidPolygon};
 use std::cmp::Ordering;
 
@@ -306,7 +310,23 @@ fn placement<P: Coord>(
             })
         })
         .collect();
+    // Which rings' height ranges and which outer edges' height ranges hold a point: the only
+    // rings a point can be inside, the only outer edges a horizontal ray from it can cross.
+    let by_height = Stabbing::new(
+        (0..rings)
+            .map(|r| (ByY(boxes[r][2]), ByY(boxes[r][3]), r))
+            .collect(),
+    );
+    let outer_edges = Stabbing::new(
+        p.ring_range(0)
+            .map(|i| {
+                let (a, b) = (p.point(i), p.point(p.next(i)));
+                (ByY(a).min(ByY(b)), ByY(a).max(ByY(b)), i)
+            })
+            .collect(),
+    );
     let mut done = vec![false; rings];
+    let mut candidates = Vec::new();
     for r in 0..rings {
         let group = joined[r];
         if !touching[r] || done[group] {
@@ -317,13 +337,24 @@ fn placement<P: Coord>(
         };
         done[group] = true;
         let q = p.point(v);
-        for s in (0..rings).filter(|&s| joined[s] != group) {
+        // The outer ring always (outside it is an error), then every ring whose height range
+        // holds `q`, in ring order: no other ring can hold `q`.
+        candidates.clear();
+        candidates.push(0);
+        by_height.each(ByY(q), |s| candidates.push(s));
+        candidates[1..].sort_unstable();
+        candidates.dedup();
+        for &s in candidates.iter().filter(|&&s| joined[s] != group) {
             let b = boxes[s];
             let inside = P::cmp_x(b[0], q).is_le()
                 && P::cmp_x(q, b[1]).is_le()
                 && P::cmp_y(b[2], q).is_le()
                 && P::cmp_y(q, b[3]).is_le()
-                && inside_ring(p, s, q);
+                && if s == 0 {
+                    crosses_odd(p, q, |count| outer_edges.each(ByY(q), count))
+                } else {
+                    crosses_odd(p, q, |count| p.ring_range(s).for_each(count))
+                };
             match (s == 0, inside, r == 0) {
                 (true, false, _) => errors.push(InvalidPolygon::HoleOutside { hole: r }),
                 (false, true, true) => errors.push(InvalidPolygon::OuterInsideHole { hole: s }),
@@ -351,17 +382,18 @@ fn placement<P: Coord>(
     errors
 }
 
-/// Whether `q` (on no edge of ring `r`) lies inside ring `r`: exact crossing count of the ray
-/// to the right.
-fn inside_ring<P: Coord>(p: &Polygon<P>, r: usize, q: P) -> bool {
+/// Whether `q` (on no edge of the ring) lies inside a ring, given (by `edges`, which calls its
+/// argument with edge starts) at least every edge of the ring whose height range holds `q`: exact
+/// crossing count of the ray to the right.
+fn crosses_odd<P: Coord>(p: &Polygon<P>, q: P, edges: impl FnOnce(&mut dyn FnMut(usize))) -> bool {
     let mut inside = false;
-    for i in p.ring_range(r) {
+    edges(&mut |i| {
         let (a, b) = (p.point(i), p.point(p.next(i)));
         if P::cmp_y(a, q).is_gt() != P::cmp_y(b, q).is_gt()
             && (cross(a, b, q) > 0) == P::cmp_y(b, a).is_gt()
         {
             inside = !inside;
         }
-    }
+    });
     inside
 }
