@@ -721,8 +721,8 @@ mod tests {
             let key = |m: &crate::algo::minitri::degenerate::Degenerate| (m.a, m.b, m.c);
             let mut swept = minimally_degenerate_by_sweep(&p);
             let base = plain(&p).expect("plain");
-            let (mut walked, _, complete) = minimally_degenerate_over_until(&p, base, None);
-            assert!(complete);
+            let (mut walked, _, unexamined) = minimally_degenerate_over_until(&p, base, None);
+            assert_eq!(unexamined, 0);
             swept.sort_by_key(key);
             walked.sort_by_key(key);
             assert_eq!(walked, swept, "{:?}", p.points());

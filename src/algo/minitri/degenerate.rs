@@ -172,12 +172,13 @@ pub fn minimally_degenerate_and_mesh<P: Coord>(
 
 /// [`minimally_degenerate_and_mesh`], stopping at `deadline`: the triangles found by then (from
 /// a subset of the middle vertices; each is minimally degenerate all the same), the mesh, and
-/// whether the search finished (`false`: some were not looked for). The deadline is read before
-/// every 16th middle vertex.
+/// how many vertices that could be a middle ([`can_be_middle`]) were not looked from (0: the
+/// search finished). A vertex is looked from completely or not at all: every triangle whose
+/// middle was looked from is found. The deadline is read before every 16th middle vertex.
 pub fn minimally_degenerate_and_mesh_until<P: Coord>(
     polygon: &Polygon<P>,
     deadline: Option<std::time::Instant>,
-) -> (Vec<Degenerate>, Vec<[usize; 3]>, bool) {
+) -> (Vec<Degenerate>, Vec<[usize; 3]>, usize) {
     let plain = crate::algo::plain_polygon_for_walking(polygon);
     minimally_degenerate_over_until(polygon, plain, deadline)
 }
@@ -193,42 +194,45 @@ pub fn minimally_degenerate_over_until<P: Coord>(
     polygon: &Polygon<P>,
     plain: Vec<[usize; 3]>,
     deadline: Option<std::time::Instant>,
-) -> (Vec<Degenerate>, Vec<[usize; 3]>, bool) {
+) -> (Vec<Degenerate>, Vec<[usize; 3]>, usize) {
     let mut mesh = Mesh::new(polygon, plain);
     if polygon.len() >= FLIPS_FROM {
         mesh.flip_towards_delaunay(polygon, FLIPS_PER_VERTEX * polygon.len());
     }
     let cut_short = std::sync::atomic::AtomicBool::new(false);
+    let unexamined = std::sync::atomic::AtomicUsize::new(0);
     // The vertices are independent searches over a shared mesh: in parallel (on the current
     // rayon pool) by blocks of vertices, concatenated in vertex order, so the result does not
     // depend on the number of threads. A polygon of one block skips the pool altogether.
     let n = polygon.len();
     if n <= PARALLEL_BLOCK {
-        let found = search_range(polygon, &mesh, 0..n, deadline, &cut_short);
-        return (found, mesh.into_triangles(), !cut_short.into_inner());
+        let found = search_range(polygon, &mesh, 0..n, deadline, &cut_short, &unexamined);
+        return (found, mesh.into_triangles(), unexamined.into_inner());
     }
     let blocks: Vec<Vec<Degenerate>> = (0..n.div_ceil(PARALLEL_BLOCK))
         .into_par_iter()
         .map(|block| {
             let range = block * PARALLEL_BLOCK..((block + 1) * PARALLEL_BLOCK).min(n);
-            search_range(polygon, &mesh, range, deadline, &cut_short)
+            search_range(polygon, &mesh, range, deadline, &cut_short, &unexamined)
         })
         .collect();
     (
         blocks.concat(),
         mesh.into_triangles(),
-        !cut_short.into_inner(),
+        unexamined.into_inner(),
     )
 }
 
 /// The triangles found from the vertices of `range`, in vertex order, until `deadline` (then
-/// `cut_short` is set).
+/// `cut_short` is set, and the vertices of `range` that could be a middle and were not looked
+/// from are added to `unexamined`).
 fn search_range<P: Coord>(
     polygon: &Polygon<P>,
     mesh: &Mesh,
     range: std::ops::Range<usize>,
     deadline: Option<std::time::Instant>,
     cut_short: &std::sync::atomic::AtomicBool,
+    unexamined: &std::sync::atomic::AtomicUsize,
 ) -> Vec<Degenerate> {
     use std::sync::atomic::Ordering::Relaxed;
     // One workspace per thread, kept from call to call (a batch of small polygons would
@@ -248,10 +252,13 @@ fn search_range<P: Coord>(
             unreachable!("slot {k} holds a workspace of this kernel")
         };
         let mut out = Vec::new();
+        let end = range.end;
         for b in range {
             if let Some(deadline) = deadline.filter(|_| b % 16 == 0) {
                 if cut_short.load(Relaxed) || std::time::Instant::now() >= deadline {
                     cut_short.store(true, Relaxed);
+                    let left = (b..end).filter(|&v| can_be_middle(polygon, v)).count();
+                    unexamined.fetch_add(left, Relaxed);
                     break;
                 }
             }

@@ -67,7 +67,8 @@ pub fn triangulate_within<P: Coord>(
     if polygon.holes() > 0 {
         return triangulate_general(polygon, deadline);
     }
-    let (mdts, base, complete) = degenerate::minimally_degenerate_and_mesh_until(polygon, deadline);
+    let (mdts, base, unexamined) =
+        degenerate::minimally_degenerate_and_mesh_until(polygon, deadline);
     let chosen = circle_mis(polygon, &mdts);
     drop(mdts);
     // With nothing chosen the only piece is P itself, and step 1's plain triangulation is one;
@@ -81,10 +82,11 @@ pub fn triangulate_within<P: Coord>(
     let degenerate = chosen.iter().map(|m| [m.a, m.b, m.c]).collect();
     // Step 1 cut short by the deadline: the triangles chosen among those found are independent
     // all the same (dependence is a relation between pairs), so the triangulation is valid, but
-    // not proved minimum. Every triangle of a maximum independent set has its own middle vertex
-    // (triangles sharing their middle are dependent), so the number of vertices that could be a
-    // middle bounds `d` from above, whichever were searched.
-    let lower = (!complete).then(|| lower_bound(polygon, middle_candidates(polygon)));
+    // not proved minimum. A maximum independent set of all the triangles is, on the middles
+    // looked from (all of whose triangles were found), an independent set of the found ones,
+    // at most as large as the chosen maximum one; and on the others at most one triangle per
+    // middle (triangles sharing their middle are dependent). So `d <= chosen + unexamined`.
+    let lower = (unexamined > 0).then(|| lower_bound(polygon, chosen.len() + unexamined));
     let optimal = lower.is_none_or(|lower| lower >= triangles.len());
     Ok(Triangulation {
         algorithm: Algorithm::Minitri,
@@ -94,14 +96,6 @@ pub fn triangulate_within<P: Coord>(
         lower_bound: lower.filter(|_| !optimal),
         stopped: (!optimal).then_some(Stopped::TimeLimit),
     })
-}
-
-/// The number of vertices that could be the middle of a minimally degenerate triangle (angle of
-/// 180 degrees or more): an upper bound on `d`.
-fn middle_candidates<P: Coord>(polygon: &Polygon<P>) -> usize {
-    (0..polygon.len())
-        .filter(|&v| degenerate::can_be_middle(polygon, v))
-        .count()
 }
 
 /// The minimum triangulation of any valid polygon, holes allowed, by the general method: all
@@ -129,8 +123,9 @@ pub fn triangulate_general<P: Coord>(
     polygon: &Polygon<P>,
     deadline: Option<Instant>,
 ) -> Result<Triangulation, TriangulateError> {
-    let (mdts, base, complete) = degenerate::minimally_degenerate_and_mesh_until(polygon, deadline);
-    general_from(polygon, mdts, base, complete, deadline)
+    let (mdts, base, unexamined) =
+        degenerate::minimally_degenerate_and_mesh_until(polygon, deadline);
+    general_from(polygon, mdts, base, unexamined, deadline)
 }
 
 /// Chen & Chang's steps on the boundary walks of touching rings (`crate::algo::walks`,
@@ -157,10 +152,10 @@ pub fn triangulate_walks<P: Coord>(
         algorithm: Algorithm::Minitri,
         detail,
     })?;
-    let (mdts, base, complete) =
+    let (mdts, base, unexamined) =
         degenerate::minimally_degenerate_over_until(polygon, plain, deadline);
-    if polygon.holes() > 0 || !complete {
-        return general_from(polygon, mdts, base, complete, deadline);
+    if polygon.holes() > 0 || unexamined > 0 {
+        return general_from(polygon, mdts, base, unexamined, deadline);
     }
     // One walk (a weakly simple polygon): steps 2 and 3 as for a simple polygon, the walk read
     // as the circle (stored vertices are in walk order): polynomial, no search.
@@ -191,19 +186,21 @@ fn circle_mis<P: Coord>(
 }
 
 /// Steps 2 to 5 of [`triangulate_general`], from the minimally degenerate triangles found
-/// (`complete`: all of them) and a plain triangulation `base`.
+/// (all of those whose middle was looked from; `unexamined` vertices that could be a middle
+/// were not) and a plain triangulation `base`.
 fn general_from<P: Coord>(
     polygon: &Polygon<P>,
     mut mdts: Vec<degenerate::Degenerate>,
     base: Vec<[usize; 3]>,
-    complete: bool,
+    unexamined: usize,
     deadline: Option<Instant>,
 ) -> Result<Triangulation, TriangulateError> {
-    // Once the search may not see every minimally degenerate triangle, an upper bound on `d`
-    // over ALL of them: every vertex that could be a middle (angle of 180 degrees or more) when
-    // some were not looked for, else their distinct middles (taken before any is dropped).
-    let mut d_all = (!complete).then(|| middle_candidates(polygon));
-    let mut stopped = (!complete).then_some(Stopped::TimeLimit);
+    // An upper bound on `d` over ALL the minimally degenerate triangles: on the middles looked
+    // from, the search's bound over the triangles found, or (once some are dropped to fit the
+    // graph) their distinct middles, taken before any is dropped; plus one per vertex that
+    // could be a middle and was not looked from (triangles sharing a middle are dependent).
+    let mut examined_bound: Option<usize> = None;
+    let mut stopped = (unexamined > 0).then_some(Stopped::TimeLimit);
     let mut sorted = false;
     let graph = loop {
         let late = deadline.is_some_and(|d| Instant::now() >= d);
@@ -222,7 +219,7 @@ fn general_from<P: Coord>(
             Stopped::GraphSize
         });
         if !sorted {
-            d_all.get_or_insert_with(|| distinct_middles(&mdts));
+            examined_bound.get_or_insert_with(|| distinct_middles(&mdts));
             mdts.sort_by(|m, o| extent(polygon, m).total_cmp(&extent(polygon, o)));
             sorted = true;
         }
@@ -232,7 +229,10 @@ fn general_from<P: Coord>(
     let found = branch_and_bound::maximum_independent_set_labelled(&graph, &middles, deadline);
     let chosen: Vec<degenerate::Degenerate> = found.set.iter().map(|&t| mdts[t]).collect();
     let triangles = cut::triangulate_with_cuts(polygon, base, &chosen)?;
-    let lower = lower_bound(polygon, d_all.unwrap_or(found.upper_bound));
+    let lower = lower_bound(
+        polygon,
+        examined_bound.unwrap_or(found.upper_bound) + unexamined,
+    );
     // A search cut short whose bound meets its count has found the minimum all the same.
     let stopped = stopped.or(found.stopped);
     let optimal = stopped.is_none() || lower >= triangles.len();
