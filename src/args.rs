@@ -95,7 +95,8 @@ pub struct Flags {
     /// Seconds the exact method for one polygon may run (0: no limit): every stage of the search
     /// for a polygon with holes or touching rings, and step 1 of one without (quadratic on
     /// combs); past it, the best triangulation found is reported with "optimal": false, a lower
-    /// bound and "stopped_by": "time limit"
+    /// bound and "stopped_by": "time limit". With -a pseudo-hull: the construction; past it, the
+    /// greedy of -a pseudo on the hull, "optimal": false, "stopped_by": "time limit"
     #[arg(long, value_name = "SECONDS", default_value_t = 10.0, value_parser = seconds)]
     pub time_limit: f64,
     /// Most vertices one polygon may hold while it is read, all its rings together (GeoJSON: one

@@ -498,11 +498,15 @@ pub fn solve<P: Coord>(polygon: &Polygon<P>, options: &Options) -> Result<Solved
     })
 }
 
-/// `pseudo` (minimal, inside the plain triangulation) or `pseudo-hull` (minimum, of the hull).
+/// `pseudo` (minimal, inside the plain triangulation) or `pseudo-hull` (minimum, of the hull;
+/// past `--time-limit`, minimal, `pseudo`'s greedy on the hull, with `stopped`).
 fn solve_pseudo<P: Coord>(polygon: &Polygon<P>, options: &Options) -> Result<Solved, Error> {
     let triangulation = ear::triangulate(polygon)?;
     let mut result = if options.algorithm == Algorithm::PseudoHull {
-        pseudo_hull::pseudotriangulate(polygon)?
+        let deadline = options
+            .time_limit
+            .and_then(|limit| std::time::Instant::now().checked_add(limit));
+        pseudo_hull::pseudotriangulate_within(polygon, deadline)?
     } else {
         pseudo::minimal(polygon, &triangulation.triangles)
     };

@@ -46,6 +46,17 @@ fn check_hull(poly: &Polygon, rings: &[Vec<(i64, i64)>]) -> Result<(), TestCaseE
         rings,
         report.problems
     );
+    // Past its deadline (here before it starts): the greedy of `pseudo` on the hull, valid.
+    let stopped = pseudo_hull::pseudotriangulate_within(poly, Some(std::time::Instant::now()))
+        .map_err(|e| TestCaseError::fail(format!("{e} on {rings:?}")))?;
+    let report = check(poly, Algorithm::PseudoHull, &stopped);
+    prop_assert!(
+        report.valid && !stopped.optimal() && stopped.stopped.is_some(),
+        "pseudo-hull stopped invalid on {:?}: {:?}",
+        rings,
+        report.problems
+    );
+    prop_assert!(stopped.faces.len() >= result.faces.len());
     let n = poly.len();
     if general_position(poly) {
         let counts = result.hull.expect("pseudo-hull counts");
@@ -465,4 +476,92 @@ proptest! {
         prop_assert_eq!(result.faces[0].cycle.len(), poly.len());
         prop_assert!(check(&poly, Algorithm::Pseudo, &result).valid);
     }
+}
+
+/// "Three concave arcs": the corners of the triangle (0, 0), (2ms, 0), (ms, 2ms), each side
+/// bent inwards along a parabola through `m` grid points (offset `t (m - t)` along the side's
+/// inward normal at step `t`: a constant second difference, so every point but the three
+/// corners is reflex), 3m vertices as WKT. Long strings of corners on the pockets' side make
+/// `pseudo-hull`'s insertions costly (about 2 s at m = 10^4 in release).
+fn three_concave_arcs(m: i64) -> String {
+    let s = 2 * m;
+    let corners = [(0, 0), (2 * m * s, 0), (m * s, 2 * m * s)];
+    let mut points = Vec::new();
+    for k in 0..3 {
+        let (p, q) = (corners[k], corners[(k + 1) % 3]);
+        let d = ((q.0 - p.0) / m, (q.1 - p.1) / m);
+        let normal = (-d.1 / s, d.0 / s);
+        for t in 0..m {
+            let o = t * (m - t);
+            points.push((p.0 + t * d.0 + normal.0 * o, p.1 + t * d.1 + normal.1 * o));
+        }
+    }
+    wkt_ring(&points)
+}
+
+/// "A triangle with subdivided sides": (0, 0), (m, 0), (0, m), every side cut at each grid
+/// point, 3m vertices, all but three flat, all on the hull.
+fn subdivided_triangle(m: i64) -> String {
+    let mut points: Vec<(i64, i64)> = (0..m).map(|t| (t, 0)).collect();
+    points.extend((0..m).map(|t| (m - t, t)));
+    points.extend((0..m).map(|t| (0, m - t)));
+    wkt_ring(&points)
+}
+
+fn wkt_ring(points: &[(i64, i64)]) -> String {
+    let mut text: Vec<String> = points.iter().map(|(x, y)| format!("{x} {y}")).collect();
+    text.push(text[0].clone());
+    format!("POLYGON (({}))", text.join(", "))
+}
+
+#[test]
+fn pseudo_hull_ends_at_the_time_limit_with_a_valid_minimal_answer() {
+    // Issue "Real layers at speed", point 4: 3 x 10^4 vertices, the construction takes seconds;
+    // at 0.5 s the greedy on the hull is given, marked, and checked by --verify.
+    let input = three_concave_arcs(10_000);
+    let started = std::time::Instant::now();
+    let (code, out, err) = run(
+        &["-a", "pseudo-hull", "--time-limit", "0.5", "--verify"],
+        Some(&input),
+    );
+    let took = started.elapsed();
+    assert_eq!(code, 0, "{err}");
+    assert!(took.as_secs() < 20, "{took:?}");
+    let p = &json(&out)["polygons"][0];
+    assert_eq!(p["vertices"], 30_000);
+    assert_eq!(p["optimal"], false);
+    assert_eq!(p["stopped_by"], "time limit");
+    assert_eq!(p["verification"]["ok"], true, "{}", p["verification"]);
+    let count = p["pseudotriangle_count"].as_u64().unwrap();
+    assert!(count >= p["minimum_count"].as_u64().unwrap());
+    assert_eq!(p["pseudotriangles"].as_array().unwrap().len() as u64, count);
+    // Without a limit on a small copy: the minimum, no `stopped_by`.
+    let (code, out, err) = run(
+        &["-a", "pseudo-hull", "--time-limit", "0", "--verify"],
+        Some(&three_concave_arcs(300)),
+    );
+    assert_eq!(code, 0, "{err}");
+    let p = &json(&out)["polygons"][0];
+    assert_eq!(
+        (&p["optimal"], &p["verification"]["ok"]),
+        (&true.into(), &true.into())
+    );
+    assert!(p.get("stopped_by").is_none());
+    assert_eq!(p["pseudotriangle_count"], p["minimum_count"]);
+}
+
+#[test]
+fn verify_checks_a_hull_of_collinear_points_in_near_linear_time() {
+    // Every vertex on the hull: the checker's hull cross-check was O(n h) = O(n^2), minutes at
+    // 10^5 vertices; 3 x 10^4 here (seconds before, hundredths now).
+    let input = subdivided_triangle(10_000);
+    let started = std::time::Instant::now();
+    let (code, out, err) = run(&["-a", "pseudo-hull", "--verify"], Some(&input));
+    let took = started.elapsed();
+    assert_eq!(code, 0, "{err}");
+    assert!(took.as_secs() < 20, "{took:?}");
+    let p = &json(&out)["polygons"][0];
+    assert_eq!(p["verification"]["ok"], true, "{}", p["verification"]);
+    assert_eq!(p["optimal"], true);
+    assert_eq!(p["pseudotriangle_count"], 1, "the triangle itself");
 }

@@ -141,7 +141,15 @@ pub(crate) struct Mesh<'a, P: Coord = Point> {
     halves: Halves,
     /// The number of fixed edges.
     pub(crate) fixed_edges: usize,
+    /// When set: past this instant, [`Mesh::insert`] and [`Mesh::fatten`] give up ([`Broken`]
+    /// from `insert`, with [`Mesh::expired`] set), checked every [`CHECK_EVERY`] flips.
+    pub(crate) deadline: Option<std::time::Instant>,
+    /// Whether a walk or flip sequence gave up at [`Mesh::deadline`].
+    pub(crate) expired: bool,
 }
+
+/// Flips (or walk steps) between two readings of the clock against [`Mesh::deadline`].
+const CHECK_EVERY: usize = 1024;
 
 impl<'a, P: Coord> Mesh<'a, P> {
     /// The mesh of `triangles` (indices into `pts`, as the module's input contract says), with
@@ -156,6 +164,8 @@ impl<'a, P: Coord> Mesh<'a, P> {
             vt: vec![NONE; pts.len()],
             halves: Halves::with_capacity_and_hasher(3 * m, Default::default()),
             fixed_edges: 0,
+            deadline: None,
+            expired: false,
         };
         for t in 0..m as u32 {
             mesh.index(t);
@@ -319,8 +329,20 @@ impl<'a, P: Coord> Mesh<'a, P> {
         g
     }
 
+    /// Whether [`Mesh::deadline`] has passed (then [`Mesh::expired`] is set too); reads the clock
+    /// only when `count` is a multiple of [`CHECK_EVERY`].
+    pub(crate) fn past_deadline(&mut self, count: usize) -> bool {
+        if !self.expired && count.is_multiple_of(CHECK_EVERY) {
+            if let Some(deadline) = self.deadline {
+                self.expired = std::time::Instant::now() >= deadline;
+            }
+        }
+        self.expired
+    }
+
     /// Makes segment `s e` a fixed edge: fixes it if it is an edge, inserts it otherwise.
     /// Refused if it passes through a vertex or crosses a fixed edge.
+    /// Refused too once [`Mesh::deadline`] has passed during its flips ([`Mesh::expired`]).
     pub(crate) fn insert(&mut self, s: usize, e: usize) -> Result<(), Broken> {
         let Some(crossed) = self.crossed_by(s, e)? else {
             return Ok(());
@@ -468,7 +490,12 @@ impl<'a, P: Coord> Mesh<'a, P> {
     ) -> Result<(), Broken> {
         let (ps, pe) = (self.point(s), self.point(e));
         let mut stuck = 0;
+        let mut count = 0;
         while let Some((a, b)) = crossed.pop_front() {
+            count += 1;
+            if self.past_deadline(count) {
+                return Err(Broken);
+            }
             let (h, g, c, d, convex) = self.quadrilateral(a, b)?;
             if !convex {
                 crossed.push_back((a, b));
@@ -497,14 +524,16 @@ impl<'a, P: Coord> Mesh<'a, P> {
     /// quadrilateral strictly convex, so the result is again a triangulation with the same
     /// fixed edges); whether it is DESIRABLE is [`incircle_approx`], a heuristic that never
     /// decides a fact of the answer (hence the bound on the flips, should rounding make them
-    /// cycle).
+    /// cycle). Stops at [`Mesh::deadline`] too.
     pub(crate) fn fatten(&mut self, max_flips: usize) {
         let mut stack: Vec<Half> = (0..self.tv.len() as u32)
             .flat_map(|t| (0..3u8).map(move |k| Half { t, k }))
             .collect();
         let mut flips = 0;
+        let mut count = 0;
         while let Some(h) = stack.pop() {
-            if flips == max_flips {
+            count += 1;
+            if flips == max_flips || self.past_deadline(count) {
                 break;
             }
             if self.is_fixed(h) {

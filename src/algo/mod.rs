@@ -114,6 +114,12 @@ impl Pseudotriangulation {
             })
             .collect()
     }
+
+    /// Whether the count is proved minimum: `pseudo-hull` (it has [`Pseudotriangulation::hull`])
+    /// when not stopped by the time limit; never `pseudo`, whose result is only minimal.
+    pub fn optimal(&self) -> bool {
+        self.hull.is_some() && self.stopped.is_none()
+    }
 }
 
 impl fmt::Display for Algorithm {
@@ -190,6 +196,11 @@ pub struct Pseudotriangulation {
     pub edge_count: usize,
     /// For `pseudo-hull`: the counts of Corollary 1.
     pub hull: Option<HullCounts>,
+    /// For `pseudo-hull`: why the result is not the construction's minimum one, if it is not.
+    /// [`Stopped::TimeLimit`]: the construction passed its deadline (`--time-limit`), and the
+    /// result is the greedy of `pseudo` on the hull's triangulation (minimal: no edge or
+    /// triangle removable, every polygon edge kept; its count may exceed `2n - N - 2`).
+    pub stopped: Option<Stopped>,
 }
 
 /// One face of a [`Pseudotriangulation`].

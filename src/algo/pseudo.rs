@@ -52,6 +52,11 @@ const NONE: usize = usize::MAX;
 /// nondegenerate counter-clockwise triangles with no vertex inside a side, such as
 /// [`crate::algo::ear::triangulate`] gives), by the greedy of Section 5.
 ///
+/// `triangles` may instead triangulate the convex hull of the vertices, every polygon edge an
+/// edge (what `pseudo-hull` falls back to at its deadline): the result is then a minimal
+/// pseudotriangulation of the hull containing the polygon's edges, whose `edge_count` counts a
+/// polygon edge with a face on both sides twice (the caller corrects it).
+///
 /// # Examples
 /// ```
 /// use minitri::{algo::{ear, pseudo}, Decimal, Polygon, RawPolygon};
@@ -94,15 +99,25 @@ impl<'a, P: Coord> Mesh<'a, P> {
         // Diagonals, sorted by (smaller end, larger end) with two stable counting sorts: the two
         // half-edges of one diagonal end up side by side.
         let n = polygon.len();
+        // A polygon edge in either direction: a triangulation of the convex hull (the fallback
+        // of `pseudo-hull`) has both sides of a polygon edge inside the hull.
         let diagonal: Vec<usize> = (0..h)
-            .filter(|&e| polygon.next(origin[e]) != dest(e))
+            .filter(|&e| polygon.next(origin[e]) != dest(e) && polygon.next(dest(e)) != origin[e])
             .collect();
         let larger = counting_sort(diagonal, n, |e| origin[e].max(dest(e)));
         let sorted = counting_sort(larger, n, |e| origin[e].min(dest(e)));
         let mut twin = vec![NONE; h];
-        for pair in sorted.chunks_exact(2) {
-            twin[pair[0]] = pair[1];
-            twin[pair[1]] = pair[0];
+        // Pairs side by side; a hull edge (of a hull triangulation) stands alone.
+        let ends = |e: usize| (origin[e].min(dest(e)), origin[e].max(dest(e)));
+        let mut i = 0;
+        while i < sorted.len() {
+            if i + 1 < sorted.len() && ends(sorted[i]) == ends(sorted[i + 1]) {
+                twin[sorted[i]] = sorted[i + 1];
+                twin[sorted[i + 1]] = sorted[i];
+                i += 2;
+            } else {
+                i += 1;
+            }
         }
         Mesh {
             points: polygon.points(),
@@ -253,6 +268,7 @@ impl<'a, P: Coord> Mesh<'a, P> {
             faces,
             edge_count: edges,
             hull: None,
+            stopped: None,
         }
     }
 }

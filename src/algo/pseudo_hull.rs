@@ -92,6 +92,7 @@ use crate::geom::kernel::Coord;
 use crate::geom::kernel::{cmp_angle, cross};
 use crate::geom::polygon::Polygon;
 use std::collections::HashSet;
+use std::time::Instant;
 
 /// A minimum pseudotriangulation of the convex hull of `polygon`'s vertices containing its
 /// edges, by the construction of Theorem 6 (see the module docs).
@@ -115,6 +116,23 @@ use std::collections::HashSet;
 pub fn pseudotriangulate<P: Coord>(
     polygon: &Polygon<P>,
 ) -> Result<Pseudotriangulation, TriangulateError> {
+    pseudotriangulate_within(polygon, None)
+}
+
+/// [`pseudotriangulate`] that ends soon after `deadline` (`None`: no limit). Should the
+/// construction still be running then, the result is the greedy of [`super::pseudo`] (Rote et
+/// al., Section 5, linear) on the same triangulation of the hull, its polygon edges kept: a
+/// MINIMAL pseudotriangulation of the hull containing the polygon's edges, valid but not proved
+/// minimum, marked `stopped: Some(Stopped::TimeLimit)` (so not optimal). The clock is read
+/// between steps and every [`super::mesh`] 1024 flips, so the run ends within one step's walk
+/// (O(n)) and the greedy's O(n) after the deadline.
+///
+/// # Errors
+/// As [`pseudotriangulate`].
+pub fn pseudotriangulate_within<P: Coord>(
+    polygon: &Polygon<P>,
+    deadline: Option<Instant>,
+) -> Result<Pseudotriangulation, TriangulateError> {
     if polygon.touches() > 0 {
         return Err(TriangulateError::Touching {
             algorithm: super::Algorithm::PseudoHull,
@@ -128,7 +146,19 @@ pub fn pseudotriangulate<P: Coord>(
     let counts = hull_counts(polygon, &hull);
     let target_faces = (2 * n).saturating_sub(counts.big_angles + 2);
     let target_edges = (3 * n).saturating_sub(counts.big_angles + 3);
-    let (mesh, faces) = construct(polygon, &hull);
+    let (triangles, fixed, work) = hull_triangles(polygon, &hull);
+    // Kept for the greedy should the deadline pass (a copy only when there is one).
+    let fallback = deadline.map(|_| triangles.clone());
+    let (mesh, faces, expired) = construct(polygon, &triangles, &fixed, work, deadline);
+    if let (true, Some(triangles)) = (expired, fallback) {
+        let mut p = super::pseudo::minimal(polygon, &triangles);
+        // Polygon edges inside the hull have a face on both sides; the hull's edges one.
+        let sides: usize = p.faces.iter().map(|f| f.cycle.len()).sum();
+        p.edge_count = (sides + hull.len()) / 2;
+        p.hull = Some(counts);
+        p.stopped = Some(super::Stopped::TimeLimit);
+        return Ok(p);
+    }
     let (edges, cycles) = match (mesh, faces) {
         (Some(edges), Ok(cycles)) => (edges, cycles),
         (edges, _) => (edges.unwrap_or(0), Vec::new()),
@@ -146,20 +176,28 @@ pub fn pseudotriangulate<P: Coord>(
             .collect(),
         edge_count: edges,
         hull: Some(counts),
+        stopped: None,
     })
 }
 
-/// Steps 1 and 2: the fixed edge count reached (none if the start failed) and the faces, or
-/// [`Broken`] if a self-check failed.
+/// Steps 1 and 2: the fixed edge count reached (none if the start failed), the faces, or
+/// [`Broken`] if a self-check failed, and whether `deadline` passed first (the faces then
+/// incomplete).
 fn construct<P: Coord>(
     polygon: &Polygon<P>,
-    hull: &[usize],
-) -> (Option<usize>, Result<Vec<Vec<usize>>, Broken>) {
+    triangles: &[[usize; 3]],
+    fixed: &[(usize, usize)],
+    mut work: Vec<(usize, usize)>,
+    deadline: Option<Instant>,
+) -> (Option<usize>, Result<Vec<Vec<usize>>, Broken>, bool) {
     let n = polygon.len();
-    let (mut mesh, mut work, guard) = setup(polygon, hull);
+    let (mut mesh, guard) = setup(polygon, triangles, fixed, deadline);
     let mut faces = Vec::new();
     let mut steps = 0;
     while let Some((u, v)) = work.pop() {
+        if mesh.past_deadline(0) {
+            break;
+        }
         let result = mesh
             .half_from(u, v)
             .filter(|&h| mesh.is_fixed(h))
@@ -175,18 +213,20 @@ fn construct<P: Coord>(
                 step(&mut mesh, h, guard, &mut faces, &mut work)
             });
         if let Err(e) = result {
-            return (Some(mesh.fixed_edges), Err(e));
+            return (Some(mesh.fixed_edges), Err(e), mesh.expired);
         }
     }
-    (Some(mesh.fixed_edges), Ok(faces))
+    (Some(mesh.fixed_edges), Ok(faces), mesh.expired)
 }
 
-/// Step 1: the triangulated hull with L and the hull edges fixed, a half-edge `(u, v)` of the
-/// outer boundary of each face (the face on its left), and a bound on any walk.
-fn setup<'a, P: Coord>(
-    polygon: &'a Polygon<P>,
+/// Step 1, the triangles: the hull triangulated (the polygon, each hole's interior, each
+/// pocket), the edges to fix (L and the hull's), and a half-edge `(u, v)` of the outer boundary
+/// of each face (the face on its left).
+#[allow(clippy::type_complexity)]
+fn hull_triangles<P: Coord>(
+    polygon: &Polygon<P>,
     hull: &[usize],
-) -> (Mesh<'a, P>, Vec<(usize, usize)>, usize) {
+) -> (Vec<[usize; 3]>, Vec<(usize, usize)>, Vec<(usize, usize)>) {
     let n = polygon.len();
     let points = polygon.points();
     let mut triangles = plain_polygon_for_walking(polygon);
@@ -218,12 +258,23 @@ fn setup<'a, P: Coord>(
             work.push((a, b));
         }
     }
-    let mut mesh = Mesh::new(points, &triangles, &fixed);
+    (triangles, fixed, work)
+}
+
+/// Step 1, the mesh: `triangles` with `fixed` fixed, fattened, and a bound on any walk.
+fn setup<'a, P: Coord>(
+    polygon: &'a Polygon<P>,
+    triangles: &[[usize; 3]],
+    fixed: &[(usize, usize)],
+    deadline: Option<Instant>,
+) -> (Mesh<'a, P>, usize) {
+    let mut mesh = Mesh::new(polygon.points(), triangles, fixed);
+    mesh.deadline = deadline;
     mesh.fatten(10 * triangles.len());
     #[cfg(test)]
     mesh.consistent().expect("initial mesh");
     let guard = 8 * triangles.len() + 16;
-    (mesh, work, guard)
+    (mesh, guard)
 }
 
 /// Whether the boundary turns at a corner (an angle below pi in the face on the left) between

@@ -47,7 +47,7 @@ impl<K: Copy + Ord> Stabbing<K> {
     /// The structure over `intervals` (`lo <= hi` each; an interval with `lo > hi` is never
     /// found).
     pub(crate) fn new(mut intervals: Vec<(K, K, usize)>) -> Stabbing<K> {
-        intervals.sort_unstable_by(|a, b| a.0.cmp(&b.0));
+        intervals.sort_unstable_by_key(|a| a.0);
         let size = intervals.len().next_power_of_two().max(1);
         let mut max = vec![None; 2 * size];
         for (k, &(_, hi, _)) in intervals.iter().enumerate() {

@@ -1,7 +1,7 @@
 //! Hand-made cases for `pseudo-hull`: counts worked out by hand from Corollary 1 and Euler, and
 //! single steps of Theorem 6's construction whose taut string is worked out by hand.
 
-use super::{hull_cycle, pseudotriangulate, setup, step};
+use super::{hull_cycle, hull_triangles, pseudotriangulate, pseudotriangulate_within, setup, step};
 use crate::algo::{Algorithm, Pseudotriangulation};
 use crate::test_support::polygon;
 use crate::verify::pseudo::check;
@@ -69,6 +69,34 @@ fn the_hull_keeps_collinear_points() {
 }
 
 /// The vertex at `(x, y)`.
+#[test]
+fn past_the_deadline_the_greedy_on_the_hull_is_given() {
+    // A deadline already passed: the construction stops before its first step, and the result
+    // is `pseudo`'s greedy on the hull's triangulation, valid (every polygon edge kept, the hull
+    // partitioned, minimal), marked stopped and not optimal.
+    let cases = [
+        polygon(&[&[(0, 0), (4, 0), (4, 4), (0, 4)]]),
+        polygon(&[&[(0, 0), (4, 0), (2, 1), (2, 4)]]),
+        polygon(&[&[(0, 0), (8, 0), (8, 8), (0, 8)], &[(2, 2), (3, 6), (6, 2)]]),
+        polygon(&[&[(0, 0), (2, 0), (4, 0), (4, 4), (2, 1), (0, 4)]]),
+        polygon(&[&[(0, 0), (10, 0), (6, 2), (10, 8), (5, 4), (0, 8), (3, 3)]]),
+    ];
+    for p in &cases {
+        let past = std::time::Instant::now();
+        let result = pseudotriangulate_within(p, Some(past)).expect("fallback");
+        assert_eq!(result.stopped, Some(crate::algo::Stopped::TimeLimit));
+        assert!(!result.optimal());
+        let c = check(p, Algorithm::PseudoHull, &result);
+        assert!(c.valid, "{:?}", c.problems);
+        let h = result.hull.expect("counts");
+        assert!(result.faces.len() >= h.minimum(p.len()));
+        // Without a deadline: the minimum, optimal.
+        let full = solve(p);
+        assert!(full.optimal() && full.stopped.is_none());
+        assert_eq!(full.faces.len(), h.minimum(p.len()));
+    }
+}
+
 fn at(p: &Polygon, x: i64, y: i64) -> usize {
     (0..p.len())
         .find(|&v| p.point(v) == crate::geom::kernel::Point::new(x, y))
@@ -79,7 +107,8 @@ fn at(p: &Polygon, x: i64, y: i64) -> usize {
 /// reported, and the boundary of the face left of the first new edge (what is left of F).
 fn first_step(p: &Polygon) -> (Vec<Vec<usize>>, Vec<usize>) {
     let hull = hull_cycle(p.points());
-    let (mut mesh, _, guard) = setup(p, &hull);
+    let (triangles, fixed, _) = hull_triangles(p, &hull);
+    let (mut mesh, guard) = setup(p, &triangles, &fixed, None);
     let h = mesh.half_from(0, p.next(0)).expect("outer edge");
     let (mut faces, mut work) = (Vec::new(), Vec::new());
     step(&mut mesh, h, guard, &mut faces, &mut work).expect("a step");

@@ -107,7 +107,7 @@ impl Summary {
                     summary.degenerate += t.degenerate.len();
                     if let Some(p) = &solved.pseudo {
                         *summary.faces.get_or_insert(0) += p.faces.len();
-                        summary.optimal &= p.hull.is_some(); // as in the JSON output
+                        summary.optimal &= p.optimal(); // as in the JSON output
                     } else {
                         summary.optimal &= t.optimal;
                     }

@@ -303,7 +303,8 @@ fn touches_field<P: Coord>(fields: &mut Vec<(&'static str, String)>, polygon: &P
 /// `pseudotriangles` (each `cycle` counter-clockwise from a corner, and its three `corners`); for
 /// `pseudo-hull` also `reflex_vertices` (r), `big_angles` (N), `corollary_count` (2n - r - 2) and
 /// `minimum_count` (2n - N - 2, the same in general position). `optimal` says whether the count
-/// is proved minimum (`pseudo-hull`) rather than only minimal (`pseudo`).
+/// is proved minimum (`pseudo-hull`) rather than only minimal (`pseudo`, and `pseudo-hull`
+/// stopped by `--time-limit`, which then also has `"stopped_by": "time limit"`).
 fn pseudo_fields<P: Coord>(
     polygon: &Polygon<P>,
     algorithm: crate::algo::Algorithm,
@@ -338,7 +339,10 @@ fn pseudo_fields<P: Coord>(
         fields.push(("minimum_count", json(&h.minimum(n))));
     }
     fields.push(("pseudotriangles", format!("[{}]", faces.join(", "))));
-    fields.push(("optimal", json(&p.hull.is_some())));
+    fields.push(("optimal", json(&p.optimal())));
+    if let Some(stopped) = p.stopped {
+        fields.push(("stopped_by", json(stopped.name())));
+    }
     fields.push(("input_vertices", json(&polygon.input_vertices())));
     fields.push(("flat_vertices", json(&polygon.flat_vertices())));
     fields

@@ -760,6 +760,9 @@ fn caption(figure: &Figure<'_>) -> Vec<Line> {
                     p.edge_count,
                     t.algorithm
                 );
+                if let Some(stopped) = p.stopped {
+                    stats += &format!(", not proved minimum (stopped by {})", stopped.name());
+                }
             }
             lines.push(line(Kind::Stats, stats));
             let key =
