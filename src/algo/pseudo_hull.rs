@@ -123,7 +123,8 @@ pub fn pseudotriangulate<P: Coord>(
 /// construction still be running then, the result is the greedy of [`super::pseudo`] (Rote et
 /// al., Section 5, linear) on the same triangulation of the hull, its polygon edges kept: a
 /// MINIMAL pseudotriangulation of the hull containing the polygon's edges, valid but not proved
-/// minimum, marked `stopped: Some(Stopped::TimeLimit)` (so not optimal). The clock is read
+/// minimum, marked `stopped: Some(Stopped::TimeLimit)` (so not optimal) unless it has the
+/// `2n - N - 2` faces of every minimum one (then it is one, and `stopped` stays `None`). The clock is read
 /// between steps and every [`super::mesh`] 1024 flips, so the run ends within one step's walk
 /// (O(n)) and the greedy's O(n) after the deadline.
 ///
@@ -156,7 +157,8 @@ pub fn pseudotriangulate_within<P: Coord>(
         let sides: usize = p.faces.iter().map(|f| f.cycle.len()).sum();
         p.edge_count = (sides + hull.len()) / 2;
         p.hull = Some(counts);
-        p.stopped = Some(super::Stopped::TimeLimit);
+        // As many faces as every minimum one has (Theorem 6): minimum after all.
+        p.stopped = (p.faces.len() != target_faces).then_some(super::Stopped::TimeLimit);
         return Ok(p);
     }
     let (edges, cycles) = match (mesh, faces) {
