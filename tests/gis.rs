@@ -1,7 +1,8 @@
 //! Issue 36, GIS fidelity, through the binary: WKB and EWKB in (binary, hex as PostGIS prints
 //! it), gzip-compressed inputs (files, directories, standard input, the caps on decompressed
 //! bytes), formats minitri does not read named as such, GeoJSON Lines by `.jsonl` in a
-//! directory.
+//! directory; a FeatureCollection's `name` and `crs` kept in `--to geojson` (issue "GIS
+//! fidelity", point 4).
 
 use crate::util::{json, minitri, outcome, run};
 use std::io::Write;
@@ -455,4 +456,121 @@ fn every_output_that_holds_geometry_reads_back_into_minitri() {
             );
         }
     }
+}
+
+/// The members of a FeatureCollection other than `features`, as JSON values.
+fn collection_members(document: &str) -> serde_json::Map<String, serde_json::Value> {
+    let mut members = json(document).as_object().unwrap().clone();
+    members.remove("features");
+    members
+}
+
+#[test]
+fn a_gdal_collections_name_and_crs_are_carried_to_the_geojson_output_and_read_back() {
+    let input = "fixtures/gis/gdal_3857.geojson";
+    let text = std::fs::read_to_string(input).unwrap();
+    let crs = r#"{ "type": "name", "properties": { "name": "urn:ogc:def:crs:EPSG::3857" } }"#;
+    assert!(text.contains(crs));
+    let (code, out, err) = run(&["--to", "geojson", input], None);
+    assert_eq!((code, err.as_str()), (0, ""));
+    // The members in GDAL's order, before the features, the crs byte for byte.
+    assert!(
+        out.starts_with(&format!(
+            r#"{{"type": "FeatureCollection", "name": "parcels", "crs": {crs}, "features": ["#
+        )),
+        "{out}"
+    );
+    let members = collection_members(&out);
+    assert_eq!(members, collection_members(&text));
+    assert_eq!(json(&out)["features"].as_array().unwrap().len(), 2);
+    // Read back by minitri: the same members again, the same triangles.
+    let (code, again, err) = run(&["--to", "geojson", "--from", "geojson", "-"], Some(&out));
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(collection_members(&again), members);
+    let triangles = |doc: &str| -> Vec<serde_json::Value> {
+        json(doc)["features"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|f| f["properties"]["minitri"]["triangle_count"].clone())
+            .collect()
+    };
+    assert_eq!(triangles(&again), triangles(&out));
+    // A collection whose "features" come before its members (read whole): carried too.
+    let late = r#"{"features": [{"type": "Feature", "properties": null, "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 1]]]}}], "crs": {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::2154"}}, "name": "late", "type": "FeatureCollection"}"#;
+    let (code, out, err) = run(&["--to", "geojson", "--from", "geojson", "-"], Some(late));
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(
+        collection_members(&out),
+        collection_members(&late.replace("\"features\": [", "\"features\": [0, "))
+    );
+    // Without them, nothing added.
+    let (_, out, _) = run(&["--to", "geojson", "fixtures/valid/u_shape.geojson"], None);
+    assert!(out.starts_with(r#"{"type": "FeatureCollection", "features": ["#));
+    // GeoJSON Lines has no place for them: Features only.
+    let (code, out, _) = run(&["--to", "geojsonl", input], None);
+    assert_eq!(code, 0);
+    assert!(out
+        .lines()
+        .all(|l| !l.contains("crs") && l.starts_with(r#"{"type": "Feature""#)));
+}
+
+#[test]
+fn inputs_of_different_crs_in_one_output_keep_the_first_and_warn() {
+    let input = "fixtures/gis/gdal_3857.geojson";
+    let other = "fixtures/valid/u_shape.geojson";
+    let warning = |of: &str, crs: &str, output: &str, from: &str| {
+        format!(
+            "minitri: warning: {of}: its \"crs\" ({crs}) is not the output's ({output}, from {from}): its features are written under the output's; give each input its own output (-o DIR)\n"
+        )
+    };
+    let epsg = "urn:ogc:def:crs:EPSG::3857";
+    let (code, out, err) = run(&["--to", "geojson", input, other], None);
+    assert_eq!(code, 0);
+    assert_eq!(collection_members(&out)["name"], "parcels");
+    assert!(
+        err.starts_with(&warning(other, "none (WGS 84)", epsg, input)),
+        "{err}"
+    );
+    let (_, out, err) = run(&["--to", "geojson", other, input], None);
+    assert!(!collection_members(&out).contains_key("crs"));
+    assert!(
+        err.starts_with(&warning(input, epsg, "none (WGS 84)", other)),
+        "{err}"
+    );
+    // The same crs twice: no warning; --quiet: none either.
+    let (_, _, err) = run(&["--to", "geojson", input, input], None);
+    assert!(!err.contains("warning"), "{err}");
+    let (_, _, err) = run(&["--to", "geojson", "-q", input, other], None);
+    assert_eq!(err, "");
+    // The warning as docs/errors.md shows it.
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::copy(other, dir.path().join("a.geojson")).unwrap();
+    std::fs::copy(input, dir.path().join("b.geojson")).unwrap();
+    let mut cmd = minitri();
+    cmd.current_dir(dir.path())
+        .args(["--to", "geojson", "a.geojson", "b.geojson"]);
+    let (code, _, err) = outcome(&mut cmd);
+    assert_eq!(code, 0);
+    let line = err
+        .lines()
+        .next()
+        .unwrap()
+        .strip_prefix("minitri: ")
+        .unwrap();
+    let catalogue = std::fs::read_to_string(crate::util::fixtures().join("../docs/errors.md"));
+    assert!(
+        catalogue.unwrap().contains(&format!("| 0 | `{line}` |")),
+        "docs/errors.md has no row for {line}"
+    );
+    // Each input into its own output: each keeps its own.
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().to_str().unwrap();
+    let (code, _, err) = run(&["--to", "geojson", "-q", input, other, "-o", out], None);
+    assert_eq!(code, 0, "{err}");
+    let written = std::fs::read_to_string(dir.path().join("gdal_3857.geojson")).unwrap();
+    assert_eq!(
+        collection_members(&written)["crs"]["properties"]["name"],
+        epsg
+    );
 }

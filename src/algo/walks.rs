@@ -361,7 +361,7 @@ fn clip<P: Coord>(
     let mut steps = 0u32;
     while remaining > 3 {
         steps = steps.wrapping_add(1);
-        if steps % 64 == 0 && past(deadline) {
+        if steps.is_multiple_of(64) && past(deadline) {
             return Err(TIME_LIMIT.to_string());
         }
         let (p, q) = (prev[v], next[v]);

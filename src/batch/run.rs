@@ -124,7 +124,13 @@ pub fn run_document(
             for line in outcome.messages(settings.quiet) {
                 observer.message(&line);
             }
-            sink.push_rendered(outcome, rendered)
+            sink.push_rendered(outcome, rendered)?;
+            for line in sink.warnings() {
+                if !settings.quiet {
+                    observer.message(&line);
+                }
+            }
+            Ok(())
         };
         let mut chunker = Chunker::new(&settings.options, renderer, &mut deliver, observer);
         for input in inputs {
@@ -304,7 +310,12 @@ fn run_file(
             let mut deliver = |outcome: Outcome, rendered: Option<String>| {
                 report.tally.add(&outcome);
                 report.messages.extend(outcome.messages(settings.quiet));
-                sink.push_rendered(outcome, rendered)
+                sink.push_rendered(outcome, rendered)?;
+                let warnings = sink.warnings();
+                if !settings.quiet {
+                    report.messages.extend(warnings);
+                }
+                Ok(())
             };
             let mut chunker = Chunker::new(&settings.options, renderer, &mut deliver, observer);
             let complete = read_input(input, settings, &mut chunker)?;
@@ -432,6 +443,7 @@ impl<'a> Chunker<'a> {
                         id: None,
                         properties: None,
                         geometry: Geometry::Failed,
+                        collection: None,
                     });
                     Parsed::Line(source, read, result)
                 }
@@ -693,6 +705,7 @@ fn read_lines(
                 id: None,
                 properties: None,
                 geometry: Geometry::Failed,
+                collection: None,
             });
             features += 1;
             let outcome = unreadable(source, Error::Parse(error));
