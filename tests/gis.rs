@@ -56,12 +56,13 @@ fn binary_wkb_and_postgis_hex_ewkb_give_the_triangles_of_the_wkt() {
         .map(|p| (p["index"].clone(), p["triangle_count"].clone()))
         .collect();
     assert_eq!(counts, [(0.into(), 5.into()), (1.into(), 1.into())]);
+    // Written back as EWKT, the SRID kept.
     let lines = wkt(&["fixtures/gis/postgis_ewkb.wkb"]);
     let lines: Vec<&str> = lines.lines().collect();
-    assert_eq!(lines[0], from_wkt.trim_end());
+    assert_eq!(lines[0], format!("SRID=4326;{}", from_wkt.trim_end()));
     assert_eq!(
         lines[1],
-        "GEOMETRYCOLLECTION (POLYGON ((0 0, 0.2 0.6, 0 1, 0 0)))"
+        "SRID=4326;GEOMETRYCOLLECTION (POLYGON ((0 0, 0.2 0.6, 0 1, 0 0)))"
     );
     // The same hex on standard input, without a name: recognised by content.
     let hex = std::fs::read(crate::util::fixtures().join("gis/postgis_ewkb.wkb")).unwrap();
@@ -573,4 +574,55 @@ fn inputs_of_different_crs_in_one_output_keep_the_first_and_warn() {
         collection_members(&written)["crs"]["properties"]["name"],
         epsg
     );
+}
+
+#[test]
+fn an_ewkt_or_ewkb_srid_is_written_back_as_ewkt_and_as_a_geojson_crs() {
+    let ewkt = "SRID=3857;POLYGON ((0 0, 2 0, 2 2, 1 1, 0 2, 0 0))\nPOLYGON ((0 0, 1 0, 0 1))\nsrid=2154;MULTIPOLYGON (((0 0, 1 0, 0 1)), ((5 5, 6 5, 5 6)))\n";
+    let (code, out, err) = run(&["--to", "wkt", "--from", "wkt", "-"], Some(ewkt));
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(
+        out,
+        "SRID=3857;GEOMETRYCOLLECTION (POLYGON ((2 0, 2 2, 1 1, 2 0)), POLYGON ((0 0, 2 0, 0 2, 0 0)))\n\
+         GEOMETRYCOLLECTION (POLYGON ((0 1, 0 0, 1 0, 0 1)))\n\
+         SRID=2154;GEOMETRYCOLLECTION (POLYGON ((0 1, 0 0, 1 0, 0 1)))\n\
+         SRID=2154;GEOMETRYCOLLECTION (POLYGON ((5 6, 5 5, 6 5, 5 6)))\n"
+    );
+    // Read back by minitri: each triangle of a line (a polygon of its own when read) keeps
+    // its line's SRID.
+    let srid = |line: &str| line.split_once(';').map(|(s, _)| s.to_string());
+    let (code, again, err) = run(&["--to", "wkt", "--from", "wkt", "-"], Some(&out));
+    assert_eq!(code, 0, "{err}");
+    let again: Vec<_> = again.lines().map(srid).collect();
+    let srid3857 = Some("SRID=3857".to_string());
+    let srid2154 = Some("SRID=2154".to_string());
+    assert_eq!(
+        again,
+        [srid3857.clone(), srid3857, None, srid2154.clone(), srid2154]
+    );
+    // Hex EWKB (PostGIS's SRID 4326) in, EWKT out, read back the same.
+    let out = wkt(&["fixtures/gis/postgis_ewkb.wkb"]);
+    assert!(
+        out.lines()
+            .all(|l| l.starts_with("SRID=4326;GEOMETRYCOLLECTION (")),
+        "{out}"
+    );
+    let (code, again, _) = run(&["--to", "wkt", "--from", "wkt", "-"], Some(&out));
+    assert_eq!(code, 0);
+    assert!(again
+        .lines()
+        .all(|l| l.starts_with("SRID=4326;GEOMETRYCOLLECTION (")));
+    assert_eq!(again.lines().count(), 6, "5 + 1 triangles, one a line");
+    // --to geojson: the SRID as a crs, as GDAL names it, read back by minitri.
+    let (code, out, err) = run(&["--to", "geojson", "fixtures/gis/postgis_ewkb.wkb"], None);
+    assert_eq!((code, err.as_str()), (0, ""));
+    let crs =
+        serde_json::json!({"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::4326"}});
+    assert_eq!(collection_members(&out)["crs"], crs);
+    let (code, again, _) = run(&["--to", "geojson", "--from", "geojson", "-"], Some(&out));
+    assert_eq!(code, 0);
+    assert_eq!(collection_members(&again)["crs"], crs);
+    // Without an SRID: plain WKT, no crs.
+    let (_, out, _) = run(&["--to", "wkt", "fixtures/valid/u_shape.wkt"], None);
+    assert!(out.starts_with("GEOMETRYCOLLECTION ("));
 }

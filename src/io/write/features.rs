@@ -43,6 +43,7 @@ use crate::pipeline::Outcome;
 use serde_json::Value;
 use std::fmt::Write as _;
 use std::io::{self, Write};
+use std::sync::Arc;
 
 /// Writes one Feature per input feature, as a FeatureCollection or as GeoJSON Lines.
 pub struct FeatureWriter<W: Write> {
@@ -126,9 +127,17 @@ impl<W: Write> FeatureWriter<W> {
     }
 }
 
-/// The `name` and `crs` an outcome's input said, if any: its feature's collection's.
-fn collection_of(outcome: &Outcome) -> Option<&Collection> {
-    outcome.feature.as_ref()?.feature.collection.as_deref()
+/// The `name` and `crs` an outcome's input said, if any: its feature's collection's, else
+/// for an SRID (EWKT, EWKB) the `crs` naming it (`urn:ogc:def:crs:EPSG::<srid>`).
+fn collection_of(outcome: &Outcome) -> Option<Arc<Collection>> {
+    let given = outcome
+        .feature
+        .as_ref()
+        .and_then(|id| id.feature.collection.clone());
+    given.or_else(|| {
+        let srid = outcome.srid?;
+        Collection::of(None, Some(Collection::epsg(srid)))
+    })
 }
 
 /// A `crs` as a message names it: the name of a named crs (`urn:ogc:def:crs:EPSG::3857`),
@@ -178,10 +187,12 @@ impl<W: Write> Output<W> {
         };
         if !self.lines {
             let said = collection_of(first);
+            let said = said.as_deref();
             match &mut self.header {
                 None => self.open(said, &first.source)?,
-                // A feature of another input collection, under another crs than the output's.
-                Some(header) if first.feature.is_some() => {
+                // A feature of another input collection (or a polygon of an SRID), under
+                // another crs than the output's.
+                Some(header) if first.feature.is_some() || first.srid.is_some() => {
                     let crs = crs_value(said);
                     if crs != header.crs && !header.warned.contains(&first.source) {
                         header.warned.push(first.source.clone());
