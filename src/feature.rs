@@ -12,6 +12,8 @@
 //! and `properties`; `--to geojson` and `--to geojsonl` give one Feature per input feature.
 //!
 //! Inputs without features (WKT, vertex lists) have no identity: each polygon stands alone.
+//! A feature of a FeatureCollection also carries the collection's `name` and `crs` as written
+//! ([`Collection`]), which `--to geojson` keeps.
 
 use serde_json::value::RawValue;
 use std::sync::Arc;
@@ -29,6 +31,37 @@ pub struct Feature {
     pub properties: Option<Box<RawValue>>,
     /// What its geometry is.
     pub geometry: Geometry,
+    /// The FeatureCollection it belongs to, when that collection has members to carry to the
+    /// output (`name`, `crs`); `None` otherwise.
+    pub collection: Option<Arc<Collection>>,
+}
+
+/// The members of an input FeatureCollection that the `--to geojson` output carries over, each
+/// as written (the JSON text, byte for byte): its `name` (the layer's name, as GDAL writes it)
+/// and its `crs` (GeoJSON 2008's `{"type": "name", "properties": {"name":
+/// "urn:ogc:def:crs:EPSG::3857"}}`, which GDAL still writes for a layer not in WGS 84).
+/// Only those that come before `features` in a streamed collection are known to its features.
+#[derive(Clone, Debug, Default)]
+pub struct Collection {
+    /// `name` as written, if the collection has one.
+    pub name: Option<Box<RawValue>>,
+    /// `crs` as written, if the collection has one.
+    pub crs: Option<Box<RawValue>>,
+}
+
+impl Collection {
+    /// The members, when there is any (`None` for neither).
+    pub fn of(name: Option<Box<RawValue>>, crs: Option<Box<RawValue>>) -> Option<Arc<Collection>> {
+        (name.is_some() || crs.is_some()).then(|| Arc::new(Collection { name, crs }))
+    }
+
+    /// A `crs` member naming EPSG code `srid` (`urn:ogc:def:crs:EPSG::<srid>`), as GDAL writes it.
+    pub fn epsg(srid: u32) -> Box<RawValue> {
+        let text = format!(
+            "{{\"type\": \"name\", \"properties\": {{\"name\": \"urn:ogc:def:crs:EPSG::{srid}\"}}}}"
+        );
+        RawValue::from_string(text).unwrap_or_else(|_| unreachable!("valid JSON"))
+    }
 }
 
 /// What a feature's geometry is, as read.

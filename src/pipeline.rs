@@ -211,6 +211,9 @@ pub struct Outcome {
     pub repaired: Option<Vec<Repair>>,
     /// The input feature and part this outcome is (GeoJSON inputs; see [`crate::feature`]).
     pub feature: Option<Identity>,
+    /// The SRID its input gave it (EWKT `SRID=4326;`, an EWKB header's), which `--to wkt`
+    /// writes back as EWKT and `--to geojson` as a `crs`.
+    pub srid: Option<u32>,
 }
 
 impl Outcome {
@@ -591,6 +594,7 @@ pub fn unreadable(source: &str, error: Error) -> Outcome {
         warnings: Vec::new(),
         repaired: None,
         feature: None,
+        srid: None,
     }
 }
 
@@ -634,6 +638,7 @@ pub fn process_raw(source: &str, index: usize, raw: RawPolygon, options: &Option
         warnings: Vec::new(),
         repaired: None,
         feature: None,
+        srid: None,
     };
     if let Err(e) = reserve_for(raw.rings.iter().map(Vec::len).sum()) {
         return vec![Outcome {

@@ -1,7 +1,8 @@
 //! Issue 36, GIS fidelity, through the binary: WKB and EWKB in (binary, hex as PostGIS prints
 //! it), gzip-compressed inputs (files, directories, standard input, the caps on decompressed
 //! bytes), formats minitri does not read named as such, GeoJSON Lines by `.jsonl` in a
-//! directory.
+//! directory; a FeatureCollection's `name` and `crs` kept in `--to geojson` (issue "GIS
+//! fidelity", point 4).
 
 use crate::util::{json, minitri, outcome, run};
 use std::io::Write;
@@ -55,12 +56,13 @@ fn binary_wkb_and_postgis_hex_ewkb_give_the_triangles_of_the_wkt() {
         .map(|p| (p["index"].clone(), p["triangle_count"].clone()))
         .collect();
     assert_eq!(counts, [(0.into(), 5.into()), (1.into(), 1.into())]);
+    // Written back as EWKT, the SRID kept.
     let lines = wkt(&["fixtures/gis/postgis_ewkb.wkb"]);
     let lines: Vec<&str> = lines.lines().collect();
-    assert_eq!(lines[0], from_wkt.trim_end());
+    assert_eq!(lines[0], format!("SRID=4326;{}", from_wkt.trim_end()));
     assert_eq!(
         lines[1],
-        "GEOMETRYCOLLECTION (POLYGON ((0 0, 0.2 0.6, 0 1, 0 0)))"
+        "SRID=4326;GEOMETRYCOLLECTION (POLYGON ((0 0, 0.2 0.6, 0 1, 0 0)))"
     );
     // The same hex on standard input, without a name: recognised by content.
     let hex = std::fs::read(crate::util::fixtures().join("gis/postgis_ewkb.wkb")).unwrap();
@@ -455,4 +457,172 @@ fn every_output_that_holds_geometry_reads_back_into_minitri() {
             );
         }
     }
+}
+
+/// The members of a FeatureCollection other than `features`, as JSON values.
+fn collection_members(document: &str) -> serde_json::Map<String, serde_json::Value> {
+    let mut members = json(document).as_object().unwrap().clone();
+    members.remove("features");
+    members
+}
+
+#[test]
+fn a_gdal_collections_name_and_crs_are_carried_to_the_geojson_output_and_read_back() {
+    let input = "fixtures/gis/gdal_3857.geojson";
+    let text = std::fs::read_to_string(input).unwrap();
+    let crs = r#"{ "type": "name", "properties": { "name": "urn:ogc:def:crs:EPSG::3857" } }"#;
+    assert!(text.contains(crs));
+    let (code, out, err) = run(&["--to", "geojson", input], None);
+    assert_eq!((code, err.as_str()), (0, ""));
+    // The members in GDAL's order, before the features, the crs byte for byte.
+    assert!(
+        out.starts_with(&format!(
+            r#"{{"type": "FeatureCollection", "name": "parcels", "crs": {crs}, "features": ["#
+        )),
+        "{out}"
+    );
+    let members = collection_members(&out);
+    assert_eq!(members, collection_members(&text));
+    assert_eq!(json(&out)["features"].as_array().unwrap().len(), 2);
+    // Read back by minitri: the same members again, the same triangles.
+    let (code, again, err) = run(&["--to", "geojson", "--from", "geojson", "-"], Some(&out));
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(collection_members(&again), members);
+    let triangles = |doc: &str| -> Vec<serde_json::Value> {
+        json(doc)["features"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|f| f["properties"]["minitri"]["triangle_count"].clone())
+            .collect()
+    };
+    assert_eq!(triangles(&again), triangles(&out));
+    // A collection whose "features" come before its members (read whole): carried too.
+    let late = r#"{"features": [{"type": "Feature", "properties": null, "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 1]]]}}], "crs": {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::2154"}}, "name": "late", "type": "FeatureCollection"}"#;
+    let (code, out, err) = run(&["--to", "geojson", "--from", "geojson", "-"], Some(late));
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(
+        collection_members(&out),
+        collection_members(&late.replace("\"features\": [", "\"features\": [0, "))
+    );
+    // Without them, nothing added.
+    let (_, out, _) = run(&["--to", "geojson", "fixtures/valid/u_shape.geojson"], None);
+    assert!(out.starts_with(r#"{"type": "FeatureCollection", "features": ["#));
+    // GeoJSON Lines has no place for them: Features only.
+    let (code, out, _) = run(&["--to", "geojsonl", input], None);
+    assert_eq!(code, 0);
+    assert!(out
+        .lines()
+        .all(|l| !l.contains("crs") && l.starts_with(r#"{"type": "Feature""#)));
+}
+
+#[test]
+fn inputs_of_different_crs_in_one_output_keep_the_first_and_warn() {
+    let input = "fixtures/gis/gdal_3857.geojson";
+    let other = "fixtures/valid/u_shape.geojson";
+    let warning = |of: &str, crs: &str, output: &str, from: &str| {
+        format!(
+            "minitri: warning: {of}: its \"crs\" ({crs}) is not the output's ({output}, from {from}): its features are written under the output's; give each input its own output (-o DIR)\n"
+        )
+    };
+    let epsg = "urn:ogc:def:crs:EPSG::3857";
+    let (code, out, err) = run(&["--to", "geojson", input, other], None);
+    assert_eq!(code, 0);
+    assert_eq!(collection_members(&out)["name"], "parcels");
+    assert!(
+        err.starts_with(&warning(other, "none (WGS 84)", epsg, input)),
+        "{err}"
+    );
+    let (_, out, err) = run(&["--to", "geojson", other, input], None);
+    assert!(!collection_members(&out).contains_key("crs"));
+    assert!(
+        err.starts_with(&warning(input, epsg, "none (WGS 84)", other)),
+        "{err}"
+    );
+    // The same crs twice: no warning; --quiet: none either.
+    let (_, _, err) = run(&["--to", "geojson", input, input], None);
+    assert!(!err.contains("warning"), "{err}");
+    let (_, _, err) = run(&["--to", "geojson", "-q", input, other], None);
+    assert_eq!(err, "");
+    // The warning as docs/errors.md shows it.
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::copy(other, dir.path().join("a.geojson")).unwrap();
+    std::fs::copy(input, dir.path().join("b.geojson")).unwrap();
+    let mut cmd = minitri();
+    cmd.current_dir(dir.path())
+        .args(["--to", "geojson", "a.geojson", "b.geojson"]);
+    let (code, _, err) = outcome(&mut cmd);
+    assert_eq!(code, 0);
+    let line = err
+        .lines()
+        .next()
+        .unwrap()
+        .strip_prefix("minitri: ")
+        .unwrap();
+    let catalogue = std::fs::read_to_string(crate::util::fixtures().join("../docs/errors.md"));
+    assert!(
+        catalogue.unwrap().contains(&format!("| 0 | `{line}` |")),
+        "docs/errors.md has no row for {line}"
+    );
+    // Each input into its own output: each keeps its own.
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().to_str().unwrap();
+    let (code, _, err) = run(&["--to", "geojson", "-q", input, other, "-o", out], None);
+    assert_eq!(code, 0, "{err}");
+    let written = std::fs::read_to_string(dir.path().join("gdal_3857.geojson")).unwrap();
+    assert_eq!(
+        collection_members(&written)["crs"]["properties"]["name"],
+        epsg
+    );
+}
+
+#[test]
+fn an_ewkt_or_ewkb_srid_is_written_back_as_ewkt_and_as_a_geojson_crs() {
+    let ewkt = "SRID=3857;POLYGON ((0 0, 2 0, 2 2, 1 1, 0 2, 0 0))\nPOLYGON ((0 0, 1 0, 0 1))\nsrid=2154;MULTIPOLYGON (((0 0, 1 0, 0 1)), ((5 5, 6 5, 5 6)))\n";
+    let (code, out, err) = run(&["--to", "wkt", "--from", "wkt", "-"], Some(ewkt));
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(
+        out,
+        "SRID=3857;GEOMETRYCOLLECTION (POLYGON ((2 0, 2 2, 1 1, 2 0)), POLYGON ((0 0, 2 0, 0 2, 0 0)))\n\
+         GEOMETRYCOLLECTION (POLYGON ((0 1, 0 0, 1 0, 0 1)))\n\
+         SRID=2154;GEOMETRYCOLLECTION (POLYGON ((0 1, 0 0, 1 0, 0 1)))\n\
+         SRID=2154;GEOMETRYCOLLECTION (POLYGON ((5 6, 5 5, 6 5, 5 6)))\n"
+    );
+    // Read back by minitri: each triangle of a line (a polygon of its own when read) keeps
+    // its line's SRID.
+    let srid = |line: &str| line.split_once(';').map(|(s, _)| s.to_string());
+    let (code, again, err) = run(&["--to", "wkt", "--from", "wkt", "-"], Some(&out));
+    assert_eq!(code, 0, "{err}");
+    let again: Vec<_> = again.lines().map(srid).collect();
+    let srid3857 = Some("SRID=3857".to_string());
+    let srid2154 = Some("SRID=2154".to_string());
+    assert_eq!(
+        again,
+        [srid3857.clone(), srid3857, None, srid2154.clone(), srid2154]
+    );
+    // Hex EWKB (PostGIS's SRID 4326) in, EWKT out, read back the same.
+    let out = wkt(&["fixtures/gis/postgis_ewkb.wkb"]);
+    assert!(
+        out.lines()
+            .all(|l| l.starts_with("SRID=4326;GEOMETRYCOLLECTION (")),
+        "{out}"
+    );
+    let (code, again, _) = run(&["--to", "wkt", "--from", "wkt", "-"], Some(&out));
+    assert_eq!(code, 0);
+    assert!(again
+        .lines()
+        .all(|l| l.starts_with("SRID=4326;GEOMETRYCOLLECTION (")));
+    assert_eq!(again.lines().count(), 6, "5 + 1 triangles, one a line");
+    // --to geojson: the SRID as a crs, as GDAL names it, read back by minitri.
+    let (code, out, err) = run(&["--to", "geojson", "fixtures/gis/postgis_ewkb.wkb"], None);
+    assert_eq!((code, err.as_str()), (0, ""));
+    let crs =
+        serde_json::json!({"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::4326"}});
+    assert_eq!(collection_members(&out)["crs"], crs);
+    let (code, again, _) = run(&["--to", "geojson", "--from", "geojson", "-"], Some(&out));
+    assert_eq!(code, 0);
+    assert_eq!(collection_members(&again)["crs"], crs);
+    // Without an SRID: plain WKT, no crs.
+    let (_, out, _) = run(&["--to", "wkt", "fixtures/valid/u_shape.wkt"], None);
+    assert!(out.starts_with("GEOMETRYCOLLECTION ("));
 }

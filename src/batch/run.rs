@@ -124,7 +124,13 @@ pub fn run_document(
             for line in outcome.messages(settings.quiet) {
                 observer.message(&line);
             }
-            sink.push_rendered(outcome, rendered)
+            sink.push_rendered(outcome, rendered)?;
+            for line in sink.warnings() {
+                if !settings.quiet {
+                    observer.message(&line);
+                }
+            }
+            Ok(())
         };
         let mut chunker = Chunker::new(&settings.options, renderer, &mut deliver, observer);
         for input in inputs {
@@ -304,7 +310,12 @@ fn run_file(
             let mut deliver = |outcome: Outcome, rendered: Option<String>| {
                 report.tally.add(&outcome);
                 report.messages.extend(outcome.messages(settings.quiet));
-                sink.push_rendered(outcome, rendered)
+                sink.push_rendered(outcome, rendered)?;
+                let warnings = sink.warnings();
+                if !settings.quiet {
+                    report.messages.extend(warnings);
+                }
+                Ok(())
             };
             let mut chunker = Chunker::new(&settings.options, renderer, &mut deliver, observer);
             let complete = read_input(input, settings, &mut chunker)?;
@@ -337,6 +348,8 @@ enum Item {
         index: usize,
         raw: RawPolygon,
         feature: Option<Identity>,
+        /// Its SRID, from EWKT or EWKB.
+        srid: Option<u32>,
     },
     /// Something that failed already (an unreadable input or part of one).
     Failed(Box<Outcome>),
@@ -432,6 +445,7 @@ impl<'a> Chunker<'a> {
                         id: None,
                         properties: None,
                         geometry: Geometry::Failed,
+                        collection: None,
                     });
                     Parsed::Line(source, read, result)
                 }
@@ -477,6 +491,7 @@ impl<'a> Chunker<'a> {
                             index,
                             raw,
                             feature: Some(identity),
+                            srid: None,
                         });
                     }
                 }
@@ -501,10 +516,12 @@ impl<'a> Chunker<'a> {
                         index,
                         raw,
                         feature,
+                        srid,
                     } => {
                         let mut outcomes = process_raw(&source, index, raw, options);
                         for outcome in &mut outcomes {
                             outcome.feature = feature.clone();
+                            outcome.srid = srid;
                         }
                         outcomes
                     }
@@ -584,7 +601,7 @@ fn read_input(input: &Input, settings: &Settings, chunker: &mut Chunker) -> io::
     if format == Some(Format::Wkb) {
         let parts = match read::limits::read_bytes(reader, settings.limit, size.unwrap_or(0), note)
         {
-            Ok(bytes) => read::wkb::read_parts_within(&bytes, settings.max_vertices),
+            Ok(bytes) => read::wkb::read_parts_srid_within(&bytes, settings.max_vertices),
             Err(read::limits::NotRead::Io(e)) => {
                 return failed(chunker, Error::Read(e.to_string()))
             }
@@ -614,7 +631,13 @@ fn read_input(input: &Input, settings: &Settings, chunker: &mut Chunker) -> io::
     if format == Format::GeoJson {
         return stream_geojson(&source, text.as_bytes(), settings, chunker);
     }
-    let parts = read::read_parts_within(format, &text, settings.max_vertices);
+    let parts = match format {
+        Format::Wkt => read::wkt::read_parts_srid_within(&text, settings.max_vertices),
+        _ => read::read_parts_within(format, &text, settings.max_vertices).map(|parts| {
+            let srids = vec![None; parts.len()];
+            (parts, srids)
+        }),
+    };
     drop(text);
     push_parts(&source, parts, chunker)
 }
@@ -624,13 +647,13 @@ fn read_input(input: &Input, settings: &Settings, chunker: &mut Chunker) -> io::
 /// polygons are numbered without it.
 fn push_parts(
     source: &Arc<str>,
-    parts: Result<Vec<Result<RawPolygon, ParseError>>, ParseError>,
+    parts: Result<read::wkb::PartsAndSrids, ParseError>,
     chunker: &mut Chunker,
 ) -> io::Result<bool> {
     match parts {
-        Ok(parts) => {
+        Ok((parts, srids)) => {
             let mut index = 0;
-            for part in parts {
+            for (part, srid) in parts.into_iter().zip(srids) {
                 let source = Arc::clone(source);
                 match part {
                     Ok(raw) => {
@@ -639,6 +662,7 @@ fn push_parts(
                             index,
                             raw,
                             feature: None,
+                            srid,
                         })?;
                         index += 1;
                     }
@@ -693,6 +717,7 @@ fn read_lines(
                 id: None,
                 properties: None,
                 geometry: Geometry::Failed,
+                collection: None,
             });
             features += 1;
             let outcome = unreadable(source, Error::Parse(error));
@@ -783,6 +808,7 @@ fn stream_geojson(
                 index: index - 1,
                 raw,
                 feature,
+                srid: None,
             })
         }
         Event::Failed(e) => match &mut current {

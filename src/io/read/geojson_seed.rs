@@ -112,6 +112,10 @@ pub(super) struct Object {
     pub(super) id: Option<Box<RawValue>>,
     /// `properties` as written (kept for the output); the last one if named twice.
     pub(super) properties: Option<Box<RawValue>>,
+    /// `name` as written (a FeatureCollection's, kept for the output: [`crate::feature::Collection`]).
+    pub(super) name: Option<Box<RawValue>>,
+    /// `crs` as written (likewise).
+    pub(super) crs: Option<Box<RawValue>>,
 }
 
 impl Object {
@@ -213,6 +217,10 @@ pub(super) trait FeatureSink {
     /// before each element and before the array's end), or the rest of the collection (`None`,
     /// after the array). A reader that bounds one feature's size starts counting here.
     fn reading(&mut self, _index: Option<usize>) {}
+
+    /// The collection's `name` and `crs` as read before its `features` (told once, before the
+    /// first feature), for the features to carry.
+    fn collection(&mut self, _name: Option<Box<RawValue>>, _crs: Option<Box<RawValue>>) {}
 }
 
 /// What becomes of arrays.
@@ -395,6 +403,8 @@ fn read_object<'de, A: MapAccess<'de>>(
                 Key::Other(name) if name == "properties" => {
                     object.properties = Some(map.next_value()?);
                 }
+                Key::Other(name) if name == "name" => object.name = Some(map.next_value()?),
+                Key::Other(name) if name == "crs" => object.crs = Some(map.next_value()?),
                 _ => {
                     map.next_value::<Skip>()?;
                 }
@@ -440,11 +450,14 @@ fn read_object<'de, A: MapAccess<'de>>(
                     && object.features.is_none()
                     && sink.is_some();
                 let seed = match sink.as_deref_mut() {
-                    Some(sink) if stream => NodeSeed {
-                        arrays: Arrays::Stream,
-                        sink: Some(sink),
-                        vertices,
-                    },
+                    Some(sink) if stream => {
+                        sink.collection(object.name.clone(), object.crs.clone());
+                        NodeSeed {
+                            arrays: Arrays::Stream,
+                            sink: Some(sink),
+                            vertices,
+                        }
+                    }
                     // Features read whole (`"type"` after them, say): still counted one by one.
                     _ => NodeSeed {
                         arrays: Arrays::Stream,

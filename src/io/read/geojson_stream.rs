@@ -49,7 +49,7 @@ use super::geojson::{
 use super::geojson_seed::{FeatureSink, Node, NodeSeed, Object, Vertices};
 use super::limits::{too_large, MAX_TEXT, MAX_VERTICES};
 use super::{locate, Location, ParseError, RawPolygon};
-use crate::feature::{Feature, Geometry};
+use crate::feature::{Collection, Feature, Geometry};
 use serde::de::{self, DeserializeSeed};
 use serde_json::value::RawValue;
 use std::cell::RefCell;
@@ -185,6 +185,7 @@ pub fn stream_within<R: BufRead>(
         features: 0,
         position: Rc::clone(&position),
         within: None,
+        collection: None,
     };
     // The first value's parts wait until we know whether the input holds several values,
     // which decides whether its failures carry a location (as in `geojson::read`).
@@ -211,6 +212,7 @@ pub fn stream_within<R: BufRead>(
             sink.parts(parts, Some(location)).map_err(Stop::Output)?;
         }
         vertices.reset();
+        sink.collection = None;
         match NodeSeed::top(Some(&mut sink), &vertices).deserialize(&mut de) {
             Ok(node) => {
                 let parts = sink.value(node).map_err(Stop::Output)?;
@@ -370,6 +372,7 @@ pub fn read_line_feature_within(
         id,
         properties,
         geometry,
+        collection: None,
     };
     let parts = result.map(|()| {
         parts
@@ -606,6 +609,8 @@ struct Sink<'e> {
     position: Rc<RefCell<Position>>,
     /// The element of a streamed `features` array being read, if one is.
     within: Option<usize>,
+    /// The members of the FeatureCollection being read that its features carry, if any.
+    collection: Option<Arc<Collection>>,
 }
 
 /// A part of a top-level value not pushed yet: a polygon, or the message of a failure (a failed
@@ -648,6 +653,7 @@ impl Sink<'_> {
             id,
             properties,
             geometry: geometry_of(read, null, polygons),
+            collection: self.collection.clone(),
         };
         self.features += 1;
         (self.emit)(Event::Feature(Arc::new(feature)))
@@ -708,7 +714,8 @@ impl Sink<'_> {
                     .collect())
             }
             // `"features"` came before `"type"`: read whole, but judged feature by feature too.
-            Node::Object(object) if collection(&object) => {
+            Node::Object(mut object) if collection(&object) => {
+                self.collection = Collection::of(object.name.take(), object.crs.take());
                 if let Some(Node::List(features)) = object.features {
                     for (index, feature) in features.into_iter().enumerate() {
                         self.feature(index, feature)?;
@@ -746,6 +753,11 @@ impl FeatureSink for Sink<'_> {
     fn reading(&mut self, index: Option<usize>) {
         self.within = index;
         self.position.borrow_mut().budget.start();
+    }
+
+    /// Keeps the collection's members for its features.
+    fn collection(&mut self, name: Option<Box<RawValue>>, crs: Option<Box<RawValue>>) {
+        self.collection = Collection::of(name, crs);
     }
 }
 
@@ -1085,6 +1097,43 @@ mod tests {
             read_line_feature("{", 4, 9).0.is_none(),
             "not JSON: no feature"
         );
+    }
+
+    #[test]
+    fn a_collections_name_and_crs_before_its_features_go_with_each_feature() {
+        let crs = r#"{"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::3857"}}"#;
+        let feature =
+            format!(r#"{{"type": "Feature", "name": "not the layer's", "geometry": {A}}}"#);
+        let collected = |text: &str| {
+            let mut found = Vec::new();
+            stream(text.as_bytes(), &mut |e| {
+                if let Event::Feature(f) = e {
+                    found.push(f.collection.as_ref().map(|c| {
+                        let raw =
+                            |v: &Option<Box<RawValue>>| v.as_ref().map(|v| v.get().to_string());
+                        (raw(&c.name), raw(&c.crs))
+                    }));
+                }
+                Ok(())
+            })
+            .unwrap();
+            found
+        };
+        let members = Some((Some("\"parcels\"".to_string()), Some(crs.to_string())));
+        // Streamed, then read whole ("features" first), then a second value without them.
+        let text = format!(
+            r#"{{"type": "FeatureCollection", "name": "parcels", "crs": {crs}, "features": [{feature}, {feature}]}}
+{{"features": [{feature}], "crs": {crs}, "type": "FeatureCollection", "name": "parcels"}}
+{{"type": "FeatureCollection", "features": [{feature}]}}"#
+        );
+        assert_eq!(
+            collected(&text),
+            [members.clone(), members.clone(), members, None]
+        );
+        // After the features of a streamed collection: too late for them.
+        let text =
+            format!(r#"{{"type": "FeatureCollection", "features": [{feature}], "crs": {crs}}}"#);
+        assert_eq!(collected(&text), [None]);
     }
 
     /// Polygons read and the stop, with a cap of `limit` bytes.

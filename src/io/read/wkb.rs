@@ -213,6 +213,29 @@ pub fn read_parts_within(
     bytes: &[u8],
     max_vertices: usize,
 ) -> Result<Vec<Result<RawPolygon, ParseError>>, ParseError> {
+    read_parts_srid_within(bytes, max_vertices).map(|(parts, _)| parts)
+}
+
+/// [`read_parts_within`] with each part's EWKB SRID (`None` without one), in the order of the
+/// parts: those of a geometry share its SRID.
+///
+/// # Errors
+/// As [`read_parts_within`].
+///
+/// # Examples
+/// ```
+/// use minitri::io::read::wkb::read_parts_srid_within;
+/// let hex = b"0103000020E6100000010000000300000000000000000000000000000000000000000000000000F03F00000000000000000000000000000000000000000000F03F\n";
+/// let (parts, srids) = read_parts_srid_within(hex, 100)?;
+/// assert!(parts[0].is_ok());
+/// assert_eq!((parts.len(), srids), (1, vec![Some(4326)]));
+/// # Ok::<(), minitri::io::read::ParseError>(())
+/// ```
+pub fn read_parts_srid_within(
+    bytes: &[u8],
+    max_vertices: usize,
+) -> Result<PartsAndSrids, ParseError> {
+    let mut srids = Vec::new();
     let mut reading = Reading {
         parts: Vec::new(),
         polygons: 0,
@@ -246,6 +269,8 @@ pub fn read_parts_within(
                 Ok(geometry) => {
                     let size = size_of(&geometry);
                     reading.geometry(&geometry, &place, &[]);
+                    let srid = srid(&decoded).and_then(|s| u32::try_from(s).ok());
+                    srids.resize(reading.parts.len(), srid);
                     if size.is_some_and(|s| s < decoded.len()) {
                         let extra = decoded.len() - size.unwrap_or(0);
                         reading.parts.push(Err(place(format!(
@@ -271,6 +296,8 @@ pub fn read_parts_within(
                 return Err(place("not a valid WKB geometry".into()));
             };
             reading.geometry(&geometry, &place, &[]);
+            let srid = srid(&bytes[at..]).and_then(|s| u32::try_from(s).ok());
+            srids.resize(reading.parts.len(), srid);
             at += size;
         }
     }
@@ -281,8 +308,12 @@ pub fn read_parts_within(
             "no polygon found: the geometry is EMPTY"
         }));
     }
-    Ok(reading.parts)
+    srids.resize(reading.parts.len(), None);
+    Ok((reading.parts, srids))
 }
+
+/// Parts (each a polygon or the error of a member that is not one) and each one's SRID.
+pub type PartsAndSrids = (Vec<Result<RawPolygon, ParseError>>, Vec<Option<u32>>);
 
 /// The parts read so far.
 struct Reading {

@@ -139,6 +139,28 @@ pub fn read_parts_within(
     text: &str,
     max_vertices: usize,
 ) -> Result<Vec<Result<RawPolygon, ParseError>>, ParseError> {
+    read_parts_srid_within(text, max_vertices).map(|(parts, _)| parts)
+}
+
+/// [`read_parts_within`] with each part's EWKT SRID (`SRID=4326;` before its geometry; `None`
+/// without one), in the order of the parts.
+///
+/// # Errors
+/// As [`read_parts`].
+///
+/// # Examples
+/// ```
+/// use minitri::io::read::wkt;
+/// let text = "SRID=3857;POLYGON ((0 0, 1 0, 0 1))\nPOLYGON ((0 0, 1 0, 0 1))";
+/// let (parts, srids) = wkt::read_parts_srid_within(text, 10)?;
+/// assert_eq!((parts.len(), srids), (2, vec![Some(3857), None]));
+/// # Ok::<(), minitri::io::read::ParseError>(())
+/// ```
+pub fn read_parts_srid_within(
+    text: &str,
+    max_vertices: usize,
+) -> Result<super::wkb::PartsAndSrids, ParseError> {
+    let mut srids = Vec::new();
     let mut parser = Parser {
         text,
         pos: 0,
@@ -151,18 +173,20 @@ pub fn read_parts_within(
     if parser.peek().kind == Tok::End {
         return Err(ParseError::new("empty input: no polygon found"));
     }
-    parser.srid_prefix()?;
+    let srid = parser.srid_prefix()?;
     parser.geometry(0)?;
+    srids.resize(parser.parts.len(), srid);
     // WKT lines: a further geometry on a later line (as `--to wkt` writes them).
     while parser.next_line_geometry() {
-        parser.srid_prefix()?;
+        let srid = parser.srid_prefix()?;
         parser.geometry(0)?;
+        srids.resize(parser.parts.len(), srid);
     }
     parser.end()?;
     if parser.parts.is_empty() {
         return Err(ParseError::new("no polygon found: the geometry is EMPTY"));
     }
-    Ok(parser.parts)
+    Ok((parser.parts, srids))
 }
 
 /// A token kind; words are keywords or number literals.
@@ -360,23 +384,25 @@ impl<'a> Parser<'a> {
         }
     }
 
-    /// Skips an EWKT `SRID=<integer>;` prefix.
-    fn srid_prefix(&mut self) -> Result<(), ParseError> {
+    /// Reads an EWKT `SRID=<integer>;` prefix, if there is one: its SRID (`None` also for
+    /// one beyond 32 bits, which no registry uses).
+    fn srid_prefix(&mut self) -> Result<Option<u32>, ParseError> {
         let saved = self.pos;
         if !self.eat_word("SRID") {
-            return Ok(());
+            return Ok(None);
         }
         if self.peek().kind != Tok::Equals {
             self.pos = saved;
-            return Ok(());
+            return Ok(None);
         }
         self.next();
         let token = self.next();
-        match token.kind {
-            Tok::Word(w) if w.bytes().all(|b| b.is_ascii_digit()) => {}
+        let srid = match token.kind {
+            Tok::Word(w) if w.bytes().all(|b| b.is_ascii_digit()) => w.parse().ok(),
             _ => return Err(self.expected("an SRID number after 'SRID='", token)),
-        }
-        self.expect(Tok::Semicolon, "';' after the SRID")
+        };
+        self.expect(Tok::Semicolon, "';' after the SRID")?;
+        Ok(srid)
     }
 
     /// Reads one geometry, `depth` collections deep, appending its polygons.

@@ -26,39 +26,69 @@
 //! file, a syntax error that stops a FeatureCollection). With `pseudo` and `pseudo-hull`, the pseudotriangles
 //! instead, counted in `pseudotriangle_count`.
 //!
+//! The FeatureCollection carries the `name` and `crs` of the input collection its first
+//! Feature comes from ([`crate::feature::Collection`]), as written, before `features` (as GDAL
+//! orders them): its opening is written with that first Feature. A later Feature from an input
+//! of another `crs` is written as it is, with a warning ([`FeatureWriter::take_warnings`]).
+//! GeoJSON Lines has no place for them.
+//!
 //! Streamed: a feature is written as soon as its last part is pushed ([`super::group`]; memory:
 //! one feature's outcomes); the part geometries are made ahead, in parallel, by [`render`].
 
 use super::group::{Records, Rendered, Summary};
 use super::json::json;
 use super::{Renderer, Sink};
-use crate::feature::properties_with;
+use crate::feature::{properties_with, Collection};
 use crate::pipeline::Outcome;
+use serde_json::Value;
 use std::fmt::Write as _;
 use std::io::{self, Write};
+use std::sync::Arc;
 
 /// Writes one Feature per input feature, as a FeatureCollection or as GeoJSON Lines.
 pub struct FeatureWriter<W: Write> {
-    out: W,
-    lines: bool,
-    written: usize,
+    output: Output<W>,
     /// The outcomes of the feature being gathered, each with its rendered geometry.
     records: Records,
 }
 
+/// Where the Features go, and what was said of the collection.
+struct Output<W: Write> {
+    out: W,
+    lines: bool,
+    written: usize,
+    /// For a FeatureCollection, once its opening is written: the `crs` it carries.
+    header: Option<Header>,
+    /// Warnings not yet taken ([`Sink::warnings`]).
+    warnings: Vec<String>,
+}
+
+/// What the opening of the FeatureCollection said.
+struct Header {
+    /// Its `crs` (`None`: none written), as a JSON value (compared as values, not bytes).
+    crs: Option<Value>,
+    /// The input it came from.
+    source: String,
+    /// The inputs already warned of a different `crs`.
+    warned: Vec<String>,
+}
+
 impl<W: Write> FeatureWriter<W> {
-    /// Starts a FeatureCollection (`lines` false) or GeoJSON Lines (`lines` true).
+    /// Starts a FeatureCollection (`lines` false) or GeoJSON Lines (`lines` true). The
+    /// collection's opening is written with its first Feature (or at the end, when there is
+    /// none), carrying the `name` and `crs` of the first feature's input collection.
     ///
     /// # Errors
-    /// Any I/O error of `out`.
-    pub fn new(mut out: W, lines: bool) -> io::Result<FeatureWriter<W>> {
-        if !lines {
-            write!(out, "{{\"type\": \"FeatureCollection\", \"features\": [")?;
-        }
+    /// None yet: the signature keeps room for a writer that writes at once.
+    pub fn new(out: W, lines: bool) -> io::Result<FeatureWriter<W>> {
         Ok(FeatureWriter {
-            out,
-            lines,
-            written: 0,
+            output: Output {
+                out,
+                lines,
+                written: 0,
+                header: None,
+                warnings: Vec::new(),
+            },
             records: Records::new(),
         })
     }
@@ -68,15 +98,14 @@ impl<W: Write> FeatureWriter<W> {
     /// # Errors
     /// Any I/O error of the output.
     pub fn push_rendered(&mut self, outcome: Outcome, rendered: Option<String>) -> io::Result<()> {
-        let FeatureWriter {
-            out,
-            lines,
-            written,
-            records,
-        } = self;
-        records.push(outcome, rendered, |record| {
-            write_feature(out, *lines, written, &record)
-        })
+        let FeatureWriter { output, records } = self;
+        records.push(outcome, rendered, |record| output.write_feature(&record))
+    }
+
+    /// Warnings about what was written so far, each once: an input whose collection's `crs`
+    /// differs from the one the output's collection carries.
+    pub fn take_warnings(&mut self) -> Vec<String> {
+        std::mem::take(&mut self.output.warnings)
     }
 
     /// Writes what is gathered, ends the document and flushes.
@@ -85,37 +114,113 @@ impl<W: Write> FeatureWriter<W> {
     /// Any I/O error of the output.
     pub fn finish(mut self) -> io::Result<()> {
         if let Some(record) = self.records.finish() {
-            write_feature(&mut self.out, self.lines, &mut self.written, &record)?;
+            self.output.write_feature(&record)?;
         }
-        if !self.lines {
-            writeln!(self.out, "\n]}}")?;
+        let output = &mut self.output;
+        if !output.lines {
+            if output.header.is_none() {
+                output.open(None, "")?;
+            }
+            writeln!(output.out, "\n]}}")?;
         }
-        self.out.flush()
+        output.out.flush()
     }
 }
 
-/// Writes the Feature of one input feature's outcomes (`written` Features before it).
-fn write_feature(
-    out: &mut impl Write,
-    lines: bool,
-    written: &mut usize,
-    record: &[Rendered],
-) -> io::Result<()> {
-    let Some((first, _)) = record.first() else {
-        return Ok(());
-    };
-    let text = feature_text(first, record);
-    let separator = match (lines, *written) {
-        (true, _) => "",
-        (false, 0) => "\n",
-        (false, _) => ",\n",
-    };
-    *written += 1;
-    write!(out, "{separator}{text}")?;
-    if lines {
-        writeln!(out)?;
+/// The `name` and `crs` an outcome's input said, if any: its feature's collection's, else
+/// for an SRID (EWKT, EWKB) the `crs` naming it (`urn:ogc:def:crs:EPSG::<srid>`).
+fn collection_of(outcome: &Outcome) -> Option<Arc<Collection>> {
+    let given = outcome
+        .feature
+        .as_ref()
+        .and_then(|id| id.feature.collection.clone());
+    given.or_else(|| {
+        let srid = outcome.srid?;
+        Collection::of(None, Some(Collection::epsg(srid)))
+    })
+}
+
+/// A `crs` as a message names it: the name of a named crs (`urn:ogc:def:crs:EPSG::3857`),
+/// else its JSON text; `none (WGS 84)` when absent (GeoJSON's default).
+fn describe(crs: Option<&Value>) -> String {
+    match crs {
+        None => "none (WGS 84)".to_string(),
+        Some(crs) => match crs.pointer("/properties/name") {
+            Some(Value::String(name)) => name.clone(),
+            _ => crs.to_string(),
+        },
     }
-    Ok(())
+}
+
+/// A `crs` as a JSON value (`None` when absent or not JSON).
+fn crs_value(collection: Option<&Collection>) -> Option<Value> {
+    serde_json::from_str(collection?.crs.as_deref()?.get()).ok()
+}
+
+impl<W: Write> Output<W> {
+    /// Writes the opening of the FeatureCollection, with `collection`'s members (from `source`).
+    fn open(&mut self, collection: Option<&Collection>, source: &str) -> io::Result<()> {
+        let mut members = String::new();
+        if let Some(name) = collection.and_then(|c| c.name.as_deref()) {
+            let _ = write!(members, ", \"name\": {}", name.get());
+        }
+        if let Some(crs) = collection.and_then(|c| c.crs.as_deref()) {
+            let _ = write!(members, ", \"crs\": {}", crs.get());
+        }
+        write!(
+            self.out,
+            "{{\"type\": \"FeatureCollection\"{members}, \"features\": ["
+        )?;
+        self.header = Some(Header {
+            crs: crs_value(collection),
+            source: source.to_string(),
+            warned: Vec::new(),
+        });
+        Ok(())
+    }
+
+    /// Writes the Feature of one input feature's outcomes (the collection's opening first,
+    /// before the first one).
+    fn write_feature(&mut self, record: &[Rendered]) -> io::Result<()> {
+        let Some((first, _)) = record.first() else {
+            return Ok(());
+        };
+        if !self.lines {
+            let said = collection_of(first);
+            let said = said.as_deref();
+            match &mut self.header {
+                None => self.open(said, &first.source)?,
+                // A feature of another input collection (or a polygon of an SRID), under
+                // another crs than the output's.
+                Some(header) if first.feature.is_some() || first.srid.is_some() => {
+                    let crs = crs_value(said);
+                    if crs != header.crs && !header.warned.contains(&first.source) {
+                        header.warned.push(first.source.clone());
+                        self.warnings.push(format!(
+                            "warning: {}: its \"crs\" ({}) is not the output's ({}, from {}): its features are written under the output's; give each input its own output (-o DIR)",
+                            first.source,
+                            describe(crs.as_ref()),
+                            describe(header.crs.as_ref()),
+                            header.source
+                        ));
+                    }
+                }
+                Some(_) => {}
+            }
+        }
+        let text = feature_text(first, record);
+        let separator = match (self.lines, self.written) {
+            (true, _) => "",
+            (false, 0) => "\n",
+            (false, _) => ",\n",
+        };
+        self.written += 1;
+        write!(self.out, "{separator}{text}")?;
+        if self.lines {
+            writeln!(self.out)?;
+        }
+        Ok(())
+    }
 }
 
 /// One Feature's text for the outcomes of one input feature (`first` among them).
@@ -238,6 +343,10 @@ impl<W: Write> Sink for FeatureWriter<W> {
 
     fn push_rendered(&mut self, outcome: Outcome, rendered: Option<String>) -> io::Result<()> {
         FeatureWriter::push_rendered(self, outcome, rendered)
+    }
+
+    fn warnings(&mut self) -> Vec<String> {
+        self.take_warnings()
     }
 
     fn finish(self: Box<Self>) -> io::Result<()> {

@@ -199,6 +199,7 @@ mod tests {
             id: None,
             properties: None,
             geometry: Geometry::Parts(parts),
+            collection: None,
         })
     }
 

@@ -108,6 +108,12 @@ pub trait Sink {
         self.push(outcome)
     }
 
+    /// Warnings about what was written since the last call (each a line for standard error,
+    /// `warning: SOURCE: ...`): by default none.
+    fn warnings(&mut self) -> Vec<String> {
+        Vec::new()
+    }
+
     /// Ends the document and flushes the output.
     ///
     /// # Errors

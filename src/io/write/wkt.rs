@@ -31,7 +31,10 @@
 //! `id` and `properties` are in `--to csv` ([`super::csv`]), whose `WKT` column holds the same
 //! lines.
 //!
-//! The lines read back into minitri (its WKT reader takes one geometry per line).
+//! A polygon whose input gave it an SRID (EWKT `SRID=4326;POLYGON (...)`, an EWKB header's)
+//! is written as EWKT, `SRID=4326;GEOMETRYCOLLECTION (...)`, as PostGIS's `ST_AsEWKT` does.
+//!
+//! The lines read back into minitri (its WKT reader takes one geometry per line, and its SRID).
 //!
 //! Why lines and not one `GEOMETRYCOLLECTION` for the run: each line is a complete WKT geometry standing for
 //! one input feature, the one-geometry-per-record form of WKT-lines files and of WKT columns in
@@ -86,7 +89,10 @@ impl<W: Write> WktWriter<W> {
 /// Writes the line of one record: none for a failure about an input as a whole.
 fn write_line(out: &mut impl Write, record: &[Rendered]) -> io::Result<()> {
     match record.first() {
-        Some((first, _)) if is_feature(first) => writeln!(out, "{}", collection(record)),
+        Some((first, _)) if is_feature(first) => match first.srid {
+            Some(srid) => writeln!(out, "SRID={srid};{}", collection(record)),
+            None => writeln!(out, "{}", collection(record)),
+        },
         _ => Ok(()),
     }
 }
