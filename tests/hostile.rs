@@ -936,6 +936,28 @@ fn a_replaced_output_keeps_its_mode_and_owner() {
 
 /// Is the test running as root (who may change a file's owner)? Judged by the owner of a file
 /// it makes in `dir`.
+/// The binary, run as `nobody` through `runuser` when the tests run as root (for whom every
+/// permission is granted), else as the user the tests run as.
+fn unprivileged(dir: &Path) -> Command {
+    if is_root(dir) {
+        let mut c = Command::new("runuser");
+        c.args(["-u", "nobody", "--", env!("CARGO_BIN_EXE_minitri")]);
+        c
+    } else {
+        bin()
+    }
+}
+
+/// Whether the binary ran (as `nobody`, see [`unprivileged`]): its messages start so. If not,
+/// says why the test is skipped.
+fn ran_as_nobody(err: &str) -> bool {
+    let ran = err.starts_with("minitri: ");
+    if !ran {
+        eprintln!("skipped: the binary cannot be run as nobody here: {err}");
+    }
+    ran
+}
+
 fn is_root(dir: &Path) -> bool {
     use std::os::unix::fs::MetadataExt;
     let probe = dir.join(".owner-probe");
@@ -1205,13 +1227,7 @@ fn an_unreadable_directory_says_cannot_read_once() {
     fs::create_dir(dir.join("locked")).unwrap();
     fs::set_permissions(dir.join("locked"), fs::Permissions::from_mode(0o000)).unwrap();
     // Root reads a directory whatever its mode: run as nobody then, where that can be done.
-    let mut command = if is_root(dir) {
-        let mut c = Command::new("runuser");
-        c.args(["-u", "nobody", "--", env!("CARGO_BIN_EXE_minitri")]);
-        c
-    } else {
-        bin()
-    };
+    let mut command = unprivileged(dir);
     let out = command.current_dir(dir).arg("locked").output();
     fs::set_permissions(dir.join("locked"), fs::Permissions::from_mode(0o755)).unwrap();
     let Ok(out) = out else {
@@ -1219,8 +1235,7 @@ fn an_unreadable_directory_says_cannot_read_once() {
         return;
     };
     let err = text(&out.stderr);
-    if !err.starts_with("minitri: ") {
-        eprintln!("skipped: the binary cannot be run as nobody here: {err}");
+    if !ran_as_nobody(&err) {
         return;
     }
     assert_eq!(code(out.status), 1, "{err}");
@@ -1244,13 +1259,7 @@ fn a_directory_that_refuses_the_temporary_file_is_named() {
     fs::write(dir.join("ro/out.json"), "old").unwrap();
     fs::set_permissions(dir.join("ro/out.json"), fs::Permissions::from_mode(0o666)).unwrap();
     fs::set_permissions(dir.join("ro"), fs::Permissions::from_mode(0o555)).unwrap();
-    let mut command = if is_root(dir) {
-        let mut c = Command::new("runuser");
-        c.args(["-u", "nobody", "--", env!("CARGO_BIN_EXE_minitri")]);
-        c
-    } else {
-        bin()
-    };
+    let mut command = unprivileged(dir);
     let out = command
         .current_dir(dir)
         .args(["a.wkt", "-o", "ro/out.json"])
@@ -1261,8 +1270,7 @@ fn a_directory_that_refuses_the_temporary_file_is_named() {
         return;
     };
     let err = text(&out.stderr);
-    if !err.starts_with("minitri: ") {
-        eprintln!("skipped: the binary cannot be run as nobody here: {err}");
+    if !ran_as_nobody(&err) {
         return;
     }
     assert_eq!(code(out.status), 1, "{err}");

@@ -332,6 +332,19 @@ fn random_ring(rnd: &mut impl FnMut(i64) -> i64, inserts: i64) -> Vec<(i64, i64)
 
 /// A random star-shaped polygon: `n` points at random angles and radii around the origin,
 /// sorted by angle (exactly), on a grid of about +-`scale`.
+/// A random star (every third `k`) or grid polygon, when valid.
+fn star_or_grid(rnd: &mut impl FnMut(i64) -> i64, k: usize) -> Option<Polygon> {
+    let size = 6 + rnd(30) as usize;
+    let ring = if k.is_multiple_of(3) {
+        random_star(rnd, size, 8)
+    } else {
+        random_ring(rnd, 40)
+    };
+    Polygon::from_raw(&crate::test_support::raw(&[&ring]))
+        .ok()
+        .map(|(p, _)| p)
+}
+
 fn random_star(rnd: &mut impl FnMut(i64) -> i64, n: usize, scale: i64) -> Vec<(i64, i64)> {
     use crate::geom::kernel::{cmp_angle, Point};
     let mut points: Vec<Point> = (0..n)
@@ -1004,13 +1017,7 @@ fn chord_ends_sort_like_the_reference_stable_sort() {
     let mut rnd = crate::test_support::xorshift(0x50e7_e4d5);
     let mut longest = 0;
     for k in 0..3000 {
-        let size = 6 + rnd(30) as usize;
-        let ring = if k % 3 == 0 {
-            random_star(&mut rnd, size, 8)
-        } else {
-            random_ring(&mut rnd, 40)
-        };
-        let Ok((p, _)) = Polygon::from_raw(&crate::test_support::raw(&[&ring])) else {
+        let Some(p) = star_or_grid(&mut rnd, k) else {
             continue;
         };
         let mdts = minimally_degenerate(&p);
@@ -1113,13 +1120,7 @@ fn the_bound_after_a_cut_short_step_1_holds_for_any_vertices_looked_from() {
     let mut rnd = crate::test_support::xorshift(0xb0_0d);
     let mut tight = 0;
     for k in 0..1500 {
-        let size = 6 + rnd(30) as usize;
-        let ring = if k % 3 == 0 {
-            random_star(&mut rnd, size, 8)
-        } else {
-            random_ring(&mut rnd, 40)
-        };
-        let Ok((p, _)) = Polygon::from_raw(&crate::test_support::raw(&[&ring])) else {
+        let Some(p) = star_or_grid(&mut rnd, k) else {
             continue;
         };
         let mdts = minimally_degenerate(&p);
