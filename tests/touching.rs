@@ -645,3 +645,54 @@ fn large_single_walks_minitri_and_the_walk_dp_agree() {
         assert!(counts[0] < p.len() - 2, "T-junctions saved triangles");
     }
 }
+
+/// A strip with a chain of `n` diamond holes, each touching the next at a corner (as
+/// `bench/polygon.py diamonds`), as WKT.
+fn diamond_chain(n: i64) -> String {
+    let ring = |r: &[(i64, i64)]| {
+        let points: Vec<String> = r
+            .iter()
+            .chain(&r[..1])
+            .map(|(x, y)| format!("{x} {y}"))
+            .collect();
+        format!("({})", points.join(", "))
+    };
+    let mut rings = vec![ring(&[(0, 0), (2 * n + 8, 0), (2 * n + 8, 8), (0, 8)])];
+    for k in 0..n {
+        let cx = 2 * k + 4;
+        rings.push(ring(&[(cx - 1, 4), (cx, 5), (cx + 1, 4), (cx, 3)]));
+    }
+    format!("POLYGON ({})", rings.join(", "))
+}
+
+/// Issue "Real layers at speed", points 1 and 4: a chain of 3 x 10^4 touching holes (the ear
+/// clipper took minutes on such chains and read no limit). `-a ear` gives the plain count
+/// `N + 2w - 2 - 2t`; the default algorithm with `--time-limit 0.3` ends soon after the limit,
+/// not above the plain count, and when cut short with `stopped_by` and a lower bound not above
+/// its count. The wall-clock bound is generous (the test build, a shared machine): before, the
+/// run with `--time-limit 1` on 10^5 such holes did not end in 300 s.
+#[test]
+fn a_long_chain_of_touching_holes_is_fast_and_keeps_the_time_limit() {
+    let input = diamond_chain(30_000);
+    let (code, out, err) = crate::util::run(&["-a", "ear", "-q"], Some(&input));
+    assert_eq!(code, 0, "{err}");
+    let p = &crate::util::json(&out)["polygons"][0];
+    assert_eq!(
+        (&p["vertices"], &p["touches"]),
+        (&120_004.into(), &29_999.into())
+    );
+    // N + 2w - 2 with one hole walk: 120,004 + 2 - 2.
+    assert_eq!(p["triangle_count"], 120_004);
+    let started = std::time::Instant::now();
+    let (code, out, err) = crate::util::run(&["-q", "--time-limit", "0.3"], Some(&input));
+    let took = started.elapsed();
+    assert_eq!(code, 0, "{err}");
+    assert!(took.as_secs() < 30, "{took:?}");
+    let p = &crate::util::json(&out)["polygons"][0];
+    let count = p["triangle_count"].as_u64().unwrap();
+    assert!(count <= 120_004, "{count}");
+    if p["optimal"] == false {
+        assert_eq!(p["stopped_by"], "time limit");
+        assert!(p["lower_bound"].as_u64().unwrap() <= count);
+    }
+}
