@@ -77,5 +77,6 @@ def test_hex_ewkb_as_shapely_writes_it_reads_on_the_command_line():
     assert ewkb.startswith("0103000020E6100000")
     code, out = cli("--to", "wkt", stdin=(ewkb + "\n").encode())
     assert code == 0
-    # The doubles are taken as their shortest decimals: three collinear points, one triangle.
-    assert out == "GEOMETRYCOLLECTION (POLYGON ((0 0, 0.2 0.6, 0 1, 0 0)))\n"
+    # The doubles are taken as their shortest decimals: three collinear points, one triangle;
+    # the SRID is kept, as EWKT.
+    assert out == "SRID=4326;GEOMETRYCOLLECTION (POLYGON ((0 0, 0.2 0.6, 0 1, 0 0)))\n"
