@@ -62,7 +62,8 @@ pub(crate) struct Moved<P> {
     reflex: bool,
 }
 
-/// The stored vertices of `polygon` as [`Moved`] points, copies found by sorting: O(N log N).
+/// The stored vertices of `polygon` as [`Moved`] points, the copies those marked when the rings
+/// were relinked ([`Polygon::is_copy`]): O(N).
 /// With `turned`, the points are those (the polygon's turned by a rotation, as
 /// [`super::turned_for_walking`] does: the same orientations, another sweep direction).
 ///
@@ -72,27 +73,23 @@ pub(crate) struct Moved<P> {
 pub(crate) fn moved<P: Coord>(polygon: &Polygon<P>, turned: Option<&[P]>) -> Vec<Moved<P>> {
     let n = polygon.len();
     let pt = |i: usize| turned.map_or_else(|| polygon.point(i), |t| t[i]);
-    let mut out: Vec<Moved<P>> = (0..n)
+    (0..n)
         .map(|i| {
             let (prev, at, next) = (pt(polygon.prev(i)), pt(i), pt(polygon.next(i)));
+            // The copies were found while the rings were relinked (`Polygon::is_copy`).
+            let rank = if polygon.is_copy(i) {
+                u32::try_from(i + 1).expect("fewer than 2^32 - 1 stored vertices")
+            } else {
+                0
+            };
             Moved {
                 at,
-                rank: 0,
+                rank,
                 next,
                 reflex: cross(prev, at, next) < 0,
             }
         })
-        .collect();
-    let mut order: Vec<usize> = (0..n).collect();
-    order.sort_unstable_by_key(|&i| polygon.point(i));
-    for run in order.chunk_by(|&i, &j| polygon.point(i) == polygon.point(j)) {
-        if run.len() > 1 {
-            for &i in run {
-                out[i].rank = u32::try_from(i + 1).expect("fewer than 2^32 - 1 stored vertices");
-            }
-        }
-    }
-    out
+        .collect()
 }
 
 impl<P: Coord> Moved<P> {

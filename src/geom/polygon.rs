@@ -144,6 +144,9 @@ pub struct Polygon<P = Point> {
     source_ring: Vec<u32>,
     /// The number of touches joining rings into walks (input rings minus walks).
     touches: usize,
+    /// With touching rings: whether each stored vertex is a copy of a touch point (its point
+    /// is stored more than once); empty otherwise (all points distinct).
+    copy: Vec<bool>,
     /// A plain triangulation for step 1's walks, made while the polygon was validated (large
     /// polygons, [`crate::algo::plain_polygon_for_walking`]), until taken.
     walking_plain: TakeOnce<Vec<[usize; 3]>>,
@@ -299,6 +302,7 @@ impl AnyPolygon {
                     grid: p.grid,
                     source_ring: p.source_ring.clone(),
                     touches: p.touches,
+                    copy: p.copy.clone(),
                     walking_plain: TakeOnce::default(),
                 })
             }
@@ -430,6 +434,7 @@ impl<P: Coord> Polygon<P> {
             grid,
             source_ring: Vec::new(),
             touches: 0,
+            copy: Vec::new(),
             walking_plain: TakeOnce::default(),
         }
     }
@@ -462,8 +467,15 @@ impl<P: Coord> Polygon<P> {
     }
 
     /// The boundary walks of touching rings: stored vertices `order` (walk after walk, each
-    /// starting at `starts[w]`), each keeping its point, input number and input ring.
-    pub(super) fn relinked(&self, order: &[usize], starts: &[usize], touches: usize) -> Polygon<P> {
+    /// starting at `starts[w]`), each keeping its point, input number and input ring, and
+    /// whether it is a copy of a touch point (`copy`, by stored vertex of `self`).
+    pub(super) fn relinked(
+        &self,
+        order: &[usize],
+        starts: &[usize],
+        touches: usize,
+        copy: &[bool],
+    ) -> Polygon<P> {
         let mut ring_of = vec![0u32; order.len()];
         for (w, &start) in starts.iter().enumerate() {
             let end = starts.get(w + 1).copied().unwrap_or(order.len());
@@ -480,6 +492,7 @@ impl<P: Coord> Polygon<P> {
             grid: self.grid,
             source_ring: order.iter().map(|&i| self.ring_of[i]).collect(),
             touches,
+            copy: order.iter().map(|&i| copy[i]).collect(),
             walking_plain: TakeOnce::default(),
         }
     }
@@ -488,6 +501,12 @@ impl<P: Coord> Polygon<P> {
     /// yet: the first call takes it (its memory goes with it).
     pub(crate) fn take_walking_plain(&self) -> Option<Vec<[usize; 3]>> {
         self.walking_plain.take()
+    }
+
+    /// Whether stored vertex `i` is a copy of a touch point: its point is stored more than once
+    /// (only with touching rings).
+    pub(crate) fn is_copy(&self, i: usize) -> bool {
+        self.copy.get(i).copied().unwrap_or(false)
     }
 
     /// The number of holes of the input (hole walks plus touches).
@@ -514,6 +533,7 @@ impl<P: Coord> Polygon<P> {
             grid,
             source_ring: Vec::new(),
             touches: 0,
+            copy: Vec::new(),
             walking_plain: TakeOnce::default(),
         }
     }

@@ -47,7 +47,11 @@ pub(crate) fn walks<P: Coord>(
     rings: Polygon<P>,
     contacts: &Contacts,
 ) -> Result<Polygon<P>, Vec<InvalidPolygon>> {
-    let (p, inserted) = insert_on_edges(&rings, &contacts.on_edge);
+    let (p, inserted) = if contacts.on_edge.is_empty() {
+        (rings, Vec::new()) // only shared vertices: nothing to insert, no copy of the rings
+    } else {
+        insert_on_edges(&rings, &contacts.on_edge)
+    };
     let groups = touch_groups(&p);
     let name = |i: usize| match inserted.iter().find(|&&(v, _)| v == i) {
         Some(&(_, (a, b))) => format!("{} edge {a}-{b}", p.ring(i)),
@@ -96,7 +100,11 @@ pub(crate) fn walks<P: Coord>(
         }
     }
     let touches = rings_n - starts.len();
-    Ok(p.relinked(&order, &starts, touches))
+    let mut copy = vec![false; p.len()];
+    for &i in groups.iter().flatten() {
+        copy[i] = true;
+    }
+    Ok(p.relinked(&order, &starts, touches, &copy))
 }
 
 /// A stored vertex inserted into an edge, with the input numbers of the edge's ends.

@@ -24,6 +24,7 @@ pub mod dependency;
 pub mod expansion;
 pub mod ladder;
 pub mod lists;
+pub(crate) mod local_search;
 pub mod mis;
 pub mod partition;
 pub mod small;
