@@ -275,7 +275,7 @@ fn solve_component(
         scratch: Scratch::default(),
     };
     let all = Bits::full(n);
-    let root_bound = search.bound(&all, 0);
+    let root_bound = search.bound(&all, 0, true);
     let best = search.solve(all, start);
     let set = best.iter().map(|&v| component[v]).collect();
     if search.stopped {
@@ -348,6 +348,121 @@ struct Scratch {
     gone: Vec<u32>,
     pass: u32,
     queue: Vec<usize>,
+    /// An inconsistent set being collected (cliques), and whether each is in it.
+    set: Vec<usize>,
+    in_set: Vec<bool>,
+    /// Cliques met by one [`Scratch::collect`].
+    seen: Vec<bool>,
+}
+
+/// How close to pruning a node's bound must come for the failed-literal test
+/// ([`Search::bound`]).
+const FAILED_LITERAL_MARGIN: usize = 2;
+
+impl Scratch {
+    /// One unit propagation over the cover's `cliques` (those not spent), from its cliques of
+    /// one member and, if `forced` (clique, member), from that member alone in its clique: the
+    /// clique it empties, if any (`because` then records what emptied what).
+    fn propagate(
+        &mut self,
+        adjacent: &[Vec<usize>],
+        cand: &Bits,
+        cliques: usize,
+        forced: Option<(usize, usize)>,
+    ) -> Option<usize> {
+        self.pass = self.pass.wrapping_add(1);
+        if self.pass == 0 {
+            self.gone.fill(0);
+            self.pass = 1;
+        }
+        self.alive.clear();
+        self.alive
+            .extend((0..cliques).map(|c| self.starts[c + 1] - self.starts[c]));
+        self.done.clear();
+        self.done.resize(cliques, false);
+        self.because.resize_with(cliques, Vec::new);
+        for list in &mut self.because[..cliques] {
+            list.clear();
+        }
+        self.queue.clear();
+        if let Some((c, v)) = forced {
+            for k in self.starts[c]..self.starts[c + 1] {
+                if self.members[k] != v {
+                    self.gone[self.members[k]] = self.pass;
+                }
+            }
+            self.alive[c] = 1;
+        }
+        let units = (0..cliques).filter(|&c| self.alive[c] == 1 && !self.spent[c]);
+        self.queue.extend(units);
+        while let Some(c) = self.queue.pop() {
+            if self.done[c] || self.spent[c] {
+                continue;
+            }
+            self.done[c] = true;
+            let Some(&v) = self.members[self.starts[c]..self.starts[c + 1]]
+                .iter()
+                .find(|&&v| self.gone[v] != self.pass)
+            else {
+                continue;
+            };
+            for &u in &adjacent[v] {
+                if !cand.contains(u) || self.gone[u] == self.pass {
+                    continue;
+                }
+                let d = self.clique_of[u];
+                if d == c || self.spent[d] {
+                    continue;
+                }
+                self.gone[u] = self.pass;
+                self.alive[d] -= 1;
+                self.because[d].push(c);
+                if self.alive[d] == 0 {
+                    return Some(d);
+                }
+                if self.alive[d] == 1 {
+                    self.queue.push(d);
+                }
+            }
+        }
+        None
+    }
+
+    /// Adds to `set` the emptied clique `d` and, transitively, the cliques that emptied it in
+    /// the last propagation.
+    fn collect(&mut self, d: usize) {
+        let cliques = self.spent.len();
+        self.in_set.clear();
+        self.in_set.resize(cliques, false);
+        for &c in &self.set {
+            self.in_set[c] = true;
+        }
+        self.seen.clear();
+        self.seen.resize(cliques, false);
+        self.seen[d] = true;
+        self.queue.clear();
+        self.queue.push(d);
+        while let Some(c) = self.queue.pop() {
+            if !self.in_set[c] {
+                self.in_set[c] = true;
+                self.set.push(c);
+            }
+            for i in 0..self.because[c].len() {
+                let e = self.because[c][i];
+                if !self.seen[e] {
+                    self.seen[e] = true;
+                    self.queue.push(e);
+                }
+            }
+        }
+    }
+
+    /// Sets aside the cliques of `set` (an inconsistent set, counted once).
+    fn spend(&mut self) {
+        for &c in &self.set {
+            self.spent[c] = true;
+        }
+    }
 }
 
 impl Search {
@@ -361,80 +476,53 @@ impl Search {
     /// cannot give one vertex each: an independent set takes at most one fewer than their
     /// number. Such sets are set aside (disjoint) and propagation starts again. Stops as soon
     /// as the bound is at most `enough` (the caller prunes there).
-    fn bound(&mut self, cand: &Bits, enough: usize) -> usize {
+    ///
+    /// Then, while no propagation empties a clique, *failed literals*: a clique of two or three
+    /// each of whose members, forced, ends in an emptied clique is inconsistent together with
+    /// all those sets. That costs more, so it runs at the root (`thorough`) and at nodes whose
+    /// bound is within [`FAILED_LITERAL_MARGIN`] of pruning.
+    fn bound(&mut self, cand: &Bits, enough: usize, thorough: bool) -> usize {
         let cliques = self.cover(cand);
         let sc = &mut self.scratch;
         sc.spent.clear();
         sc.spent.resize(cliques, false);
         let mut bound = cliques;
-        while bound > enough {
-            // One propagation from the cliques of one member.
-            sc.pass = sc.pass.wrapping_add(1);
-            if sc.pass == 0 {
-                sc.gone.fill(0);
-                sc.pass = 1;
+        'lower: while bound > enough {
+            if let Some(d) = sc.propagate(&self.adjacent, cand, cliques, None) {
+                sc.set.clear();
+                sc.collect(d);
+                sc.spend();
+                bound -= 1;
+                continue;
             }
-            sc.alive.clear();
-            sc.alive
-                .extend((0..cliques).map(|c| sc.starts[c + 1] - sc.starts[c]));
-            sc.done.clear();
-            sc.done.resize(cliques, false);
-            sc.because.resize_with(cliques, Vec::new);
-            for list in &mut sc.because[..cliques] {
-                list.clear();
-            }
-            sc.queue.clear();
-            sc.queue
-                .extend((0..cliques).filter(|&c| sc.alive[c] == 1 && !sc.spent[c]));
-            let mut empty = None;
-            'propagate: while let Some(c) = sc.queue.pop() {
-                if sc.done[c] || sc.spent[c] {
-                    continue;
-                }
-                sc.done[c] = true;
-                let Some(&v) = sc.members[sc.starts[c]..sc.starts[c + 1]]
-                    .iter()
-                    .find(|&&v| sc.gone[v] != sc.pass)
-                else {
-                    continue;
-                };
-                for &u in &self.adjacent[v] {
-                    if !cand.contains(u) || sc.gone[u] == sc.pass {
-                        continue;
-                    }
-                    let d = sc.clique_of[u];
-                    if d == c || sc.spent[d] {
-                        continue;
-                    }
-                    sc.gone[u] = sc.pass;
-                    sc.alive[d] -= 1;
-                    sc.because[d].push(c);
-                    if sc.alive[d] == 0 {
-                        empty = Some(d);
-                        break 'propagate;
-                    }
-                    if sc.alive[d] == 1 {
-                        sc.queue.push(d);
-                    }
-                }
-            }
-            let Some(d) = empty else {
+            if !thorough && bound > enough + FAILED_LITERAL_MARGIN {
                 break;
-            };
-            // The inconsistent set: `d` and, transitively, the cliques that emptied it.
-            sc.spent[d] = true;
-            sc.queue.clear();
-            sc.queue.push(d);
-            while let Some(c) = sc.queue.pop() {
-                for k in 0..sc.because[c].len() {
-                    let e = sc.because[c][k];
-                    if !sc.spent[e] {
-                        sc.spent[e] = true;
-                        sc.queue.push(e);
+            }
+            for c in 0..cliques {
+                let size = sc.starts[c + 1] - sc.starts[c];
+                if sc.spent[c] || !(2..=3).contains(&size) {
+                    continue;
+                }
+                sc.set.clear();
+                sc.set.push(c);
+                let mut every = true;
+                for k in sc.starts[c]..sc.starts[c + 1] {
+                    let v = sc.members[k];
+                    match sc.propagate(&self.adjacent, cand, cliques, Some((c, v))) {
+                        Some(d) => sc.collect(d),
+                        None => {
+                            every = false;
+                            break;
+                        }
                     }
                 }
+                if every {
+                    sc.spend();
+                    bound -= 1;
+                    continue 'lower;
+                }
             }
-            bound -= 1;
+            break;
         }
         bound
     }
@@ -572,7 +660,7 @@ impl Search {
             return;
         }
         let enough = best.len().saturating_sub(chosen.len());
-        if self.bound(&cand, enough) <= enough {
+        if self.bound(&cand, enough, false) <= enough {
             chosen.truncate(mark);
             return;
         }
