@@ -12,17 +12,23 @@
 //! to fit 255 bytes (`NAME` cut at a character boundary). A target that exists and is read-only
 //! is not replaced (an error: renaming over it would succeed on POSIX).
 //!
-//! The temporary file is created with `O_CREAT | O_EXCL` (and `O_NOFOLLOW`) under a name with
-//! a random part (the `tempfile` crate), so that a link or a file planted at its path is never
-//! written through, and its name cannot be guessed in advance. Its writer holds an exclusive
+//! Every step is made through the output's directory held open ([`super::dir`]): the temporary
+//! file is created there with `O_CREAT | O_EXCL | O_NOFOLLOW` (`openat`) under a name with a
+//! random part (named by the `tempfile` crate), so that a link or a file planted at its path is
+//! never written through and its name cannot be guessed in advance; the file it replaces is
+//! looked at there (`fstatat`, not following a link); and it is renamed within that directory
+//! (`renameat`) after checking that its name is still the file written. No path is resolved
+//! again after it was checked, so a link swapped into the output's path meanwhile is never
+//! followed. Its writer holds an exclusive
 //! lock on it (`flock`) until it is renamed or removed. Replacing a file carries over its
 //! permission bits (and its owner and group where the process may set them), as `install` and
 //! editors do: a 0600 output stays 0600. A new file gets 0666 less the umask, as `File::create`.
 //!
 //! Two exceptions: a target that is a device or a pipe (`/dev/stdout`, a FIFO) is written
 //! directly, like standard output (there is no file to replace; renaming over it would replace
-//! the device node); a target that is a symbolic link has the file it points to replaced, the
-//! link itself stays.
+//! the device node); a target of [`AtomicFile::create`] (`-o FILE`) that is a symbolic link has
+//! the file it points to replaced, the link itself stays, while below a batch's output directory
+//! ([`AtomicFile::create_beneath`]) a link is refused.
 
 use super::dir::{self, Dir, Entry, Kind, Linked};
 use super::guard::FileId;
