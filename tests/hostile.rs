@@ -892,6 +892,37 @@ fn no_link_below_the_output_directory_is_followed() {
 }
 
 #[test]
+fn a_fifo_in_the_output_tree_is_not_waited_on() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    fs::create_dir_all(dir.join("in")).unwrap();
+    fs::create_dir_all(dir.join("out")).unwrap();
+    for name in ["a.wkt", "b.wkt"] {
+        fs::write(dir.join("in").join(name), U_SHAPE).unwrap();
+    }
+    // Planted by someone who can write the output tree: no reader will ever come.
+    mkfifo(&dir.join("out/a.json"));
+    let child = bin()
+        .current_dir(dir)
+        .args(["in", "-o", "out"])
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let status = wait_at_most(child, Duration::from_secs(20));
+    assert_eq!(status, 1);
+    let (code, _, err) = run_in(dir, &["in", "-o", "out"]);
+    assert_eq!(code, 1, "{err}");
+    assert!(
+        err.contains("minitri: cannot write out/a.json: it is a FIFO, not a regular file; not replaced (name it with -o to write into it)"),
+        "{err}"
+    );
+    assert!(fs::read_to_string(dir.join("out/b.json"))
+        .unwrap()
+        .contains("\"triangle_count\": 5"));
+    assert!(temporaries(dir).is_empty(), "{:?}", temporaries(dir));
+}
+
+#[test]
 fn a_link_planted_at_a_temporary_name_is_never_written_through() {
     let tmp = tempfile::tempdir().unwrap();
     let dir = tmp.path();

@@ -138,7 +138,8 @@ impl AtomicFile {
     /// the directories missing on the way, and following no link below `root` (`root` itself,
     /// the user's own path, is followed): a link on the way, the output itself included, is an
     /// error holding [`Linked`]; a directory that cannot be made, one holding
-    /// [`dir::NotCreated`]. Every later step is made relative to the output's directory held
+    /// [`dir::NotCreated`]. A FIFO, socket or device at the output's name is an error too (no
+    /// one named it; a FIFO would be waited on). Every later step is made relative to the output's directory held
     /// open: no path is resolved again.
     ///
     /// # Errors
@@ -167,7 +168,15 @@ impl AtomicFile {
                 let last = true;
                 return Err(io::Error::other(Linked { link, to, last }));
             }
-            Some(Kind::Other) => {
+            // In a batch, a FIFO (or device) found in the output tree is not written into:
+            // no one named it, and opening a FIFO waits for a reader, forever if none comes.
+            Some(Kind::Other(what)) if no_link => {
+                return Err(io::Error::new(
+                    io::ErrorKind::InvalidInput,
+                    format!("it is {what}, not a regular file; not replaced (name it with -o to write into it)"),
+                ));
+            }
+            Some(Kind::Other(_)) => {
                 let file = dir.open_write(&name, false)?;
                 if !file.metadata().is_ok_and(|m| m.is_file()) {
                     return Ok(AtomicFile::direct(&target, file));

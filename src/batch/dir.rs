@@ -42,8 +42,8 @@ pub enum Kind {
     File,
     Dir,
     Link,
-    /// A device, a FIFO, a socket.
-    Other,
+    /// A device, a FIFO, a socket: what it is (`a FIFO`).
+    Other(&'static str),
 }
 
 /// A directory entry's type, identity and permissions, not following a link (`fstatat` with
@@ -276,7 +276,7 @@ impl Dir {
                 t if t.is_symlink() => Kind::Link,
                 t if t.is_dir() => Kind::Dir,
                 t if t.is_file() => Kind::File,
-                _ => Kind::Other,
+                _ => Kind::Other("a special file"),
             };
             Ok(Some(Entry {
                 kind,
@@ -460,7 +460,9 @@ mod sys {
             FileType::RegularFile => Kind::File,
             FileType::Directory => Kind::Dir,
             FileType::Symlink => Kind::Link,
-            _ => Kind::Other,
+            FileType::Fifo => Kind::Other("a FIFO"),
+            FileType::Socket => Kind::Other("a socket"),
+            _ => Kind::Other("a device"),
         };
         let mode = stat.st_mode as u32;
         Entry {
