@@ -19,10 +19,10 @@
 //! looked at there (`fstatat`, not following a link); and it is renamed within that directory
 //! (`renameat`) after checking that its name is still the file written. No path is resolved
 //! again after it was checked, so a link swapped into the output's path meanwhile is never
-//! followed. Its writer holds an exclusive
-//! lock on it (`flock`) until it is renamed or removed. Replacing a file carries over its
-//! permission bits (and its owner and group where the process may set them), as `install` and
-//! editors do: a 0600 output stays 0600. A new file gets 0666 less the umask, as `File::create`.
+//! followed. Its writer holds an exclusive lock on it (`flock`) until it is renamed or removed.
+//! Replacing a file carries over its permission bits (and its owner and group where the process
+//! may set them), as `install` and editors do: a 0600 output stays 0600. A new file gets 0666
+//! less the umask, as `File::create`.
 //!
 //! Two exceptions: a target that is a device or a pipe (`/dev/stdout`, a FIFO) is written
 //! directly, like standard output (there is no file to replace; renaming over it would replace

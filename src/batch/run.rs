@@ -171,8 +171,8 @@ pub struct TreeJob {
 /// directory the outputs were planned in) is followed: an output reached through one is refused
 /// for that input alone, and every step of placing an output is made through its directory
 /// held open (`openat`, `renameat`), so a link swapped in while the run writes is never followed
-/// either. Messages reach `observer` in input
-/// order; the returned tally counts everything (an output that cannot be written is an error).
+/// either. Messages reach `observer` in input order; the returned tally counts everything (an
+/// output that cannot be written is an error).
 ///
 /// # Examples
 /// ```
