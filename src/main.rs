@@ -264,7 +264,7 @@ fn run() -> anyhow::Result<ExitCode> {
                     TreeJob { input, output }
                 })
                 .collect();
-            pool.install(|| run_tree(&jobs, &settings, config.to, &progress))
+            pool.install(|| run_tree(&jobs, out, &settings, config.to, &progress))
         }
         (None, Some(path)) => {
             let mut file = AtomicFile::create(path)

@@ -784,9 +784,9 @@ fn a_batch_never_writes_through_a_link_into_an_input() {
     for name in ["a.wkt", "b.wkt", "c.wkt"] {
         fs::write(dir.join("in").join(name), U_SHAPE).unwrap();
     }
-    // Two outputs linked to one input, a third output plain.
+    // One output a symbolic link to an input, one a hard link to it, a third output plain.
     std::os::unix::fs::symlink("../in/a.wkt", dir.join("out/a.json")).unwrap();
-    std::os::unix::fs::symlink("../in/a.wkt", dir.join("out/b.json")).unwrap();
+    fs::hard_link(dir.join("in/a.wkt"), dir.join("out/b.json")).unwrap();
     // A subdirectory of the output tree linked into the input tree, where an input's output
     // has the input's own name (a GeoJSON input named .json).
     let geojson = r#"{"type": "Polygon", "coordinates": [[[0, 0], [4, 0], [0, 4], [0, 0]]]}"#;
@@ -794,16 +794,13 @@ fn a_batch_never_writes_through_a_link_into_an_input() {
     std::os::unix::fs::symlink("../in/sub", dir.join("out/sub")).unwrap();
     let (code, _, err) = run_in(dir, &["in", "-o", "out", "--jobs", "2"]);
     assert_eq!(code, 1, "a batch with a failed file: {err}");
-    for (input, output) in [("a", "a"), ("b", "a")] {
-        let line = format!("minitri: in/{input}.wkt: not processed: its output out/{input}.json is the input in/{output}.wkt (the same file, through a link); it would be overwritten");
-        assert!(err.contains(&line), "{err}");
+    for line in [
+        "minitri: in/a.wkt: not processed: its output out/a.json is a symbolic link (to ../in/a.wkt); links inside the output directory are not followed (remove the link)",
+        "minitri: in/b.wkt: not processed: its output out/b.json is the input in/a.wkt (the same file, through a link); it would be overwritten",
+        "minitri: in/sub/d.json: not processed: its output out/sub/d.json is reached through the symbolic link out/sub (to ../in/sub); links inside the output directory are not followed (remove the link)",
+    ] {
+        assert!(err.contains(line), "{line}\n{err}");
     }
-    assert!(
-        err.contains(
-            "in/sub/d.json: not processed: its output out/sub/d.json is the input in/sub/d.json"
-        ),
-        "{err}"
-    );
     assert_eq!(fs::read_to_string(dir.join("in/a.wkt")).unwrap(), U_SHAPE);
     assert_eq!(
         fs::read_to_string(dir.join("in/sub/d.json")).unwrap(),
@@ -814,6 +811,112 @@ fn a_batch_never_writes_through_a_link_into_an_input() {
         .unwrap()
         .is_symlink());
     assert!(fs::read_to_string(dir.join("out/c.json"))
+        .unwrap()
+        .contains("\"triangle_count\": 5"));
+    assert!(temporaries(dir).is_empty(), "{:?}", temporaries(dir));
+}
+
+/// Every file below `dir`, links not followed, as sorted relative paths.
+fn tree(dir: &Path) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(at) = stack.pop() {
+        for entry in fs::read_dir(&at).unwrap().flatten() {
+            let path = entry.path();
+            if entry.file_type().unwrap().is_dir() {
+                stack.push(path.clone());
+            }
+            let relative = path.strip_prefix(dir).unwrap();
+            out.push(relative.to_string_lossy().into_owned());
+        }
+    }
+    out.sort();
+    out
+}
+
+#[test]
+fn no_link_below_the_output_directory_is_followed() {
+    use std::os::unix::fs::symlink;
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    for sub in ["in/s/t", "in/u/v", "out/u", "elsewhere"] {
+        fs::create_dir_all(dir.join(sub)).unwrap();
+    }
+    for name in [
+        "a.wkt",
+        "b.wkt",
+        "s/c.wkt",
+        "s/t/d.wkt",
+        "u/v/e.wkt",
+        "u/f.wkt",
+        "g.wkt",
+    ] {
+        fs::write(dir.join("in").join(name), U_SHAPE).unwrap();
+    }
+    fs::write(dir.join("elsewhere/b.json"), "kept").unwrap();
+    // A link at every depth of an output's path: the output itself (to an input, and to a
+    // harmless file elsewhere), a first-level directory, a second-level one (below a real
+    // directory), each leading into the input tree or elsewhere.
+    symlink("../in/a.wkt", dir.join("out/a.json")).unwrap();
+    symlink("../elsewhere/b.json", dir.join("out/b.json")).unwrap();
+    symlink("../in/s", dir.join("out/s")).unwrap();
+    symlink("../../elsewhere", dir.join("out/u/v")).unwrap();
+    // The output directory itself may be a link: the user's own path, followed.
+    symlink("out", dir.join("out-link")).unwrap();
+    let before_in = tree(&dir.join("in"));
+    let (code, _, err) = run_in(dir, &["in", "-o", "out-link", "--jobs", "2"]);
+    assert_eq!(code, 1, "{err}");
+    let not_followed = "links inside the output directory are not followed (remove the link)";
+    for line in [
+        format!("minitri: in/a.wkt: not processed: its output out-link/a.json is a symbolic link (to ../in/a.wkt); {not_followed}"),
+        format!("minitri: in/b.wkt: not processed: its output out-link/b.json is a symbolic link (to ../elsewhere/b.json); {not_followed}"),
+        format!("minitri: in/s/c.wkt: not processed: its output out-link/s/c.json is reached through the symbolic link out-link/s (to ../in/s); {not_followed}"),
+        format!("minitri: in/s/t/d.wkt: not processed: its output out-link/s/t/d.json is reached through the symbolic link out-link/s (to ../in/s); {not_followed}"),
+        format!("minitri: in/u/v/e.wkt: not processed: its output out-link/u/v/e.json is reached through the symbolic link out-link/u/v (to ../../elsewhere); {not_followed}"),
+    ] {
+        assert!(err.contains(&line), "{line}\n{err}");
+    }
+    assert!(err.contains("7 files"), "{err}");
+    // Nothing written into the input tree or elsewhere; the files without a link are written.
+    assert_eq!(tree(&dir.join("in")), before_in);
+    assert_eq!(tree(&dir.join("elsewhere")), ["b.json"]);
+    assert_eq!(
+        fs::read_to_string(dir.join("elsewhere/b.json")).unwrap(),
+        "kept"
+    );
+    for written in ["out/g.json", "out/u/f.json"] {
+        let json = fs::read_to_string(dir.join(written)).unwrap();
+        assert!(json.contains("\"triangle_count\": 5"), "{written}");
+    }
+    assert!(temporaries(dir).is_empty(), "{:?}", temporaries(dir));
+}
+
+#[test]
+fn a_fifo_in_the_output_tree_is_not_waited_on() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    fs::create_dir_all(dir.join("in")).unwrap();
+    fs::create_dir_all(dir.join("out")).unwrap();
+    for name in ["a.wkt", "b.wkt"] {
+        fs::write(dir.join("in").join(name), U_SHAPE).unwrap();
+    }
+    // Planted by someone who can write the output tree: no reader will ever come.
+    mkfifo(&dir.join("out/a.json"));
+    let child = bin()
+        .current_dir(dir)
+        .args(["in", "-o", "out"])
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let status = wait_at_most(child, Duration::from_secs(20));
+    assert_eq!(status, 1);
+    let (code, _, err) = run_in(dir, &["in", "-o", "out"]);
+    assert_eq!(code, 1, "{err}");
+    assert!(
+        err.contains("minitri: cannot write out/a.json: it is a FIFO, not a regular file; not replaced (name it with -o to write into it)"),
+        "{err}"
+    );
+    assert!(fs::read_to_string(dir.join("out/b.json"))
         .unwrap()
         .contains("\"triangle_count\": 5"));
     assert!(temporaries(dir).is_empty(), "{:?}", temporaries(dir));

@@ -12,37 +12,53 @@
 //! to fit 255 bytes (`NAME` cut at a character boundary). A target that exists and is read-only
 //! is not replaced (an error: renaming over it would succeed on POSIX).
 //!
-//! The temporary file is created with `O_CREAT | O_EXCL` (and `O_NOFOLLOW`) under a name with
-//! a random part (the `tempfile` crate), so that a link or a file planted at its path is never
-//! written through, and its name cannot be guessed in advance. Its writer holds an exclusive
-//! lock on it (`flock`) until it is renamed or removed. Replacing a file carries over its
-//! permission bits (and its owner and group where the process may set them), as `install` and
-//! editors do: a 0600 output stays 0600. A new file gets 0666 less the umask, as `File::create`.
+//! Every step is made through the output's directory held open ([`super::dir`]): the temporary
+//! file is created there with `O_CREAT | O_EXCL | O_NOFOLLOW` (`openat`) under a name with a
+//! random part (named by the `tempfile` crate), so that a link or a file planted at its path is
+//! never written through and its name cannot be guessed in advance; the file it replaces is
+//! looked at there (`fstatat`, not following a link); and it is renamed within that directory
+//! (`renameat`) after checking that its name is still the file written. No path is resolved
+//! again after it was checked, so a link swapped into the output's path meanwhile is never
+//! followed. Its writer holds an exclusive lock on it (`flock`) until it is renamed or removed.
+//! Replacing a file carries over its permission bits (and its owner and group where the process
+//! may set them), as `install` and editors do: a 0600 output stays 0600. A new file gets 0666
+//! less the umask, as `File::create`.
 //!
 //! Two exceptions: a target that is a device or a pipe (`/dev/stdout`, a FIFO) is written
 //! directly, like standard output (there is no file to replace; renaming over it would replace
-//! the device node); a target that is a symbolic link has the file it points to replaced, the
-//! link itself stays.
+//! the device node); a target of [`AtomicFile::create`] (`-o FILE`) that is a symbolic link has
+//! the file it points to replaced, the link itself stays, while below a batch's output directory
+//! ([`AtomicFile::create_beneath`]) a link is refused.
 
-use std::fs::{File, OpenOptions};
+use super::dir::{self, Dir, Entry, Kind, Linked};
+use super::guard::FileId;
+use std::ffi::{OsStr, OsString};
+use std::fs::File;
 use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
-use std::sync::{Mutex, MutexGuard, OnceLock};
+use std::sync::{Arc, Mutex, MutexGuard, OnceLock};
 use std::time::Duration;
+
+/// A temporary file of this process not yet renamed or removed: its directory (held open) and
+/// its name there.
+type Live = (Arc<Dir>, OsString);
 
 /// The temporary files of this process not yet renamed or removed. Its lock is held across
 /// every rename and removal, so [`exit_removing_temporaries`] sees each file either still
 /// temporary or already complete under its final name.
-static LIVE: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+static LIVE: Mutex<Vec<Live>> = Mutex::new(Vec::new());
 
-fn live() -> MutexGuard<'static, Vec<PathBuf>> {
+fn live() -> MutexGuard<'static, Vec<Live>> {
     // A panic elsewhere while holding the lock leaves the list itself intact.
     LIVE.lock()
         .unwrap_or_else(std::sync::PoisonError::into_inner)
 }
 
-fn forget(live: &mut Vec<PathBuf>, temp: &Path) {
-    if let Some(k) = live.iter().position(|p| p == temp) {
+fn forget(live: &mut Vec<Live>, dir: &Arc<Dir>, temp: &OsStr) {
+    if let Some(k) = live
+        .iter()
+        .position(|(d, t)| Arc::ptr_eq(d, dir) && t == temp)
+    {
         live.swap_remove(k);
     }
 }
@@ -52,61 +68,137 @@ fn forget(live: &mut Vec<PathBuf>, temp: &Path) {
 /// output nor a temporary file. Outputs already committed stay, complete.
 pub fn exit_removing_temporaries(code: i32) -> ! {
     let live = live(); // held until the exit: no rename can start after this point
-    for temp in live.iter() {
-        let _ = std::fs::remove_file(temp);
+    for (dir, temp) in live.iter() {
+        let _ = dir.remove(temp);
     }
     std::process::exit(code)
+}
+
+/// Where a temporary file is, and the entry it is to replace, all in one directory held open.
+#[derive(Debug)]
+struct Place {
+    dir: Arc<Dir>,
+    /// The entry replaced.
+    name: OsString,
+    /// The temporary file; empty once renamed.
+    temp: OsString,
 }
 
 /// An output file being written; it replaces its target only on [`AtomicFile::commit`].
 #[derive(Debug)]
 pub struct AtomicFile {
     target: PathBuf,
-    temp: PathBuf,
+    /// `None` for a device or a pipe, written directly.
+    place: Option<Place>,
     file: Option<BufWriter<File>>,
 }
 
 /// Random characters in a temporary file's name (62 possible each: about 60 bits).
 const RANDOM_CHARS: usize = 10;
 
+#[cfg(test)]
+thread_local! {
+    /// Called by [`AtomicFile::commit`] just before the rename (tests plant links there).
+    static BEFORE_RENAME: std::cell::RefCell<Option<Box<dyn FnMut()>>> =
+        const { std::cell::RefCell::new(None) };
+}
+
 impl AtomicFile {
-    /// Starts writing `target` (its directory must exist).
+    /// Starts writing `target` (its directory must exist), the path as the user gave it: its
+    /// links are followed (a link as last component: the file it points to is replaced, the
+    /// link stays).
     ///
     /// # Errors
     /// When the temporary file cannot be created (the message names the directory that
     /// refuses it), or its permissions cannot be set to the replaced file's.
     pub fn create(target: &Path) -> io::Result<AtomicFile> {
         // A device or a pipe (`/dev/stdout`, `/dev/null`, a FIFO) is written directly, as
-        // standard output is: renaming a file over it would replace the device itself.
+        // standard output is: renaming a file over it would replace the device itself. (Opened
+        // by path: `/dev/stdout` is a link the kernel resolves, not one that can be read.)
         if std::fs::metadata(target).is_ok_and(|m| !m.is_file() && !m.is_dir()) {
             let file = std::fs::OpenOptions::new().write(true).open(target)?;
-            return Ok(AtomicFile {
-                target: target.to_path_buf(),
-                temp: PathBuf::new(),
-                file: Some(BufWriter::new(file)),
-            });
+            // Replaced by a regular file since: never written in place.
+            if !file.metadata().is_ok_and(|m| m.is_file()) {
+                return Ok(AtomicFile::direct(target, file));
+            }
         }
-        let target = final_path(target)?;
-        let dir = target
-            .parent()
-            .filter(|d| !d.as_os_str().is_empty())
-            .unwrap_or(Path::new("."));
-        let replaced = std::fs::metadata(&target).ok().filter(|m| m.is_file());
-        if replaced
-            .as_ref()
-            .is_some_and(|m| m.permissions().readonly())
-        {
+        let Some(name) = target.file_name() else {
+            return Err(io::Error::new(
+                io::ErrorKind::InvalidInput,
+                "not the name of a file",
+            ));
+        };
+        let parent = target.parent().unwrap_or(Path::new(""));
+        let dir = Dir::open(parent).map_err(|e| refused(parent, &e))?;
+        let (dir, name) = dir.follow(name.to_os_string())?;
+        AtomicFile::place(dir, name, false)
+    }
+
+    /// Starts writing `relative` below the directory `root` (an output of a batch), creating
+    /// the directories missing on the way, and following no link below `root` (`root` itself,
+    /// the user's own path, is followed): a link on the way, the output itself included, is an
+    /// error holding [`Linked`]; a directory that cannot be made, one holding
+    /// [`dir::NotCreated`]. A FIFO, socket or device at the output's name is an error too (no
+    /// one named it; a FIFO would be waited on). Every later step is made relative to the output's directory held
+    /// open: no path is resolved again.
+    ///
+    /// # Errors
+    /// As above, and as [`AtomicFile::create`].
+    pub fn create_beneath(root: &Path, relative: &Path) -> io::Result<AtomicFile> {
+        let (dir, name) = Dir::beneath(root, relative)?;
+        AtomicFile::place(dir, name, true)
+    }
+
+    fn direct(target: &Path, file: File) -> AtomicFile {
+        AtomicFile {
+            target: target.to_path_buf(),
+            place: None,
+            file: Some(BufWriter::new(file)),
+        }
+    }
+
+    /// Starts writing the entry `name` of `dir`; `no_link`: a link there is refused.
+    fn place(dir: Dir, name: OsString, no_link: bool) -> io::Result<AtomicFile> {
+        let target = dir.join(&name);
+        let mut replaced = dir.entry(&name)?;
+        match replaced.as_ref().map(|e| e.kind) {
+            Some(Kind::Link) if no_link => {
+                let to = dir.read_link(&name)?;
+                let link = target.clone();
+                let last = true;
+                return Err(io::Error::other(Linked { link, to, last }));
+            }
+            // In a batch, a FIFO (or device) found in the output tree is not written into:
+            // no one named it, and opening a FIFO waits for a reader, forever if none comes.
+            Some(Kind::Other(what)) if no_link => {
+                return Err(io::Error::new(
+                    io::ErrorKind::InvalidInput,
+                    format!("it is {what}, not a regular file; not replaced (name it with -o to write into it)"),
+                ));
+            }
+            Some(Kind::Other(_)) => {
+                let file = dir.open_write(&name, false)?;
+                if !file.metadata().is_ok_and(|m| m.is_file()) {
+                    return Ok(AtomicFile::direct(&target, file));
+                }
+                replaced = dir.entry(&name)?; // a regular file since: replaced as one
+            }
+            _ => {}
+        }
+        let replaced: Option<Entry> = replaced.filter(|e| e.kind == Kind::File);
+        if replaced.as_ref().is_some_and(|e| e.readonly) {
             return Err(io::Error::new(
                 io::ErrorKind::PermissionDenied,
                 "the file is read-only; not replaced",
             ));
         }
-        remove_stale(dir);
-        let name = target
-            .file_name()
-            .map(|n| n.to_string_lossy().into_owned())
-            .unwrap_or_default();
-        let prefix = temporary_prefix(&name, std::process::id(), host_namespace());
+        remove_stale(&dir);
+        let prefix = temporary_prefix(
+            &name.to_string_lossy(),
+            std::process::id(),
+            host_namespace(),
+        );
+        let dir = Arc::new(dir);
         let (file, temp) = {
             let mut live = live();
             let made = tempfile::Builder::new()
@@ -114,22 +206,18 @@ impl AtomicFile {
                 .suffix(".tmp")
                 .rand_bytes(RANDOM_CHARS)
                 .disable_cleanup(true)
-                .make_in(dir, create_new)
-                .map_err(|e| {
-                    let dir = dir.display();
-                    io::Error::new(
-                        e.kind(),
-                        format!("the directory {dir} refuses a new file ({e}): the output is written to a temporary file there first"),
-                    )
-                })?;
-            let (file, temp) = made.into_parts();
-            let temp = temp.to_path_buf();
-            live.push(temp.clone());
+                .make_in(dir.path(), |path| {
+                    let temp = path.file_name().unwrap_or_default();
+                    dir.create_new(temp).map(|file| (file, temp.to_os_string()))
+                })
+                .map_err(|e| refused(dir.path(), &e))?;
+            let ((file, temp), _) = made.into_parts();
+            live.push((Arc::clone(&dir), temp.clone()));
             (file, temp)
         };
         let mut atomic = AtomicFile {
             target,
-            temp,
+            place: Some(Place { dir, name, temp }),
             file: None,
         };
         // Held until the file is renamed or removed: proof that it is not stale (a lock that is
@@ -144,7 +232,7 @@ impl AtomicFile {
 
     /// Is the target a device or a pipe, written directly (so nothing can be held back)?
     pub fn is_direct(&self) -> bool {
-        self.temp.as_os_str().is_empty()
+        self.place.is_none()
     }
 
     /// The file that [`AtomicFile::commit`] replaces: the target with the links of its last
@@ -153,75 +241,97 @@ impl AtomicFile {
         &self.target
     }
 
+    /// The identity of the file [`AtomicFile::commit`] would replace now (looked at in the
+    /// directory held open, not following a link: a link there is replaced, never followed),
+    /// if there is one: what a caller compares with its inputs.
+    pub fn replaced(&self) -> Option<FileId> {
+        let place = self.place.as_ref()?;
+        let entry = place.dir.entry(&place.name).ok()??;
+        entry.id.filter(|_| entry.kind == Kind::File)
+    }
+
     /// An error of the temporary file, naming it.
     fn named(&self, e: io::Error) -> io::Error {
-        if self.is_direct() {
+        let Some(place) = &self.place else {
             return e;
-        }
-        let temp = self.temp.display();
+        };
+        let temp = place.dir.join(&place.temp);
+        let temp = temp.display();
         io::Error::new(e.kind(), format!("{e} (temporary file {temp}, removed)"))
     }
 
-    /// Flushes, syncs and renames the temporary file over the target.
+    /// Flushes, syncs and renames the temporary file over the target, within the directory
+    /// held open (`renameat`): the entry replaced is never followed if it is a link.
     ///
     /// # Errors
-    /// Any I/O error; the temporary file is then removed and the target left as it was.
+    /// Any I/O error (also the temporary file replaced meanwhile); the temporary file is then
+    /// removed and the target left as it was.
     pub fn commit(mut self) -> io::Result<()> {
         let file = self.file.take().ok_or_else(closed)?;
         let file = file.into_inner().map_err(|e| self.named(e.into_error()))?;
-        if self.is_direct() {
+        let Some(place) = &self.place else {
             return Ok(()); // a device or a pipe, written directly
-        }
+        };
         file.sync_all().map_err(|e| self.named(e))?;
+        #[cfg(test)]
+        BEFORE_RENAME.with(|hook| {
+            if let Some(hook) = hook.borrow_mut().as_mut() {
+                hook();
+            }
+        });
         let mut live = live();
-        std::fs::rename(&self.temp, &self.target).map_err(|e| self.named(e))?;
-        forget(&mut live, &self.temp);
-        self.temp = PathBuf::new(); // nothing left to remove
+        // The temporary's name must still be this file (someone who can write the directory
+        // could have put another there).
+        let ours = dir::id_of(&file);
+        let there = place
+            .dir
+            .entry(&place.temp)
+            .ok()
+            .flatten()
+            .and_then(|e| e.id);
+        if ours.is_some() && there != ours {
+            let e = io::Error::other("the temporary file was replaced while it was written");
+            return Err(self.named(e));
+        }
+        let (dir, temp) = (Arc::clone(&place.dir), place.temp.clone());
+        dir.rename(&temp, &place.name).map_err(|e| self.named(e))?;
+        forget(&mut live, &dir, &temp);
+        if let Some(place) = &mut self.place {
+            place.temp = OsString::new(); // nothing left to remove
+        }
         Ok(())
     }
 }
 
-/// The file a write to `target` replaces: a symbolic link as last component resolved (the file
-/// it points to is replaced and the link stays; a dangling link: the file it names, relative
-/// to the link's directory).
-fn final_path(target: &Path) -> io::Result<PathBuf> {
-    if !std::fs::symlink_metadata(target).is_ok_and(|m| m.is_symlink()) {
-        return Ok(target.to_path_buf());
-    }
-    std::fs::canonicalize(target).or_else(|_| {
-        let named = std::fs::read_link(target)?;
-        Ok(target.parent().unwrap_or(Path::new("")).join(named))
-    })
-}
-
-/// Creates `path` new, never through a link or over a file already there (`O_CREAT | O_EXCL`,
-/// and `O_NOFOLLOW`), with mode 0666 less the umask (as `File::create`).
-fn create_new(path: &Path) -> io::Result<File> {
-    let mut options = OpenOptions::new();
-    options.write(true).create_new(true);
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::OpenOptionsExt;
-        options.mode(0o666).custom_flags(libc::O_NOFOLLOW);
-    }
-    options.open(path)
+/// The error of a directory that refuses the temporary file.
+fn refused(dir: &Path, e: &io::Error) -> io::Error {
+    let dir = if dir.as_os_str().is_empty() {
+        Path::new(".")
+    } else {
+        dir
+    };
+    let dir = dir.display();
+    io::Error::new(
+        e.kind(),
+        format!("the directory {dir} refuses a new file ({e}): the output is written to a temporary file there first"),
+    )
 }
 
 /// Gives the new file `file` the permissions (and, where permitted, the owner and group) of
 /// `replaced`, the file it is to replace. The owner first: changing it may clear set-id bits.
-fn carry_over(file: &File, replaced: &std::fs::Metadata) -> io::Result<()> {
+fn carry_over(file: &File, replaced: &Entry) -> io::Result<()> {
     #[cfg(unix)]
     {
-        use std::os::unix::fs::{MetadataExt, PermissionsExt};
+        use std::os::unix::fs::PermissionsExt;
+        let (mode, uid, gid) = replaced.mode;
         // Refused unless the process may (root, or a group it belongs to): then the new file
         // keeps the writer's owner, as a file written anew would.
-        let _ = std::os::unix::fs::fchown(file, Some(replaced.uid()), Some(replaced.gid()));
-        let mode = replaced.mode() & 0o7777;
+        let _ = std::os::unix::fs::fchown(file, Some(uid), Some(gid));
         file.set_permissions(std::fs::Permissions::from_mode(mode))
     }
     #[cfg(not(unix))]
     {
-        file.set_permissions(replaced.permissions())
+        file.set_permissions(replaced.permissions.clone())
     }
 }
 
@@ -316,8 +426,9 @@ static CLEANED: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
 /// namespace by a process that is gone, or older than [`STALE_AGE`] (another container or
 /// machine sharing the directory, whose process IDs mean nothing here). Errors are ignored:
 /// cleaning is a courtesy.
-pub fn remove_stale(dir: &Path) {
-    let key = std::path::absolute(dir).unwrap_or_else(|_| dir.to_path_buf());
+pub fn remove_stale(dir: &Dir) {
+    let path = dir.path();
+    let key = std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf());
     {
         let mut cleaned = CLEANED
             .lock()
@@ -327,7 +438,8 @@ pub fn remove_stale(dir: &Path) {
         }
         cleaned.push(key);
     }
-    let Ok(entries) = std::fs::read_dir(dir) else {
+    // Names only are read by path; every file is opened and removed through `dir`.
+    let Ok(entries) = std::fs::read_dir(path) else {
         return;
     };
     for entry in entries.flatten() {
@@ -335,47 +447,36 @@ pub fn remove_stale(dir: &Path) {
         let Some(owner) = name.to_str().and_then(temporary_owner) else {
             continue;
         };
-        if is_stale(&entry.path(), &owner) {
-            let _ = std::fs::remove_file(entry.path());
+        if let Some(held) = stale(dir, &name, &owner) {
+            let _ = dir.remove(&name);
+            drop(held); // its lock held until it is removed
         }
     }
 }
 
-/// Can the temporary file at `path`, made by `owner`, be proved stale (see [`remove_stale`])?
-fn is_stale(path: &Path, owner: &Owner) -> bool {
+/// The temporary file `name` of `dir`, made by `owner`, open and locked, if it can be proved
+/// stale (see [`remove_stale`]).
+fn stale(dir: &Dir, name: &OsStr, owner: &Owner) -> Option<File> {
     let here = host_namespace();
     let ours = here != "x" && owner.host.as_deref() == Some(here);
     if ours && owner.pid == std::process::id() {
-        return false; // this process's own
+        return None; // this process's own
     }
-    let Ok(meta) = std::fs::symlink_metadata(path) else {
-        return false;
-    };
-    if !meta.is_file() {
-        return false;
-    }
+    // Never through a link, never waiting on a FIFO; a regular file only.
+    let file = dir.open_write(name, true).ok()?;
+    let meta = file.metadata().ok().filter(std::fs::Metadata::is_file)?;
     let gone = ours && !running(owner.pid);
     let old = meta
         .modified()
         .is_ok_and(|t| t.elapsed().is_ok_and(|age| age > STALE_AGE));
     if !gone && !old {
-        return false;
+        return None;
     }
-    let mut options = OpenOptions::new();
-    options.write(true);
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::OpenOptionsExt;
-        options.custom_flags(libc::O_NOFOLLOW | libc::O_NONBLOCK);
-    }
-    let Ok(file) = options.open(path) else {
-        return false;
-    };
     match file.try_lock() {
-        Ok(()) => true, // no process holds it: kept locked (open) while it is removed
-        Err(std::fs::TryLockError::WouldBlock) => false,
+        Ok(()) => Some(file), // no process holds it
+        Err(std::fs::TryLockError::WouldBlock) => None,
         // Locks not to be had here: the process gone is proof enough, age alone is not.
-        Err(std::fs::TryLockError::Error(_)) => gone,
+        Err(std::fs::TryLockError::Error(_)) => gone.then_some(file),
     }
 }
 
@@ -398,10 +499,12 @@ impl Write for AtomicFile {
 impl Drop for AtomicFile {
     fn drop(&mut self) {
         drop(self.file.take());
-        if !self.temp.as_os_str().is_empty() {
-            let mut live = live();
-            let _ = std::fs::remove_file(&self.temp);
-            forget(&mut live, &self.temp);
+        if let Some(place) = &self.place {
+            if !place.temp.is_empty() {
+                let mut live = live();
+                let _ = place.dir.remove(&place.temp);
+                forget(&mut live, &place.dir, &place.temp);
+            }
         }
     }
 }
@@ -521,7 +624,11 @@ mod tests {
         let planted = dir.path().join("planted");
         symlink(dir.path().join("nowhere"), &planted).unwrap();
         assert_eq!(
-            create_new(&planted).unwrap_err().kind(),
+            Dir::open(dir.path())
+                .unwrap()
+                .create_new(OsStr::new("planted"))
+                .unwrap_err()
+                .kind(),
             io::ErrorKind::AlreadyExists
         );
         assert!(!dir.path().join("nowhere").exists());
@@ -553,7 +660,7 @@ mod tests {
         }
         let holder = File::open(&locked).unwrap();
         holder.try_lock().unwrap();
-        remove_stale(dir.path());
+        remove_stale(&Dir::open(dir.path()).unwrap());
         assert!(live.exists() && elsewhere.exists() && locked.exists());
         if here != "x" {
             assert!(
@@ -575,8 +682,128 @@ mod tests {
             .unwrap()
             .set_modified(long_ago)
             .unwrap();
-        remove_stale(other.path());
+        remove_stale(&Dir::open(other.path()).unwrap());
         assert!(!old.exists());
+    }
+
+    /// Runs `swap` between the writing of `file` and its rename (the test seam of
+    /// [`AtomicFile::commit`]), then commits.
+    fn commit_after(file: AtomicFile, swap: impl FnMut() + 'static) -> io::Result<()> {
+        BEFORE_RENAME.with(|hook| *hook.borrow_mut() = Some(Box::new(swap)));
+        let committed = file.commit();
+        BEFORE_RENAME.with(|hook| *hook.borrow_mut() = None);
+        committed
+    }
+
+    /// The names in `dir`, sorted.
+    fn names(dir: &Path) -> Vec<String> {
+        let mut names: Vec<String> = std::fs::read_dir(dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        names.sort();
+        names
+    }
+
+    #[test]
+    fn links_swapped_in_before_the_rename_are_never_followed() {
+        let tmp = tempfile::tempdir().unwrap();
+        let root = tmp.path();
+        let input = root.join("in");
+        std::fs::create_dir(&input).unwrap();
+        std::fs::write(input.join("a.json"), "precious").unwrap();
+        let out = root.join("out");
+        // A batch's output: its directory swapped for a link into the input tree, and the
+        // output itself for a link to an input, after every check.
+        let mut file = AtomicFile::create_beneath(&out, Path::new("sub/a.json")).unwrap();
+        file.write_all(b"result").unwrap();
+        let (o, i) = (out.clone(), input.clone());
+        commit_after(file, move || {
+            std::fs::rename(o.join("sub"), o.join("moved")).unwrap();
+            symlink(&i, o.join("sub")).unwrap();
+            symlink(i.join("a.json"), o.join("moved/a.json")).unwrap();
+        })
+        .unwrap();
+        assert_eq!(names(&input), ["a.json"]);
+        assert_eq!(
+            std::fs::read_to_string(input.join("a.json")).unwrap(),
+            "precious"
+        );
+        // The rename took place in the directory held open, over the link (not through it).
+        let placed = out.join("moved/a.json");
+        assert!(std::fs::symlink_metadata(&placed).unwrap().is_file());
+        assert_eq!(std::fs::read_to_string(&placed).unwrap(), "result");
+        // `-o FILE`: its directory swapped for a link, the same.
+        let dir = root.join("d");
+        std::fs::create_dir(&dir).unwrap();
+        let mut file = AtomicFile::create(&dir.join("a.json")).unwrap();
+        file.write_all(b"single").unwrap();
+        let (r, i) = (root.to_path_buf(), input.clone());
+        commit_after(file, move || {
+            std::fs::rename(r.join("d"), r.join("d2")).unwrap();
+            symlink(&i, r.join("d")).unwrap();
+        })
+        .unwrap();
+        assert_eq!(
+            std::fs::read_to_string(input.join("a.json")).unwrap(),
+            "precious"
+        );
+        assert_eq!(
+            std::fs::read_to_string(root.join("d2/a.json")).unwrap(),
+            "single"
+        );
+        assert_eq!(names(&root.join("d2")), ["a.json"], "no temporary left");
+    }
+
+    #[test]
+    fn a_temporary_replaced_while_written_is_not_renamed() {
+        let tmp = tempfile::tempdir().unwrap();
+        let dir = tmp.path().to_path_buf();
+        std::fs::write(dir.join("victim"), "precious").unwrap();
+        let mut file = AtomicFile::create(&dir.join("out.json")).unwrap();
+        file.write_all(b"result").unwrap();
+        let d = dir.clone();
+        let e = commit_after(file, move || {
+            let temp = names(&d).into_iter().find(|n| n.ends_with(".tmp")).unwrap();
+            std::fs::remove_file(d.join(&temp)).unwrap();
+            std::fs::hard_link(d.join("victim"), d.join(&temp)).unwrap();
+        })
+        .unwrap_err();
+        assert!(
+            e.to_string().starts_with(
+                "the temporary file was replaced while it was written (temporary file "
+            ),
+            "{e}"
+        );
+        assert!(!dir.join("out.json").exists());
+        assert_eq!(
+            std::fs::read_to_string(dir.join("victim")).unwrap(),
+            "precious"
+        );
+    }
+
+    #[test]
+    fn a_batch_output_that_is_a_link_is_refused() {
+        let tmp = tempfile::tempdir().unwrap();
+        let out = tmp.path().join("out");
+        std::fs::create_dir(&out).unwrap();
+        std::fs::write(tmp.path().join("victim"), "precious").unwrap();
+        symlink("../victim", out.join("a.json")).unwrap();
+        let e = AtomicFile::create_beneath(&out, Path::new("a.json")).unwrap_err();
+        let linked = e
+            .get_ref()
+            .and_then(|e| e.downcast_ref::<Linked>())
+            .unwrap();
+        assert!(linked.last);
+        assert_eq!(
+            linked.to_string(),
+            "is a symbolic link (to ../victim); links inside the output directory are not followed (remove the link)"
+        );
+        assert_eq!(names(&out), ["a.json"], "no temporary made");
+        assert_eq!(
+            std::fs::read_to_string(tmp.path().join("victim")).unwrap(),
+            "precious"
+        );
     }
 
     #[test]

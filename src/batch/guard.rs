@@ -34,6 +34,13 @@ pub fn file_id_of(meta: &std::fs::Metadata) -> FileId {
     FileId((meta.dev(), meta.ino()))
 }
 
+/// The identity of a file from its device and inode numbers (a directory descriptor's
+/// `fstatat`).
+#[cfg(unix)]
+pub(super) fn file_id_from(dev: u64, ino: u64) -> FileId {
+    FileId((dev, ino))
+}
+
 /// Do `a` and `b` name the same existing file or directory?
 pub fn same_file(a: &Path, b: &Path) -> bool {
     #[cfg(unix)]

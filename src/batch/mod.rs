@@ -13,6 +13,7 @@
 //! [`run_document`] or [`run_tree`], and [`Tally::summary`] for the summary line.
 
 mod atomic;
+mod dir;
 mod discover;
 mod guard;
 mod plan;

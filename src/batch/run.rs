@@ -13,6 +13,7 @@
 //!   written atomically ([`AtomicFile`]); messages reported in input order.
 
 use super::atomic::AtomicFile;
+use super::dir::{Linked, NotCreated};
 use super::discover::{Input, NotRegular, Unreadable};
 use super::guard::{file_id, FileId};
 use super::tally::Tally;
@@ -25,7 +26,7 @@ use crate::pipeline::{process_raw, unreadable, Error, Options, Outcome};
 use rayon::prelude::*;
 use std::collections::{BTreeMap, HashMap};
 use std::io::{self, BufRead, BufReader, Read};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
 
 /// Most polygons triangulated together before their outcomes are written.
@@ -166,8 +167,12 @@ pub struct TreeJob {
 ///
 /// An output file is written (atomically) when its input was read to the end and at least one of
 /// its polygons was triangulated; otherwise it is not written, and an existing file of that name
-/// is left as it was. Missing directories are created. Messages reach `observer` in input
-/// order; the returned tally counts everything (an output that cannot be written is an error).
+/// is left as it was. Missing directories are created. No symbolic link below `out_dir` (the
+/// directory the outputs were planned in) is followed: an output reached through one is refused
+/// for that input alone, and every step of placing an output is made through its directory
+/// held open (`openat`, `renameat`), so a link swapped in while the run writes is never followed
+/// either. Messages reach `observer` in input order; the returned tally counts everything (an
+/// output that cannot be written is an error).
 ///
 /// # Examples
 /// ```
@@ -177,7 +182,7 @@ pub struct TreeJob {
 /// let inputs: Vec<_> = discover(&["fixtures/valid".into()], None).into_iter().flatten().collect();
 /// let jobs: Vec<TreeJob> = inputs.iter().cloned().zip(plan(&inputs, out.path(), "json"))
 ///     .map(|(input, output)| TreeJob { input: Ok(input), output }).collect();
-/// let tally = run_tree(&jobs, &Settings::default(), OutputFormat::Json, &Silent);
+/// let tally = run_tree(&jobs, out.path(), &Settings::default(), OutputFormat::Json, &Silent);
 /// assert_eq!((tally.files, tally.errors), (inputs.len(), 0));
 /// assert!(out.path().join("l_shape.json").is_file());
 /// // u_shape.wkt, u_shape.geojson and u_shape.txt: each keeps its name.
@@ -186,6 +191,7 @@ pub struct TreeJob {
 /// ```
 pub fn run_tree(
     jobs: &[TreeJob],
+    out_dir: &Path,
     settings: &Settings,
     format: OutputFormat,
     observer: &dyn Observer,
@@ -203,7 +209,7 @@ pub fn run_tree(
         tally: Tally::default(),
     });
     jobs.par_iter().enumerate().for_each(|(k, job)| {
-        let report = run_file(job, &inputs, settings, format, observer);
+        let report = run_file(job, out_dir, &inputs, settings, format, observer);
         observer.input_finished();
         let mut order = order
             .lock()
@@ -241,6 +247,7 @@ struct FileReport {
 /// One input of a tree run, into its own output file.
 fn run_file(
     job: &TreeJob,
+    out_dir: &Path,
     inputs: &HashMap<FileId, &Input>,
     settings: &Settings,
     format: OutputFormat,
@@ -272,10 +279,33 @@ fn run_file(
         }
     };
     let cannot_write = |e: io::Error| format!("cannot write {}: {e}", target.display());
-    // The file the output would replace, with every link resolved (a link in the output tree,
-    // to a file or to a directory, can lead into the input tree).
-    let overwritten = |target: &std::path::Path| {
-        let other = inputs.get(&file_id(target)?)?;
+    // Every directory below `out_dir` is opened without following a link (a link in the output
+    // tree, to a file or to a directory, could lead into the input tree) and the output is
+    // placed through the last one held open (batch/dir.rs).
+    let created = match target.strip_prefix(out_dir) {
+        Ok(relative) => AtomicFile::create_beneath(out_dir, relative),
+        Err(_) => AtomicFile::create(target), // not planned below `out_dir`: as given
+    };
+    let mut file = match created {
+        Ok(file) => file,
+        Err(e) => {
+            let inner = e.get_ref();
+            let line = if let Some(linked) = inner.and_then(|e| e.downcast_ref::<Linked>()) {
+                let (name, target) = (input.name(), target.display());
+                format!("{name}: not processed: its output {target} {linked}")
+            } else if let Some(not_created) = inner.and_then(|e| e.downcast_ref::<NotCreated>()) {
+                not_created.to_string()
+            } else {
+                cannot_write(e)
+            };
+            fail(&mut report, line);
+            return report;
+        }
+    };
+    // The file the output would replace, looked at in the directory held open: a hard link to
+    // an input, or the output directory leading into the input tree, is refused.
+    let overwritten = |file: &AtomicFile| {
+        let other = inputs.get(&file.replaced()?)?;
         Some(format!(
             "{}: not processed: its output {} is the input {} (the same file, through a link); it would be overwritten",
             input.name(),
@@ -283,26 +313,10 @@ fn run_file(
             other.name()
         ))
     };
-    if let Some(line) = overwritten(target) {
+    if let Some(line) = overwritten(&file) {
         fail(&mut report, line);
         return report;
     }
-    if let Some(dir) = target.parent().filter(|d| !d.as_os_str().is_empty()) {
-        if let Err(e) = std::fs::create_dir_all(dir) {
-            fail(
-                &mut report,
-                format!("cannot create directory {}: {e}", dir.display()),
-            );
-            return report;
-        }
-    }
-    let mut file = match AtomicFile::create(target) {
-        Ok(file) => file,
-        Err(e) => {
-            fail(&mut report, cannot_write(e));
-            return report;
-        }
-    };
     let written = (|| {
         let mut sink = format.sink(&mut file)?;
         let complete = {
@@ -327,8 +341,8 @@ fn run_file(
     })();
     match written {
         Ok(true) if report.tally.solved > 0 => {
-            // Again just before the rename: a link may have been planted while it was written.
-            if let Some(line) = overwritten(target) {
+            // Again just before the rename: a hard link may have been planted meanwhile.
+            if let Some(line) = overwritten(&file) {
                 fail(&mut report, line);
             } else if let Err(e) = file.commit() {
                 fail(&mut report, cannot_write(e));
