@@ -337,14 +337,19 @@ struct Scratch {
     starts: Vec<usize>,
     /// For each vertex of the cover, its clique.
     clique_of: Vec<usize>,
-    /// Per clique: members still possible in this propagation, whether it is spent (in an
-    /// inconsistent set already counted), whether it was propagated, and the cliques whose
-    /// units removed some of its members.
-    alive: Vec<usize>,
+    /// The cliques of one member, and those of two or three (for failed literals).
+    units: Vec<usize>,
+    small: Vec<usize>,
+    /// Per clique: whether it is spent (in an inconsistent set already counted); and, valid
+    /// only when `mark` is the current pass (set up lazily, so that a propagation costs what it
+    /// reaches, not the number of cliques): members still possible, whether it was
+    /// propagated, and the cliques whose units removed some of its members.
     spent: Vec<bool>,
+    mark: Vec<u32>,
+    alive: Vec<usize>,
     done: Vec<bool>,
     because: Vec<Vec<usize>>,
-    /// Per vertex: the pass that removed it (0 = none).
+    /// Per vertex: the pass that removed it (not the current pass = none).
     gone: Vec<u32>,
     pass: u32,
     queue: Vec<usize>,
@@ -373,29 +378,27 @@ impl Scratch {
         self.pass = self.pass.wrapping_add(1);
         if self.pass == 0 {
             self.gone.fill(0);
+            self.mark.fill(0);
             self.pass = 1;
         }
-        self.alive.clear();
-        self.alive
-            .extend((0..cliques).map(|c| self.starts[c + 1] - self.starts[c]));
-        self.done.clear();
+        self.mark.resize(cliques, 0);
+        self.alive.resize(cliques, 0);
         self.done.resize(cliques, false);
         self.because.resize_with(cliques, Vec::new);
-        for list in &mut self.because[..cliques] {
-            list.clear();
-        }
         self.queue.clear();
         if let Some((c, v)) = forced {
+            self.touch(c);
             for k in self.starts[c]..self.starts[c + 1] {
                 if self.members[k] != v {
                     self.gone[self.members[k]] = self.pass;
                 }
             }
             self.alive[c] = 1;
+            self.queue.push(c);
         }
-        let units = (0..cliques).filter(|&c| self.alive[c] == 1 && !self.spent[c]);
-        self.queue.extend(units);
+        self.queue.extend_from_slice(&self.units);
         while let Some(c) = self.queue.pop() {
+            self.touch(c);
             if self.done[c] || self.spent[c] {
                 continue;
             }
@@ -414,6 +417,7 @@ impl Scratch {
                 if d == c || self.spent[d] {
                     continue;
                 }
+                self.touch(d);
                 self.gone[u] = self.pass;
                 self.alive[d] -= 1;
                 self.because[d].push(c);
@@ -426,6 +430,16 @@ impl Scratch {
             }
         }
         None
+    }
+
+    /// Sets up clique `c`'s state for the current pass, if not yet.
+    fn touch(&mut self, c: usize) {
+        if self.mark[c] != self.pass {
+            self.mark[c] = self.pass;
+            self.alive[c] = self.starts[c + 1] - self.starts[c];
+            self.done[c] = false;
+            self.because[c].clear();
+        }
     }
 
     /// Adds to `set` the emptied clique `d` and, transitively, the cliques that emptied it in
@@ -446,6 +460,9 @@ impl Scratch {
             if !self.in_set[c] {
                 self.in_set[c] = true;
                 self.set.push(c);
+            }
+            if self.mark[c] != self.pass {
+                continue; // not reached by the last propagation: nothing emptied it
             }
             for i in 0..self.because[c].len() {
                 let e = self.because[c][i];
@@ -498,9 +515,9 @@ impl Search {
             if !thorough && bound > enough + FAILED_LITERAL_MARGIN {
                 break;
             }
-            for c in 0..cliques {
-                let size = sc.starts[c + 1] - sc.starts[c];
-                if sc.spent[c] || !(2..=3).contains(&size) {
+            for i in 0..sc.small.len() {
+                let c = sc.small[i];
+                if sc.spent[c] {
                     continue;
                 }
                 sc.set.clear();
@@ -551,7 +568,17 @@ impl Search {
             }
         }
         sc.starts.push(sc.members.len());
-        sc.starts.len() - 1
+        let cliques = sc.starts.len() - 1;
+        sc.units.clear();
+        sc.small.clear();
+        for c in 0..cliques {
+            match sc.starts[c + 1] - sc.starts[c] {
+                1 => sc.units.push(c),
+                2 | 3 => sc.small.push(c),
+                _ => {}
+            }
+        }
+        cliques
     }
 
     /// Shrinks `cand` by the reductions that keep some maximum independent set (Akiba & Iwata,
