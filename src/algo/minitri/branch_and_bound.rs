@@ -13,17 +13,22 @@
 //! - the graph left at a node splits again into connected components: all but the largest are
 //!   solved exactly on their own (a maximum set of each) and the search goes on in the largest,
 //!   keeping its bound;
+//! - a start close to the maximum: a greedy set improved by iterated local search
+//!   ([`super::local_search`]), so the bound prunes from the first node (a component of more
+//!   than [`SEARCH_LIMIT`] vertices keeps that set, with a matching bound);
 //! - branching on a vertex of highest degree (take it and drop its neighbours, or drop it), with
 //!   the bound "chosen + a greedy clique cover of what is left" (an independent set has at most
-//!   one vertex per clique), over bit sets (a component is searched only up to
-//!   [`SEARCH_LIMIT`] vertices; a larger one keeps a greedy set and its clique-cover bound).
+//!   one vertex per clique), lowered by MaxSAT-style unit propagation and failed literals over
+//!   the cover's cliques ([`Search::bound`]), over bit sets.
 //!
 //! When the search of every component finishes, the set is a maximum one (`optimal`). Past the
 //! deadline the search stops where it is and keeps the best set found, with an upper bound on
 //! the maximum: the finished components' sizes plus, for the others, their bound at the root.
 //!
 //! Complexity: exponential in the worst case (as it must be unless P = NP), O(V + E) for the
-//! components and greedy sets; each search node costs O(V^2 / 64).
+//! components and greedy sets, O(V + 4V x (degree^2)) for the local search; each search node
+//! costs O(V^2 / 64) for the cover and reductions plus O(E) per propagation (one per clique set
+//! aside, and up to three per small clique when the failed-literal test runs).
 
 use super::local_search;
 use crate::algo::Stopped;
