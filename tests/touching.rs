@@ -28,6 +28,7 @@ pub(crate) fn raw(rings: &Rings) -> RawPolygon {
             .iter()
             .map(|r| r.iter().map(|&(x, y)| [d(x), d(y)]).collect())
             .collect(),
+        ..Default::default()
     }
 }
 

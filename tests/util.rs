@@ -121,7 +121,10 @@ pub fn polygon_from_rings(rings: &[Vec<(i64, i64)>]) -> Option<Polygon> {
         .iter()
         .map(|r| r.iter().map(|&(x, y)| Some([d(x)?, d(y)?])).collect())
         .collect();
-    Polygon::from_raw(&RawPolygon { rings: rings? })
-        .ok()
-        .map(|(p, _)| p)
+    Polygon::from_raw(&RawPolygon {
+        rings: rings?,
+        ..Default::default()
+    })
+    .ok()
+    .map(|(p, _)| p)
 }
