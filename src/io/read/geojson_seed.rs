@@ -235,10 +235,19 @@ impl Vertices {
     }
 }
 
+/// Why a [`FeatureSink`] refused a feature; reading stops (the deserializer's error carries it
+/// as its text, and the sink keeps the cause).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
+pub(super) enum SinkError {
+    /// Writing the feature's events failed (the sink keeps the I/O error).
+    #[error("the output failed")]
+    Output,
+}
+
 /// Where the elements of a FeatureCollection's `features` go as they are read.
 pub(super) trait FeatureSink {
     /// Element `index` of `features`. An `Err` stops reading (its text is the `serde` error).
-    fn feature(&mut self, index: usize, feature: Node) -> Result<(), String>;
+    fn feature(&mut self, index: usize, feature: Node) -> Result<(), SinkError>;
 
     /// What the bytes read from now on belong to: element `index` of `features` (`Some`,
     /// before each element and before the array's end), or the rest of the collection (`None`,
@@ -1144,6 +1153,48 @@ impl<'de> Visitor<'de> for ItemSeed {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The reliance on serde_json's private number token, checked: with `arbitrary_precision`,
+    /// a number that is not a 64-bit integer reaches a visitor as a map whose one key is
+    /// [`NUMBER_TOKEN`] and whose value is the number's text. Cargo.toml pins serde_json to the
+    /// version this holds for; a new version that changes it fails here, not in the readers.
+    #[test]
+    fn serde_json_still_hands_numbers_over_as_its_private_token() {
+        struct FirstEntry;
+        impl<'de> Visitor<'de> for FirstEntry {
+            type Value = Option<(String, String)>;
+            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str("a number")
+            }
+            fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Self::Value, A::Error> {
+                let key: Option<String> = map.next_key()?;
+                let value: Option<String> = match key {
+                    Some(_) => Some(map.next_value()?),
+                    None => None,
+                };
+                Ok(key.zip(value))
+            }
+            fn visit_f64<E: de::Error>(self, _: f64) -> Result<Self::Value, E> {
+                Ok(None)
+            }
+        }
+        let text = "0.1000000000000000000001";
+        let mut json = serde_json::Deserializer::from_str(text);
+        let entry = de::Deserializer::deserialize_any(&mut json, FirstEntry);
+        assert_eq!(
+            entry.ok().flatten(),
+            Some((NUMBER_TOKEN.to_string(), text.to_string())),
+            "serde_json no longer hands a number over as {NUMBER_TOKEN:?} with its text: \
+             io/read/geojson_seed.rs reads every GeoJSON coordinate through that token. Keep \
+             the serde_json version pinned in Cargo.toml, or update NUMBER_TOKEN and this test"
+        );
+        // And the readers built on it keep the decimal exactly.
+        let polygons = super::super::geojson::read(
+            r#"{"type": "Polygon", "coordinates": [[[0, 0], [0.1000000000000000000001, 0], [0, 1]]]}"#,
+        );
+        let x = polygons.ok().map(|p| p[0].rings[0][1][0].to_string());
+        assert_eq!(x.as_deref(), Some(text));
+    }
 
     #[test]
     fn json_numbers_are_recognised_by_the_grammar() {
