@@ -122,7 +122,7 @@ fn gzip_files_directories_and_standard_input_read_as_decompressed() {
     let doc = json(&out);
     assert_eq!(
         doc["features"][0]["properties"]["name"],
-        "U-shape of DESIGN.md"
+        "U-shape of the README"
     );
     assert_eq!(
         doc["features"][0]["properties"]["minitri"]["triangle_count"],
@@ -765,4 +765,29 @@ fn positions_mixing_two_three_and_four_numbers_are_an_error_naming_where() {
         err.contains("ring 1, position 0: this position has 3 numbers but the feature's first position has 2"),
         "{err}"
     );
+}
+
+#[test]
+fn the_per_feature_example_of_pipelines_md_is_what_the_binary_writes() {
+    let doc = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/pipelines.md"),
+    )
+    .unwrap();
+    let example = |start: &str| {
+        doc.lines()
+            .map(str::trim)
+            .find(|l| l.starts_with(start))
+            .unwrap_or_else(|| panic!("docs/pipelines.md has no line {start}"))
+            .to_string()
+    };
+    let input = example(r#"{"type": "Feature", "id": "b-1", "properties""#);
+    let expected = example(r#"{"type": "Feature", "id": "b-1", "geometry""#);
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("b.geojsonl"), format!("{input}\n")).unwrap();
+    let mut cmd = minitri();
+    cmd.current_dir(dir.path())
+        .args(["--to", "geojsonl", "b.geojsonl"]);
+    let (code, out, err) = outcome(&mut cmd);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(out.trim_end(), expected);
 }
