@@ -747,24 +747,14 @@ fn z_and_m_values_are_carried_to_every_output_that_holds_them_and_read_back() {
 
 #[test]
 fn positions_mixing_two_three_and_four_numbers_are_an_error_naming_where() {
-    let (code, _, err) = run(
-        &["--to", "wkt", "-"],
-        Some("POLYGON ((0 0 1, 4 0 2, 4 4, 0 4 3))"),
-    );
-    assert_eq!(code, 1);
-    assert!(
-        err.contains(
-            "line 1, column 25: this point has 2 coordinates but the polygon's first point has 3"
-        ),
-        "{err}"
-    );
+    let wkt = "POLYGON ((0 0 1, 4 0 2, 4 4, 0 4 3))";
+    let message =
+        "line 1, column 25: this point has 2 coordinates but the polygon's first point has 3";
+    crate::util::fails_with(&["--to", "wkt", "-"], wkt, message);
     let geojson = r#"{"type": "Polygon", "coordinates": [[[0, 0], [4, 0], [4, 4], [0, 4]], [[1, 1, 0], [2, 1, 0], [2, 2, 0]]]}"#;
-    let (code, _, err) = run(&["--to", "wkt", "-"], Some(geojson));
-    assert_eq!(code, 1);
-    assert!(
-        err.contains("ring 1, position 0: this position has 3 numbers but the feature's first position has 2"),
-        "{err}"
-    );
+    let message =
+        "ring 1, position 0: this position has 3 numbers but the feature's first position has 2";
+    crate::util::fails_with(&["--to", "wkt", "-"], geojson, message);
 }
 
 #[test]

@@ -33,6 +33,13 @@ pub fn minitri() -> Command {
     cmd
 }
 
+/// Runs the binary on `stdin` and requires exit status 1 and `message` on standard error.
+pub fn fails_with(args: &[&str], stdin: &str, message: &str) {
+    let (code, _, err) = run(args, Some(stdin));
+    assert_eq!(code, 1, "{args:?}: {err}");
+    assert!(err.contains(message), "{args:?}: {err}");
+}
+
 /// Runs the binary, returning (exit code, stdout, stderr).
 pub fn run(args: &[&str], stdin: Option<&str>) -> (i32, String, String) {
     let mut cmd = minitri();

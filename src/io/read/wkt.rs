@@ -843,55 +843,36 @@ mod tests {
         let plain = read("POLYGON ((0 0, 1 0, 0 1))").unwrap();
         assert_eq!(plain[0].ordinates, None);
         let n = |v: &str| (v != "NaN").then(|| d(v));
-        for (text, dims, values) in [
-            (
-                "POLYGON Z ((0 0 5, 1 0 6, 0 1 7))",
-                Dims::Z,
-                &["5", "6", "7"][..],
-            ),
-            // The closing point's value goes with it.
-            (
-                "POLYGON M ((0 0 5, 1 0 6, 0 1 7, 0 0 8))",
-                Dims::M,
-                &["5", "6", "7"],
-            ),
+        // The polygon, its dimensions, and its vertices' values (the closing point's go with it;
+        // without a tag, 3 numbers are x y z, as GEOS and PostGIS read them).
+        let cases: [(&str, Dims, &str); 8] = [
+            ("POLYGON Z ((0 0 5, 1 0 6, 0 1 7))", Dims::Z, "5 6 7"),
+            ("POLYGON M ((0 0 5, 1 0 6, 0 1 7, 0 0 8))", Dims::M, "5 6 7"),
             (
                 "POLYGON ZM ((0 0 5 1, 1 0 6 2, 0 1 7 NaN))",
                 Dims::Zm,
-                &["5", "1", "6", "2", "7", "NaN"],
+                "5 1 6 2 7 NaN",
             ),
-            (
-                "POLYGONZ ((0 0 5, 1 0 6, 0 1 7))",
-                Dims::Z,
-                &["5", "6", "7"],
-            ),
-            (
-                "POLYGONM ((0 0 5, 1 0 6, 0 1 7))",
-                Dims::M,
-                &["5", "6", "7"],
-            ),
+            ("POLYGONZ ((0 0 5, 1 0 6, 0 1 7))", Dims::Z, "5 6 7"),
+            ("POLYGONM ((0 0 5, 1 0 6, 0 1 7))", Dims::M, "5 6 7"),
             (
                 "polygonzm((0 0 5 1,1 0 6 2,0 1 7 3))",
                 Dims::Zm,
-                &["5", "1", "6", "2", "7", "3"],
+                "5 1 6 2 7 3",
             ),
-            // Without a tag, 3 numbers are x y z (as GEOS and PostGIS read them).
-            (
-                "POLYGON ((0 0 1, 1 0 2.50, 0 1 -3))",
-                Dims::Z,
-                &["1", "2.5", "-3"],
-            ),
+            ("POLYGON ((0 0 1, 1 0 2.50, 0 1 -3))", Dims::Z, "1 2.5 -3"),
             (
                 "GEOMETRYCOLLECTION M (POLYGON Z ((0 0 1, 1 0 2, 0 1 3)))",
                 Dims::Z,
-                &["1", "2", "3"],
+                "1 2 3",
             ),
-        ] {
+        ];
+        for (text, dims, values) in cases {
             let read = read(text).unwrap();
             assert_eq!(read[0].rings, plain[0].rings, "{text}");
             let expected = Ordinates {
                 dims,
-                values: values.iter().map(|v| n(v)).collect(),
+                values: values.split(' ').map(n).collect(),
             };
             assert_eq!(read[0].ordinates.as_ref(), Some(&expected), "{text}");
         }
