@@ -27,9 +27,12 @@ fn star(n: usize, seed: u64) -> Polygon {
             ring.push(p);
         }
     }
-    Polygon::from_raw(&RawPolygon { rings: vec![ring] })
-        .expect("a star-shaped polygon is simple")
-        .0
+    Polygon::from_raw(&RawPolygon {
+        rings: vec![ring],
+        ..Default::default()
+    })
+    .expect("a star-shaped polygon is simple")
+    .0
 }
 
 /// A convex polygon: points on a parabola.
@@ -37,9 +40,12 @@ fn convex(n: usize) -> Polygon {
     let d = |v: usize| Decimal::parse(&v.to_string()).expect("integer");
     let mut ring: Vec<[Decimal; 2]> = (0..n - 1).map(|i| [d(i), d(i * i)]).collect();
     ring.push([d(0), d((n - 2) * (n - 2))]);
-    Polygon::from_raw(&RawPolygon { rings: vec![ring] })
-        .expect("convex")
-        .0
+    Polygon::from_raw(&RawPolygon {
+        rings: vec![ring],
+        ..Default::default()
+    })
+    .expect("convex")
+    .0
 }
 
 fn dp(c: &mut Criterion) {

@@ -99,7 +99,10 @@ fn raw<T: ExactCoord>(polygon: &geo_types::Polygon<T>, index: usize) -> Result<R
     for (h, hole) in polygon.interiors().iter().enumerate() {
         rings.push(ring(hole, index, Ring::Hole(h + 1))?);
     }
-    Ok(RawPolygon { rings })
+    Ok(RawPolygon {
+        rings,
+        ordinates: None,
+    })
 }
 
 /// Polygon `index` of a multipolygon as exact decimals, not yet validated (the readers of

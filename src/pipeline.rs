@@ -214,6 +214,9 @@ pub struct Outcome {
     /// The SRID its input gave it (EWKT `SRID=4326;`, an EWKB header's), which `--to wkt`
     /// writes back as EWKT and `--to geojson` as a `crs`.
     pub srid: Option<u32>,
+    /// The Z and M values of the input polygon's vertices, by input vertex number, when its
+    /// positions had them: the writers give each output vertex its input vertex's values.
+    pub ordinates: Option<std::sync::Arc<crate::io::read::Ordinates>>,
 }
 
 impl Outcome {
@@ -595,6 +598,7 @@ pub fn unreadable(source: &str, error: Error) -> Outcome {
         repaired: None,
         feature: None,
         srid: None,
+        ordinates: None,
     }
 }
 
@@ -627,7 +631,12 @@ pub fn process(source: &str, text: &str, format: Format, options: &Options) -> V
 /// 64 bytes a vertex (more with the reader's spare capacity), the validated [`Polygon`] holds
 /// the same coordinates on its integer grid, and a huge polygon should not carry both through
 /// the triangulation.
-pub fn process_raw(source: &str, index: usize, raw: RawPolygon, options: &Options) -> Vec<Outcome> {
+pub fn process_raw(
+    source: &str,
+    index: usize,
+    mut raw: RawPolygon,
+    options: &Options,
+) -> Vec<Outcome> {
     let outcome = Outcome {
         source: source.to_string(),
         index: Some(index),
@@ -639,6 +648,7 @@ pub fn process_raw(source: &str, index: usize, raw: RawPolygon, options: &Option
         repaired: None,
         feature: None,
         srid: None,
+        ordinates: raw.ordinates.take().map(std::sync::Arc::new),
     };
     if let Err(e) = reserve_for(raw.rings.iter().map(Vec::len).sum()) {
         return vec![Outcome {

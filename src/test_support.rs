@@ -52,6 +52,7 @@ pub(crate) fn raw(rings: &[&[(i64, i64)]]) -> RawPolygon {
             .iter()
             .map(|r| r.iter().map(|&(x, y)| [int(x), int(y)]).collect())
             .collect(),
+        ordinates: None,
     }
 }
 
@@ -59,6 +60,7 @@ pub(crate) fn raw(rings: &[&[(i64, i64)]]) -> RawPolygon {
 pub(crate) fn raw_decimal(rings: &[&[(&str, &str)]]) -> RawPolygon {
     RawPolygon {
         rings: rings.iter().map(|r| ring(r)).collect(),
+        ordinates: None,
     }
 }
 

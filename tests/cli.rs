@@ -303,7 +303,7 @@ fn the_dp_refuses_large_polygons_with_an_estimate() {
         None,
     );
     assert_eq!(code, 1);
-    assert!(err.contains("needs about 0 MB and 0.0 s for 12 vertices, above its limit of 10 vertices; use --algorithm minitri"), "{err}");
+    assert!(err.contains("needs about 2 kB and 1 µs for 12 vertices, above its limit of 10 vertices; use --algorithm minitri"), "{err}");
 }
 
 #[test]

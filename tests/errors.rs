@@ -316,3 +316,183 @@ fn output_into_a_pipe_is_written_as_it_goes_and_the_pipe_stays() {
     let doc = json(&reader.join().unwrap());
     assert_eq!(doc["polygons"][0]["triangle_count"], 5);
 }
+
+/// Where a message starts in the source: the error constructors and the places that build a
+/// message for one. The first string literal after one of these (before the statement's `;`,
+/// within a few lines) is a message template.
+const MESSAGE_SITES: &[&str] = &[
+    "ParseError::new(",
+    "ParseError::at(",
+    "self.error(",
+    "Failure::new(",
+    "bail!(",
+    "anyhow!(",
+    ".context(",
+    "with_context(",
+    "Error::Read(",
+    "Error::Output(",
+    "Err(format!(",
+    "let message = format!(",
+    "message = format!(",
+    "eprintln!(",
+    "InvalidPolygon::",
+    "#[error(",
+    "push(format!(",
+    "write!(f,",
+    "cmd.error(",
+];
+
+/// The string literal starting at `text` (after its opening quote), unescaped, a line
+/// continuation (`\` at the end of a line) joining the lines.
+fn literal(text: &str) -> String {
+    let mut out = String::new();
+    let mut chars = text.chars().peekable();
+    while let Some(c) = chars.next() {
+        match c {
+            '"' => break,
+            '\\' => match chars.next() {
+                Some('\n') => {
+                    while chars.peek().is_some_and(|c| c.is_whitespace()) {
+                        chars.next();
+                    }
+                }
+                Some('n' | 't') => out.push(' '),
+                Some(other) => out.push(other),
+                None => break,
+            },
+            c => out.push(c),
+        }
+    }
+    out
+}
+
+/// The longest literal part of a `format!` template (between its `{...}` placeholders), trimmed
+/// of punctuation at its ends, with runs of white space as one space.
+fn longest_part(template: &str) -> String {
+    let template = template.replace("{{", "\u{1}").replace("}}", "\u{2}");
+    let mut parts = Vec::new();
+    let mut rest = template.as_str();
+    while let Some(open) = rest.find('{') {
+        parts.push(&rest[..open]);
+        rest = rest[open..]
+            .find('}')
+            .map_or("", |close| &rest[open + close + 1..]);
+    }
+    parts.push(rest);
+    parts
+        .iter()
+        .map(|p| {
+            let p = p.replace('\u{1}', "{").replace('\u{2}', "}");
+            let p = p.trim_matches(|c: char| " :;,.()`'".contains(c));
+            p.split_whitespace().collect::<Vec<_>>().join(" ")
+        })
+        .max_by_key(String::len)
+        .unwrap_or_default()
+}
+
+/// The message templates of one source file (its `#[cfg(test)] mod tests` and comments left
+/// out), each with its longest literal part.
+fn message_templates(source: &str) -> Vec<(String, String)> {
+    let code = source
+        .split("\n#[cfg(test)]\nmod tests")
+        .next()
+        .unwrap_or_default();
+    let code: String = code
+        .lines()
+        .map(|l| {
+            if l.trim_start().starts_with("//") {
+                ""
+            } else {
+                l
+            }
+        })
+        .collect::<Vec<_>>()
+        .join("\n");
+    let mut found = Vec::new();
+    for site in MESSAGE_SITES {
+        for (at, _) in code.match_indices(site) {
+            let after = &code[at + site.len()..];
+            let Some(quote) = after.find('"') else {
+                continue;
+            };
+            if quote > 120 || after[..quote].contains(';') {
+                continue;
+            }
+            let template = literal(&after[quote + 1..]);
+            let part = longest_part(&template);
+            // Shorter parts are prefixes and joints (`polygon {i}: {message}`), not messages.
+            if part.len() >= 12 && !found.iter().any(|(t, _)| *t == template) {
+                found.push((template, part));
+            }
+        }
+    }
+    found
+}
+
+/// Every message the code can produce is in `docs/errors.md`: for every message template found
+/// at an error site of `src/` (outside tests and the writers, whose texts are output, not
+/// errors), its longest literal part appears in that file (white space runs as one space).
+/// What this cannot see: a message assembled from parts shorter than 12 characters, or passed
+/// through a variable from a site not listed in [`MESSAGE_SITES`]; `message_sites_are_found`
+/// checks that the scan still finds the messages it is known to.
+#[test]
+fn every_message_in_the_source_is_in_errors_md() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let doc = std::fs::read_to_string(root.join("docs/errors.md")).expect("docs/errors.md");
+    let doc = doc.split_whitespace().collect::<Vec<_>>().join(" ");
+    let mut missing = Vec::new();
+    let mut count = 0;
+    for entry in walkdir::WalkDir::new(root.join("src")).sort_by_file_name() {
+        let entry = entry.expect("src/ is readable");
+        let path = entry.path();
+        let relative = path.strip_prefix(root).unwrap_or(path);
+        let name = relative.to_string_lossy().replace('\\', "/");
+        let skipped = name.ends_with("tests.rs")
+            || name.ends_with("test_support.rs")
+            || name.starts_with("src/io/write/");
+        if path.extension().is_none_or(|e| e != "rs") || skipped {
+            continue;
+        }
+        let source = std::fs::read_to_string(path).expect("a source file");
+        for (template, part) in message_templates(&source) {
+            count += 1;
+            if !doc.contains(&part) {
+                missing.push(format!("{name}: {template}"));
+            }
+        }
+    }
+    assert!(count > 100, "the scan found only {count} messages");
+    assert!(
+        missing.is_empty(),
+        "messages missing from docs/errors.md (add each, as its template):\n{}",
+        missing.join("\n")
+    );
+}
+
+/// The scan of [`every_message_in_the_source_is_in_errors_md`] finds messages of each kind of
+/// site (a constructor, a `#[error]` text, a continued line, a `format!` with placeholders).
+#[test]
+fn message_sites_are_found() {
+    let source = r#"
+        return Err(ParseError::new("empty input: no polygon found"));
+        #[error("the asano dynamic program needs about {memory} and {time}")]
+        let message = format!(
+            "this point has {count} coordinates but \
+             the polygon's first point has {first}"
+        );
+        let short = format!("polygon {i}: {message}");
+        // ParseError::new("a comment, not a message")
+    "#;
+    let parts: Vec<String> = message_templates(source)
+        .into_iter()
+        .map(|(_, part)| part)
+        .collect();
+    assert_eq!(
+        parts,
+        [
+            "empty input: no polygon found",
+            "coordinates but the polygon's first point has",
+            "the asano dynamic program needs about",
+        ]
+    );
+}

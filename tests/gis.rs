@@ -122,7 +122,7 @@ fn gzip_files_directories_and_standard_input_read_as_decompressed() {
     let doc = json(&out);
     assert_eq!(
         doc["features"][0]["properties"]["name"],
-        "U-shape of DESIGN.md"
+        "U-shape of the README"
     );
     assert_eq!(
         doc["features"][0]["properties"]["minitri"]["triangle_count"],
@@ -625,4 +625,159 @@ fn an_ewkt_or_ewkb_srid_is_written_back_as_ewkt_and_as_a_geojson_crs() {
     // Without an SRID: plain WKT, no crs.
     let (_, out, _) = run(&["--to", "wkt", "fixtures/valid/u_shape.wkt"], None);
     assert!(out.starts_with("GEOMETRYCOLLECTION ("));
+}
+
+/// The U-shape with a Z value for each vertex (vertex k at height `k.5`, the closing one
+/// repeating vertex 0's), as WKT.
+const U_SHAPE_Z: &str = "POLYGON Z ((3 2 0.5, 4 2 1.5, 5 2 2.5, 6 2 3.5, 6 3 4.5, 6 4 5.5, 5 4 6.5, 5 3 7.5, 4 3 8.5, 4 4 9.5, 3 4 10.5, 3 3 11.5, 3 2 0.5))";
+
+/// The Z (and M) of each `x y z ...` corner of `--to wkt` text, keyed by `x y`.
+fn heights(wkt_text: &str) -> Vec<(String, String)> {
+    let start = wkt_text.find("((").map_or(0, |i| i + 2);
+    let mut corners: Vec<(String, String)> = wkt_text[start..]
+        .split(['(', ')', ','])
+        .map(str::trim)
+        .filter(|p| p.starts_with(|c: char| c.is_ascii_digit() || c == '-'))
+        .map(|p| {
+            let numbers: Vec<&str> = p.split(' ').collect();
+            (numbers[..2].join(" "), numbers[2..].join(" "))
+        })
+        .collect();
+    corners.sort();
+    corners.dedup();
+    corners
+}
+
+#[test]
+fn z_and_m_values_are_carried_to_every_output_that_holds_them_and_read_back() {
+    // The input's height of each point.
+    let expected: Vec<(String, String)> = heights(U_SHAPE_Z);
+    assert_eq!(expected.len(), 12);
+    let plain = run(&["--to", "wkt", "fixtures/valid/u_shape.wkt"], None).1;
+    let out = run(&["--to", "wkt", "-"], Some(U_SHAPE_Z));
+    assert_eq!(out.0, 0, "{}", out.2);
+    let with_z = out.1;
+    assert!(
+        with_z.starts_with("GEOMETRYCOLLECTION Z (POLYGON Z (("),
+        "{with_z}"
+    );
+    // The same triangles as without Z (triangulated in x, y), each corner its input height.
+    assert_eq!(
+        triangles_of(&plain).len(),
+        with_z.matches("POLYGON Z").count()
+    );
+    assert!(
+        heights(&with_z)
+            .iter()
+            .all(|corner| expected.contains(corner)),
+        "{with_z}"
+    );
+    // JSON: each input vertex's Z by its number, beside the triangles' vertex numbers.
+    let doc = json(&run(&["-"], Some(U_SHAPE_Z)).1);
+    let z: Vec<String> = doc["polygons"][0]["vertices_z"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(ToString::to_string)
+        .collect();
+    let want: Vec<String> = (0..12).map(|k| format!("{k}.5")).collect();
+    assert_eq!(z, want);
+    assert!(doc["polygons"][0].get("vertices_m").is_none());
+    // Every geometry output read back gives the same triangles with the same heights.
+    for to in ["wkt", "csv", "geojson", "geojsonl", "geojson-triangles"] {
+        let (code, text, err) = run(&["--to", to, "-"], Some(U_SHAPE_Z));
+        assert_eq!(code, 0, "{to}: {err}");
+        let (code, back, err) = run(&["--to", "wkt", "-"], Some(&text));
+        assert_eq!(code, 0, "{to}: {err}");
+        assert!(back.contains("POLYGON Z (("), "{to}: {back}");
+        assert!(
+            heights(&back).iter().all(|c| expected.contains(c)),
+            "{to}: {back}"
+        );
+    }
+    // GeoJSON positions [x, y, z] in and out.
+    let geojson = r#"{"type": "Feature", "properties": {}, "geometry": {"type": "Polygon", "coordinates": [[[0, 0, 10.25], [4, 0, 11], [4, 4, 12], [2, 2, 13], [0, 4, 14], [0, 0, 10.25]]]}}"#;
+    let (code, out, err) = run(&["--to", "geojson", "-"], Some(geojson));
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        out.contains("[0, 0, 10.25]") && out.contains("[2, 2, 13]"),
+        "{out}"
+    );
+    // M and ZM: WKT keeps them (NaN, "no value", too), JSON lists them as vertices_m.
+    let (_, out, _) = run(
+        &["--to", "wkt", "-"],
+        Some("POLYGON M ((0 0 1, 4 0 2, 4 4 NaN, 0 4 4))"),
+    );
+    assert!(
+        out.starts_with("GEOMETRYCOLLECTION M (POLYGON M (("),
+        "{out}"
+    );
+    assert!(out.contains("4 4 NaN"), "{out}");
+    let doc = json(
+        &run(
+            &["-"],
+            Some("POLYGON ZM ((0 0 1 5, 4 0 2 6, 4 4 3 7, 0 4 4 8))"),
+        )
+        .1,
+    );
+    assert_eq!(doc["polygons"][0]["vertices_z"].to_string(), "[1,2,3,4]");
+    assert_eq!(doc["polygons"][0]["vertices_m"].to_string(), "[5,6,7,8]");
+    // Hex WKB of a POLYGON Z (ISO code 1003), doubles read as their shortest decimals.
+    let mut wkb = vec![1u8, 0xEB, 0x03, 0, 0, 1, 0, 0, 0, 5, 0, 0, 0];
+    for [x, y, z] in [
+        [0.0, 0.0, 0.1],
+        [4.0, 0.0, 0.2],
+        [4.0, 4.0, 0.3],
+        [0.0, 4.0, 0.4],
+        [0.0, 0.0, 0.1],
+    ] {
+        for c in [x, y, z] {
+            wkb.extend(f64::to_le_bytes(c));
+        }
+    }
+    let hex: String = wkb.iter().map(|b| format!("{b:02X}")).collect();
+    let (code, out, err) = run(&["--to", "wkt", "-"], Some(&hex));
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        out.starts_with("GEOMETRYCOLLECTION Z (POLYGON Z (("),
+        "{out}"
+    );
+    assert!(out.contains("4 4 0.3") && out.contains("0 0 0.1"), "{out}");
+}
+
+#[test]
+fn positions_mixing_two_three_and_four_numbers_are_an_error_naming_where() {
+    let wkt = "POLYGON ((0 0 1, 4 0 2, 4 4, 0 4 3))";
+    let message =
+        "line 1, column 25: this point has 2 coordinates but the polygon's first point has 3";
+    crate::util::fails_with(&["--to", "wkt", "-"], wkt, message);
+    let geojson = r#"{"type": "Polygon", "coordinates": [[[0, 0], [4, 0], [4, 4], [0, 4]], [[1, 1, 0], [2, 1, 0], [2, 2, 0]]]}"#;
+    let message =
+        "ring 1, position 0: this position has 3 numbers but the feature's first position has 2";
+    crate::util::fails_with(&["--to", "wkt", "-"], geojson, message);
+}
+
+#[test]
+fn the_per_feature_example_of_pipelines_md_is_what_the_binary_writes() {
+    let doc = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/pipelines.md"),
+    )
+    .unwrap();
+    let example = |start: &str| {
+        doc.lines()
+            .map(str::trim)
+            .find(|l| l.starts_with(start))
+            .unwrap_or_else(|| panic!("docs/pipelines.md has no line {start}"))
+            .to_string()
+    };
+    let input = example(r#"{"type": "Feature", "id": "b-1", "properties""#);
+    let expected = example(r#"{"type": "Feature", "id": "b-1", "geometry""#);
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("b.geojsonl"), format!("{input}\n")).unwrap();
+    let mut cmd = minitri();
+    cmd.current_dir(dir.path())
+        .args(["--to", "geojsonl", "b.geojsonl"]);
+    let (code, out, err) = outcome(&mut cmd);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(out.trim_end(), expected);
 }

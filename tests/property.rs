@@ -28,9 +28,12 @@ use std::collections::BTreeSet;
 fn to_polygon(ring: &[(i64, i64)]) -> Option<Polygon> {
     let d = |v: i64| Decimal::parse(&v.to_string()).ok();
     let ring: Option<Vec<[Decimal; 2]>> = ring.iter().map(|&(x, y)| Some([d(x)?, d(y)?])).collect();
-    Polygon::from_raw(&RawPolygon { rings: vec![ring?] })
-        .ok()
-        .map(|(p, _)| p)
+    Polygon::from_raw(&RawPolygon {
+        rings: vec![ring?],
+        ..Default::default()
+    })
+    .ok()
+    .map(|(p, _)| p)
 }
 
 /// Grows a random simple polygon from a triangle.

@@ -28,6 +28,7 @@ pub(crate) fn raw(rings: &Rings) -> RawPolygon {
             .iter()
             .map(|r| r.iter().map(|&(x, y)| [d(x), d(y)]).collect())
             .collect(),
+        ..Default::default()
     }
 }
 
@@ -695,4 +696,18 @@ fn a_long_chain_of_touching_holes_is_fast_and_keeps_the_time_limit() {
         assert_eq!(p["stopped_by"], "time limit");
         assert!(p["lower_bound"].as_u64().unwrap() <= count);
     }
+}
+
+/// docs/touching.md's example of two rings sharing a stretch of edge: the message it shows.
+#[test]
+fn two_holes_sharing_a_stretch_of_edge_give_the_message_of_touching_md() {
+    let text = "POLYGON ((0 0, 10 0, 10 10, 0 10), (2 2, 2 5, 5 5, 5 2), (5 2, 5 5, 8 5, 8 2))";
+    let (code, _, err) = crate::util::run(&["-"], Some(text));
+    assert_eq!(code, 1);
+    let doc = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/touching.md"),
+    )
+    .unwrap();
+    let message = err.trim_end().trim_start_matches("minitri: -: polygon 0: ");
+    assert!(doc.contains(&format!("`{message}`")), "{message}");
 }

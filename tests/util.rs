@@ -33,6 +33,13 @@ pub fn minitri() -> Command {
     cmd
 }
 
+/// Runs the binary on `stdin` and requires exit status 1 and `message` on standard error.
+pub fn fails_with(args: &[&str], stdin: &str, message: &str) {
+    let (code, _, err) = run(args, Some(stdin));
+    assert_eq!(code, 1, "{args:?}: {err}");
+    assert!(err.contains(message), "{args:?}: {err}");
+}
+
 /// Runs the binary, returning (exit code, stdout, stderr).
 pub fn run(args: &[&str], stdin: Option<&str>) -> (i32, String, String) {
     let mut cmd = minitri();
@@ -121,7 +128,10 @@ pub fn polygon_from_rings(rings: &[Vec<(i64, i64)>]) -> Option<Polygon> {
         .iter()
         .map(|r| r.iter().map(|&(x, y)| Some([d(x)?, d(y)?])).collect())
         .collect();
-    Polygon::from_raw(&RawPolygon { rings: rings? })
-        .ok()
-        .map(|(p, _)| p)
+    Polygon::from_raw(&RawPolygon {
+        rings: rings?,
+        ..Default::default()
+    })
+    .ok()
+    .map(|(p, _)| p)
 }

@@ -118,9 +118,12 @@ fn same_counts_on_wide_grids(ring: &[(i64, i64)]) -> Result<(), TestCaseError> {
             .iter()
             .map(|&(x, y)| Some([Decimal::parse(&f(x)).ok()?, Decimal::parse(&f(y)).ok()?]))
             .collect();
-        AnyPolygon::from_raw(&RawPolygon { rings: vec![ring?] })
-            .ok()
-            .map(|(p, _)| p)
+        AnyPolygon::from_raw(&RawPolygon {
+            rings: vec![ring?],
+            ..Default::default()
+        })
+        .ok()
+        .map(|(p, _)| p)
     };
     let Some(fast) = build(&|v| v.to_string()) else {
         return Ok(());
@@ -393,6 +396,7 @@ fn written(rings: &[&[(i64, i64)]], f: &dyn Fn(i64) -> String) -> RawPolygon {
                     .collect()
             })
             .collect(),
+        ..Default::default()
     }
 }
 

@@ -299,6 +299,7 @@ pub fn raw_rings<R: AsRef<[[i64; 2]]>>(rings: &[R]) -> RawPolygon {
             .iter()
             .map(|ring| ring.as_ref().iter().map(|p| [d(p[0]), d(p[1])]).collect())
             .collect(),
+        ..Default::default()
     }
 }
 

@@ -30,6 +30,7 @@ fn point(v: Vertex) -> (i64, i64) {
 fn raw(rings: &[Vec<(i64, i64)>]) -> RawPolygon {
     RawPolygon {
         rings: rings.iter().map(|r| ring(r)).collect(),
+        ..Default::default()
     }
 }
 

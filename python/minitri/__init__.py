@@ -93,7 +93,8 @@ class Triangulation:
     """The triangulation of one geometry.
 
     - ``triangles``: a shapely MultiPolygon of the triangles (counter-clockwise), of every
-      polygon in input order;
+      polygon in input order; with Z when the input has Z values (each corner the Z of the input
+      vertex it is; the triangulation is in x, y);
     - ``indices``, ``degenerate``: ``(k, 3)`` arrays of input vertex numbers; for a
       MultiPolygon the numbers run on over its polygons (polygon 1's first vertex follows
       polygon 0's last), so they index ``vertices``;

@@ -133,6 +133,11 @@ fn solve(input: &Input<'_>, options: &Options, json: bool) -> Item {
         ..Item::default()
     };
     let mut triangles = Vec::new();
+    // Each triangle's corners' Z (NaN for none), when an input polygon has Z values.
+    let mut heights: Vec<[f64; 3]> = Vec::new();
+    let with_z = outcomes
+        .iter()
+        .any(|(o, _)| o.ordinates.as_ref().is_some_and(|z| z.dims.has_z()));
     for (outcome, floats) in &outcomes {
         for warning in &outcome.warnings {
             item.warnings.push(without_source(outcome, warning));
@@ -142,9 +147,22 @@ fn solve(input: &Input<'_>, options: &Options, json: bool) -> Item {
                 let t = &solved.triangulation;
                 minitri::with_polygon!(polygon, p => {
                     add(&mut item, p, t);
+                    let before = triangles.len();
                     match floats {
                         Some(floats) => triangles.extend(input_triangles(p, t, floats)),
                         None => triangles.extend(minitri::geo::multi_polygon(p, t)),
+                    }
+                    if with_z {
+                        let z = |v: usize| {
+                            let value = outcome.ordinates.as_ref().and_then(|o| o.z(v));
+                            value.and_then(|d| d.as_ref()).map_or(f64::NAN, |d| d.to_f64())
+                        };
+                        // The same triangles, in the same order, as input vertex numbers (if
+                        // a triangle was skipped above, the counts differ: no Z then).
+                        let corners = t.input_triangles(p);
+                        if corners.len() == triangles.len() - before {
+                            heights.extend(corners.iter().map(|&[a, b, c]| [z(a), z(b), z(c)]));
+                        }
                     }
                 });
                 if json {
@@ -166,7 +184,9 @@ fn solve(input: &Input<'_>, options: &Options, json: bool) -> Item {
             (Ok(_), None) => {}
         }
     }
-    if item.errors.is_empty() {
+    if item.errors.is_empty() && with_z && heights.len() == triangles.len() {
+        item.wkb = Some(multi_polygon_z(&triangles, &heights));
+    } else if item.errors.is_empty() {
         let multi = geo_types::MultiPolygon::new(triangles);
         let mut out = Vec::with_capacity(wkb::writer::multi_polygon_wkb_size(&multi));
         item.wkb = wkb::writer::write_multi_polygon(&mut out, &multi, &Default::default())
@@ -174,6 +194,32 @@ fn solve(input: &Input<'_>, options: &Options, json: bool) -> Item {
             .map(|()| out);
     }
     item
+}
+
+/// ISO WKB (little-endian) of a MultiPolygon Z of triangles: each triangle's ring (its three
+/// corners and the first again) with the corners' Z from `heights` (NaN for none).
+fn multi_polygon_z(triangles: &[geo_types::Polygon<f64>], heights: &[[f64; 3]]) -> Vec<u8> {
+    let mut out = Vec::with_capacity(9 + triangles.len() * (13 + 4 * 24));
+    out.push(1);
+    out.extend(1006u32.to_le_bytes());
+    out.extend(
+        u32::try_from(triangles.len())
+            .unwrap_or(u32::MAX)
+            .to_le_bytes(),
+    );
+    for (triangle, z) in triangles.iter().zip(heights) {
+        out.push(1);
+        out.extend(1003u32.to_le_bytes());
+        out.extend(1u32.to_le_bytes());
+        let ring = &triangle.exterior().0;
+        out.extend(u32::try_from(ring.len()).unwrap_or(u32::MAX).to_le_bytes());
+        for (k, c) in ring.iter().enumerate() {
+            out.extend(c.x.to_le_bytes());
+            out.extend(c.y.to_le_bytes());
+            out.extend(z[k % 3].to_le_bytes());
+        }
+    }
+    out
 }
 
 /// The triangles of `t` with corners taken from the input floats (`floats[k]` is input vertex

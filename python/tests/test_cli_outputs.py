@@ -80,3 +80,36 @@ def test_hex_ewkb_as_shapely_writes_it_reads_on_the_command_line():
     # The doubles are taken as their shortest decimals: three collinear points, one triangle;
     # the SRID is kept, as EWKT.
     assert out == "SRID=4326;GEOMETRYCOLLECTION (POLYGON ((0 0, 0.2 0.6, 0 1, 0 0)))\n"
+
+
+U_SHAPE_Z = (
+    "POLYGON Z ((3 2 0.5, 4 2 1.5, 5 2 2.5, 6 2 3.5, 6 3 4.5, 6 4 5.5, 5 4 6.5, 5 3 7.5, "
+    "4 3 8.5, 4 4 9.5, 3 4 10.5, 3 3 11.5, 3 2 0.5))"
+)
+
+
+@pytest.mark.parametrize("to", ["wkt", "geojson", "csv"])
+def test_z_values_reach_shapely_through_every_geometry_output(to):
+    """Each triangle corner has the Z of the input vertex it is (issue 36, point 5)."""
+    code, out = cli("--to", to, "-", stdin=U_SHAPE_Z.encode())
+    assert code == 0
+    if to == "wkt":
+        triangles = shapely.from_wkt(out.strip())
+    elif to == "geojson":
+        triangles = shapely.from_geojson(json.dumps(json.loads(out)["features"][0]["geometry"]))
+    else:
+        header, row = out.split("\r\n")[:2]
+        assert header.startswith("WKT,")
+        triangles = shapely.from_wkt(row.split('",')[0].strip('"'))
+    assert triangles.geom_type == "GeometryCollection"
+    assert shapely.has_z(triangles)
+    assert shapely.is_valid(triangles)
+    heights = {c[:2]: c[2] for c in shapely.from_wkt(U_SHAPE_Z).exterior.coords}
+    for t in triangles.geoms:
+        assert shapely.has_z(t)
+        for x, y, z in t.exterior.coords:
+            assert heights[(x, y)] == z
+    # Read back by minitri, the heights stay.
+    code, back = cli("--to", "wkt", "-", stdin=out.encode())
+    assert code == 0
+    assert shapely.has_z(shapely.from_wkt(back.splitlines()[0]))

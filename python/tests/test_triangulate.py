@@ -179,3 +179,20 @@ def test_full_precision_doubles_and_touching_holes():
     # A coordinate like 1.2345678901234567e-5 beside coordinates in the tens is taken exactly.
     tiny = shapely.Polygon([(0, 0), (a, 0), (20, 0), (20, 20)])
     assert minitri.triangulate(tiny).degenerate_count == 1
+
+
+@pytest.mark.parametrize("form", ["wkt", "shapely", "wkb"])
+def test_z_values_are_kept_on_the_triangles(form):
+    """Each triangle corner has the Z of the input vertex it is (issue 36, point 5)."""
+    text = "POLYGON Z ((0 0 1.5, 1 0 2, 2 0 2.5, 2 2 3, 0 2 4, 0 0 1.5))"
+    geom = {"wkt": text, "shapely": shapely.from_wkt(text), "wkb": shapely.to_wkb(shapely.from_wkt(text))}[form]
+    t = minitri.triangulate(geom)
+    assert t.triangle_count == 2
+    assert shapely.has_z(t.triangles)
+    heights = {(x, y): z for x, y, z in shapely.from_wkt(text).exterior.coords}
+    for triangle in t.triangles.geoms:
+        for x, y, z in triangle.exterior.coords:
+            assert heights[(x, y)] == z
+    if form == "wkt":
+        assert t.parts[0].json["vertices_z"] == [1.5, 2, 2.5, 3, 4]
+    assert not shapely.has_z(minitri.triangulate(U).triangles)

@@ -49,17 +49,24 @@ pub fn estimate(n: usize) -> (String, String) {
     let bytes = 8.0 * (n as f64).powi(2) + (n as f64).powi(2) / 8.0;
     // Measured end to end on convex polygons, the worst case: about 1.3 ns per step (`docs/benchmarks.md`).
     let seconds = 1.3e-9 * (n as f64).powi(3) / 6.0;
+    // Small sizes (a low --dp-limit) in kB and ms or µs, rounded up: never "0 MB and 0.0 s".
     let memory = if bytes >= 1e9 {
         format!("{:.1} GB", bytes / 1e9)
-    } else {
+    } else if bytes >= 0.5e6 {
         format!("{:.0} MB", bytes / 1e6)
+    } else {
+        format!("{:.0} kB", (bytes / 1e3).ceil())
     };
     let time = if seconds >= 3600.0 {
         format!("{:.1} hours", seconds / 3600.0)
     } else if seconds >= 60.0 {
         format!("{:.0} minutes", seconds / 60.0)
-    } else {
+    } else if seconds >= 0.05 {
         format!("{seconds:.1} s")
+    } else if seconds >= 0.5e-3 {
+        format!("{:.0} ms", seconds * 1e3)
+    } else {
+        format!("{:.0} µs", (seconds * 1e6).ceil())
     };
     (memory, time)
 }
@@ -368,5 +375,8 @@ mod tests {
             "812 MB",
             "8 n^2 bytes of tables plus n^2 bits"
         );
+        // A small polygon over a low --dp-limit: no "0 MB and 0.0 s".
+        assert_eq!(estimate(12), ("2 kB".to_string(), "1 µs".to_string()));
+        assert_eq!(estimate(400).1, "14 ms");
     }
 }

@@ -127,6 +127,7 @@ pub fn estimate(n: usize, holes: usize) -> String {
 /// };
 /// let raw = RawPolygon {
 ///     rings: vec![ring(&[(0, 0), (3, 0), (3, 3), (0, 3)]), ring(&[(1, 1), (2, 1), (2, 2), (1, 2)])],
+///     ..Default::default()
 /// };
 /// let (square_with_hole, _) = Polygon::from_raw(&raw)?;
 /// let t = asano_holes::triangulate(&square_with_hole, 3000)?;

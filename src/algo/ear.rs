@@ -47,6 +47,7 @@ use crate::geom::polygon::Polygon;
 ///         ring(&[(0, 0), (4, 0), (4, 4), (0, 4)])?,
 ///         ring(&[(1, 1), (1, 3), (3, 3), (3, 1)])?,
 ///     ],
+///     ..Default::default()
 /// };
 /// let (polygon, _warnings) = Polygon::from_raw(&raw)?;
 /// let t = ear::triangulate(&polygon)?;

@@ -64,7 +64,7 @@ const NONE: usize = usize::MAX;
 ///     .iter()
 ///     .map(|&(x, y)| Ok([Decimal::parse(&x.to_string())?, Decimal::parse(&y.to_string())?]))
 ///     .collect();
-/// let (polygon, _warnings) = Polygon::from_raw(&RawPolygon { rings: vec![ring?] })?;
+/// let (polygon, _warnings) = Polygon::from_raw(&RawPolygon { rings: vec![ring?], ..Default::default() })?;
 /// let start = ear::triangulate(&polygon)?;
 /// let p = pseudo::minimal(&polygon, &start.triangles);
 /// assert_eq!(p.faces.len(), 2); // a square has four corners: one diagonal must stay

@@ -108,7 +108,7 @@ use std::time::Instant;
 ///     .iter()
 ///     .map(|&(x, y)| Ok([Decimal::parse(&x.to_string())?, Decimal::parse(&y.to_string())?]))
 ///     .collect();
-/// let (polygon, _warnings) = Polygon::from_raw(&RawPolygon { rings: vec![ring?] })?;
+/// let (polygon, _warnings) = Polygon::from_raw(&RawPolygon { rings: vec![ring?], ..Default::default() })?;
 /// let p = pseudo_hull::pseudotriangulate(&polygon)?;
 /// assert_eq!(p.faces.len(), 2); // n - 2: the polygon and the pocket under vertex (2, 1)
 /// # Ok::<(), Box<dyn std::error::Error>>(())

@@ -449,13 +449,33 @@ mod tests {
     }
 
     #[test]
-    fn ignores_z_and_m_values_and_other_members() {
+    fn keeps_z_and_m_values_and_ignores_other_members() {
+        use crate::io::read::{Dims, Ordinates};
         let text = r#"{"type": "Polygon", "bbox": [0, 0, 1, 1], "crs": null,
-            "coordinates": [[[0, 0, 10], [1, 0, 11, 5], [0, 1, 12]]]}"#;
+            "coordinates": [[[0, 0, 10], [1, 0, 11.50], [0, 1, -1e-1], [0, 0, 10]]]}"#;
         let polygons = read(text).unwrap();
         assert_eq!(
             polygons[0].rings[0],
             ring(&[("0", "0"), ("1", "0"), ("0", "1")])
+        );
+        let z = Ordinates {
+            dims: Dims::Z,
+            values: vec![Some(d("10")), Some(d("11.5")), Some(d("-0.1"))],
+        };
+        assert_eq!(polygons[0].ordinates, Some(z));
+        let zm = r#"{"type": "MultiPolygon", "coordinates": [[[[0, 0, 1, 2], [1, 0, 3, 4], [0, 1, 5, 6]]]]}"#;
+        let values = read(zm).unwrap()[0]
+            .ordinates
+            .clone()
+            .map(|o| (o.dims, o.values.len()));
+        assert_eq!(values, Some((Dims::Zm, 6)));
+        assert_eq!(read(SQUARE).unwrap()[0].ordinates, None);
+        // One feature's positions all have as many numbers, across its polygons too.
+        let mixed = r#"{"type": "MultiPolygon", "coordinates": [[[[0, 0, 1], [1, 0, 1], [0, 1, 1]]], [[[0, 0, 1], [1, 0, 1], [0, 1, 1, 2]]]]}"#;
+        assert_eq!(
+            error(mixed),
+            "polygon 1, ring 0, position 2: this position has 4 numbers but the feature's first \
+             position has 3: mixed [x, y], [x, y, z] and [x, y, z, m] positions"
         );
     }
 
@@ -1072,7 +1092,7 @@ mod tests {
     fn agrees_with_the_geojson_crate() {
         let texts = [
             SQUARE.to_string(),
-            r#"{"type": "Polygon", "coordinates": [[[0.1, 0.3], [0.2, 0.6], [-1e-3, 7.25], [123456.789, -0.000001, 5]]]}"#.to_string(),
+            r#"{"type": "Polygon", "coordinates": [[[0.1, 0.3], [0.2, 0.6], [-1e-3, 7.25], [123456.789, -0.000001]]]}"#.to_string(),
             r#"{"type": "MultiPolygon", "coordinates": [[[[0, 0], [1, 0], [0, 1], [0, 0]]], [[[2, 2], [3, 2], [2, 3]], [[2.1, 2.1], [2.2, 2.1], [2.1, 2.2]]]]}"#.to_string(),
             r#"{"type": "Feature", "properties": {}, "geometry": {"type": "GeometryCollection", "geometries": [{"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 1]]]}]}}"#.to_string(),
             r#"{"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {}, "geometry": {"type": "Polygon", "coordinates": [[[0.5, 0.25], [1, 0], [0, 1e1]]]}}, {"type": "Feature", "properties": {}, "geometry": null}]}"#.to_string(),

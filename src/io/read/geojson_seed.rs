@@ -172,6 +172,9 @@ pub(super) enum Coordinates {
 pub(super) struct Vertices {
     max: usize,
     read: Cell<usize>,
+    /// How many numbers the feature's first position has: every position of a feature must
+    /// have as many (2, 3 or 4), so that its Z (and M) values hold for all its vertices.
+    numbers: Cell<Option<usize>>,
 }
 
 impl Vertices {
@@ -180,6 +183,7 @@ impl Vertices {
         Vertices {
             max,
             read: Cell::new(0),
+            numbers: Cell::new(None),
         }
     }
 
@@ -191,6 +195,29 @@ impl Vertices {
     /// The next feature starts: its positions are counted from 0.
     pub(super) fn reset(&self) {
         self.read.set(0);
+        self.numbers.set(None);
+    }
+
+    /// Checks that a position of `count` numbers has as many as the feature's first.
+    fn numbers(&self, count: usize) -> Result<(), Failure> {
+        match self.numbers.get() {
+            None => self.numbers.set(Some(count)),
+            Some(first) if first != count => {
+                return Err(Failure::new(format!(
+                "this position has {count} numbers but the feature's first position has {first}: \
+                     mixed [x, y], [x, y, z] and [x, y, z, m] positions"
+            )))
+            }
+            Some(_) => {}
+        }
+        Ok(())
+    }
+
+    /// The dimensions of the feature's positions read so far (`None` for `[x, y]`).
+    fn dims(&self) -> Option<super::Dims> {
+        self.numbers
+            .get()
+            .and_then(|count| super::Dims::of(count, false))
     }
 
     /// Counts one more position; the failure when it is one too many. A position that repeats
@@ -208,10 +235,19 @@ impl Vertices {
     }
 }
 
+/// Why a [`FeatureSink`] refused a feature; reading stops (the deserializer's error carries it
+/// as its text, and the sink keeps the cause).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
+pub(super) enum SinkError {
+    /// Writing the feature's events failed (the sink keeps the I/O error).
+    #[error("the output failed")]
+    Output,
+}
+
 /// Where the elements of a FeatureCollection's `features` go as they are read.
 pub(super) trait FeatureSink {
     /// Element `index` of `features`. An `Err` stops reading (its text is the `serde` error).
-    fn feature(&mut self, index: usize, feature: Node) -> Result<(), String>;
+    fn feature(&mut self, index: usize, feature: Node) -> Result<(), SinkError>;
 
     /// What the bytes read from now on belong to: element `index` of `features` (`Some`,
     /// before each element and before the array's end), or the rest of the collection (`None`,
@@ -836,9 +872,13 @@ impl Level for PolygonLevel<'_> {
 
     fn array<'de, A: SeqAccess<'de>>(self, mut seq: A) -> Result<Read<Self::Output>, A::Error> {
         let mut rings = Vec::new();
+        let mut values = Vec::new();
         while let Some(ring) = seq.next_element_seed(LevelSeed(RingLevel(self.0)))? {
             match ring {
-                Ok(ring) => rings.push(ring),
+                Ok((ring, extra)) => {
+                    rings.push(ring);
+                    values.extend(extra);
+                }
                 Err(failure) => {
                     let index = rings.len();
                     drop(rings);
@@ -847,7 +887,10 @@ impl Level for PolygonLevel<'_> {
                 }
             }
         }
-        Ok(Ok((!rings.is_empty()).then_some(RawPolygon { rings })))
+        let ordinates = self.0.dims().map(|dims| super::Ordinates { dims, values });
+        Ok(Ok(
+            (!rings.is_empty()).then_some(RawPolygon { rings, ordinates })
+        ))
     }
 
     fn not_array(self, found: String, _: bool) -> Failure {
@@ -861,15 +904,21 @@ impl Level for PolygonLevel<'_> {
 struct RingLevel<'v>(&'v Vertices);
 
 impl Level for RingLevel<'_> {
-    type Output = Vec<[Decimal; 2]>;
+    /// The ring's positions, and their z and m values (none for `[x, y]` positions).
+    type Output = (Vec<[Decimal; 2]>, Vec<super::Ordinate>);
 
     fn array<'de, A: SeqAccess<'de>>(self, mut seq: A) -> Result<Read<Self::Output>, A::Error> {
         let mut ring = Vec::new();
+        let mut values = Vec::new();
         while let Some(position) = seq.next_element_seed(LevelSeed(PositionLevel))? {
             // One position too many for the feature: the ring is dropped, the rest not kept.
-            let position = position.and_then(|p| {
+            let position = position.and_then(|(p, extra, count)| {
+                self.0.numbers(count)?;
                 let closing = ring.first() == Some(&p);
-                self.0.take(closing).map(|()| p)
+                self.0.take(closing).map(|()| {
+                    values.extend(extra.into_iter().take(count - 2).map(Some));
+                    p
+                })
             });
             match position {
                 // Memory refused is this polygon's failure (reading goes on), not an abort.
@@ -894,9 +943,11 @@ impl Level for RingLevel<'_> {
         }
         if drop_closing_vertex(&mut ring) {
             self.0.give_back(); // the closing position, not a vertex of the polygon
+            let extra = self.0.numbers.get().unwrap_or(2).saturating_sub(2);
+            values.truncate(values.len().saturating_sub(extra));
         }
         ring.shrink_to_fit();
-        Ok(Ok(ring))
+        Ok(Ok((ring, values)))
     }
 
     fn not_array(self, found: String, _: bool) -> Failure {
@@ -908,7 +959,8 @@ impl Level for RingLevel<'_> {
 struct PositionLevel;
 
 impl Level for PositionLevel {
-    type Output = [Decimal; 2];
+    /// `[x, y]`, the z and m values (as many as given), and how many numbers in all.
+    type Output = ([Decimal; 2], [Decimal; 2], usize);
 
     fn array<'de, A: SeqAccess<'de>>(self, mut seq: A) -> Result<Read<Self::Output>, A::Error> {
         // The first four elements, and how many there are in all.
@@ -940,7 +992,10 @@ impl Level for PositionLevel {
 }
 
 /// The position whose first elements are `items`, `count` elements in all.
-fn position([x, y, z, m]: [Option<Item>; 4], count: usize) -> Read<[Decimal; 2]> {
+fn position(
+    [x, y, z, m]: [Option<Item>; 4],
+    count: usize,
+) -> Read<([Decimal; 2], [Decimal; 2], usize)> {
     if let Some(Item::Array { .. }) = x {
         return Err(Failure::new(
             "expected [x, y], found an array of arrays (the coordinates are nested one level too deep)",
@@ -963,18 +1018,13 @@ fn position([x, y, z, m]: [Option<Item>; 4], count: usize) -> Read<[Decimal; 2]>
     }
     let x = x.decimal("x")?;
     let y = y.decimal("y")?;
-    for (extra, axis) in [(z, "z"), (m, "m")] {
-        match extra {
-            Some(Item::Number(_)) | None => {}
-            Some(other) => {
-                return Err(Failure::new(format!(
-                    "expected a number for {axis}, found {}",
-                    other.describe()
-                )))
-            }
+    let mut extra = [Decimal::from(0u64), Decimal::from(0u64)];
+    for ((item, axis), slot) in [(z, "z"), (m, "m")].into_iter().zip(&mut extra) {
+        if let Some(item) = item {
+            *slot = item.decimal(axis)?;
         }
     }
-    Ok([x, y])
+    Ok(([x, y], extra, count))
 }
 
 /// An element of a position.
@@ -1103,6 +1153,48 @@ impl<'de> Visitor<'de> for ItemSeed {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The reliance on serde_json's private number token, checked: with `arbitrary_precision`,
+    /// a number that is not a 64-bit integer reaches a visitor as a map whose one key is
+    /// [`NUMBER_TOKEN`] and whose value is the number's text. Cargo.toml pins serde_json to the
+    /// version this holds for; a new version that changes it fails here, not in the readers.
+    #[test]
+    fn serde_json_still_hands_numbers_over_as_its_private_token() {
+        struct FirstEntry;
+        impl<'de> Visitor<'de> for FirstEntry {
+            type Value = Option<(String, String)>;
+            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str("a number")
+            }
+            fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Self::Value, A::Error> {
+                let key: Option<String> = map.next_key()?;
+                let value: Option<String> = match key {
+                    Some(_) => Some(map.next_value()?),
+                    None => None,
+                };
+                Ok(key.zip(value))
+            }
+            fn visit_f64<E: de::Error>(self, _: f64) -> Result<Self::Value, E> {
+                Ok(None)
+            }
+        }
+        let text = "0.1000000000000000000001";
+        let mut json = serde_json::Deserializer::from_str(text);
+        let entry = de::Deserializer::deserialize_any(&mut json, FirstEntry);
+        assert_eq!(
+            entry.ok().flatten(),
+            Some((NUMBER_TOKEN.to_string(), text.to_string())),
+            "serde_json no longer hands a number over as {NUMBER_TOKEN:?} with its text: \
+             io/read/geojson_seed.rs reads every GeoJSON coordinate through that token. Keep \
+             the serde_json version pinned in Cargo.toml, or update NUMBER_TOKEN and this test"
+        );
+        // And the readers built on it keep the decimal exactly.
+        let polygons = super::super::geojson::read(
+            r#"{"type": "Polygon", "coordinates": [[[0, 0], [0.1000000000000000000001, 0], [0, 1]]]}"#,
+        );
+        let x = polygons.ok().map(|p| p[0].rings[0][1][0].to_string());
+        assert_eq!(x.as_deref(), Some(text));
+    }
 
     #[test]
     fn json_numbers_are_recognised_by_the_grammar() {

@@ -46,7 +46,7 @@
 use super::geojson::{
     collection_feature, json_message, top_level, type_of, Failure, Part, JSON_WHITESPACE,
 };
-use super::geojson_seed::{FeatureSink, Node, NodeSeed, Object, Vertices};
+use super::geojson_seed::{FeatureSink, Node, NodeSeed, Object, SinkError, Vertices};
 use super::limits::{too_large, MAX_TEXT, MAX_VERTICES};
 use super::{locate, Location, ParseError, RawPolygon};
 use crate::feature::{Collection, Feature, Geometry};
@@ -76,13 +76,16 @@ pub enum Event {
 }
 
 /// Why reading stopped before the end of the input.
-#[derive(Debug)]
+#[derive(Debug, thiserror::Error)]
 pub enum Stop {
     /// The input is not JSON from here on (or holds no polygon at all): what is wrong.
+    #[error("{0}")]
     Parse(ParseError),
     /// The input could not be read.
+    #[error("cannot read the input: {0}")]
     Read(io::Error),
     /// The callback failed (writing the output, say); its error.
+    #[error("the output failed: {0}")]
     Output(io::Error),
 }
 
@@ -102,13 +105,13 @@ pub enum Stop {
 ///   {"type": "Feature", "geometry": {"type": "Point", "coordinates": [0, 0]}},
 ///   {"type": "Feature", "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 1]]]}}]}"#;
 /// let mut events = Vec::new();
-/// stream(text.as_bytes(), &mut |e| Ok(events.push(e))).map_err(|e| format!("{e:?}"))?;
+/// stream(text.as_bytes(), &mut |e| Ok(events.push(e)))?;
 /// // Each feature is announced (its id, properties, geometry kind), then its polygons or failure.
 /// assert!(matches!(&events[0], Event::Feature(f) if f.number == 0));
 /// assert!(matches!(&events[1], Event::Failed(e) if e.to_string().starts_with("feature 0: ")));
 /// assert!(matches!(&events[2], Event::Feature(f) if f.number == 1));
 /// assert!(matches!(&events[3], Event::Polygon(p) if p.rings[0].len() == 3));
-/// # Ok::<(), String>(())
+/// # Ok::<(), minitri::io::read::geojson_stream::Stop>(())
 /// ```
 pub fn stream<R: BufRead>(
     reader: R,
@@ -148,11 +151,11 @@ pub fn stream<R: BufRead>(
 /// let text = r#"[[[0, 0], [1, 0], [0, 1], [0, 2]]]
 /// [[[0, 0], [1, 0], [0, 1]]]"#;
 /// let mut events = Vec::new();
-/// stream_within(text.as_bytes(), 1000, 3, &mut |e| Ok(events.push(e))).map_err(|e| format!("{e:?}"))?;
+/// stream_within(text.as_bytes(), 1000, 3, &mut |e| Ok(events.push(e)))?;
 /// assert!(matches!(&events[1], Event::Failed(e) if e.to_string().starts_with(
 ///     "line 1, column 1: ring 0, position 3: too many vertices: more than 3 in one feature")));
 /// assert!(matches!(&events[3], Event::Polygon(_)));
-/// # Ok::<(), String>(())
+/// # Ok::<(), minitri::io::read::geojson_stream::Stop>(())
 /// ```
 pub fn stream_within<R: BufRead>(
     mut reader: R,
@@ -613,10 +616,9 @@ struct Sink<'e> {
     collection: Option<Arc<Collection>>,
 }
 
-/// A part of a top-level value not pushed yet: a polygon, or the message of a failure (a failed
-/// part, or the whole value), which is located once it is known whether the input holds
-/// several values.
-type Deferred = Result<RawPolygon, String>;
+/// A part of a top-level value not pushed yet: a polygon, or a failure (a failed part, or the
+/// whole value), which is located once it is known whether the input holds several values.
+type Deferred = Part;
 
 impl Sink<'_> {
     /// Why reading stopped on `error`, an I/O error of the deserializer: the cap on one
@@ -673,7 +675,10 @@ impl Sink<'_> {
     fn parts(&mut self, parts: Vec<Deferred>, location: Option<Location>) -> io::Result<()> {
         parts.into_iter().try_for_each(|part| match part {
             Ok(polygon) => self.polygon(polygon),
-            Err(message) => self.fail(ParseError { location, message }),
+            Err(failure) => self.fail(ParseError {
+                location,
+                message: failure.to_string(),
+            }),
         })
     }
 
@@ -707,11 +712,7 @@ impl Sink<'_> {
         match node {
             // Only a member named twice can be wrong with the object itself.
             Node::Object(object) if matches!(object.features, Some(Node::Streamed)) => {
-                Ok(type_of(&object)
-                    .err()
-                    .map(|failure| Err(failure.to_string()))
-                    .into_iter()
-                    .collect())
+                Ok(type_of(&object).err().map(Err).into_iter().collect())
             }
             // `"features"` came before `"type"`: read whole, but judged feature by feature too.
             Node::Object(mut object) if collection(&object) => {
@@ -729,11 +730,8 @@ impl Sink<'_> {
                 let read = top_level(node, &mut parts);
                 self.announce(identity, read.is_ok(), parts.len())?;
                 Ok(match read {
-                    Ok(()) => parts
-                        .into_iter()
-                        .map(|part| part.map_err(|failure| failure.to_string()))
-                        .collect(),
-                    Err(failure) => vec![Err(failure.to_string())],
+                    Ok(()) => parts,
+                    Err(failure) => vec![Err(failure)],
                 })
             }
         }
@@ -742,10 +740,10 @@ impl Sink<'_> {
 
 impl FeatureSink for Sink<'_> {
     /// Pushes the feature's polygons (or failure); a callback error is kept, and stops reading.
-    fn feature(&mut self, index: usize, feature: Node) -> Result<(), String> {
+    fn feature(&mut self, index: usize, feature: Node) -> Result<(), SinkError> {
         Sink::feature(self, index, feature).map_err(|e| {
             self.output_error = Some(e);
-            "the output failed".to_string()
+            SinkError::Output
         })
     }
 

@@ -245,6 +245,7 @@ impl Current {
             Some(error) => Err(error),
             None => Ok(RawPolygon {
                 rings: current.rings,
+                ordinates: None,
             }),
         }
     }

@@ -9,8 +9,10 @@
 //! Exactness: WKB holds binary doubles, not decimals, so each coordinate is taken as its
 //! SHORTEST decimal, the decimal that converts back to the same double (`0.1` stays 0.1, not the
 //! binary fraction it stands for), through [`crate::geo`], exactly as the library's geo-types
-//! API and the Python package take floats. Z and M are dropped. A NaN or infinite coordinate
-//! is an error naming the polygon, ring, vertex and axis.
+//! API and the Python package take floats. Z and M values (Z, M and ZM geometries) are kept
+//! the same way, each vertex's beside it ([`super::Ordinates`]; a NaN Z or M is "no value").
+//! A NaN or infinite x or y, or an infinite Z or M, is an error naming the polygon, ring, vertex
+//! and axis.
 //!
 //! Output guarantee: the polygons of each geometry in input order (a MultiPolygon's polygons, a
 //! GeometryCollection's polygons at any depth), each ring without its closing coordinate, as
@@ -18,11 +20,12 @@
 //! geometry type is an error in its place (a member of a collection: a failed part; the other
 //! geometries go on). Complexity: linear in the input.
 
-use super::{limits, Location, ParseError, RawPolygon};
+use super::{limits, Dims, Location, Ordinates, ParseError, RawPolygon};
+use crate::geo::ExactCoord;
 use geo_traits::to_geo::ToGeoPolygon;
 use geo_traits::{
-    GeometryCollectionTrait, GeometryTrait, GeometryType, LineStringTrait, MultiPolygonTrait,
-    PolygonTrait,
+    CoordTrait, Dimensions, GeometryCollectionTrait, GeometryTrait, GeometryType, LineStringTrait,
+    MultiPolygonTrait, PolygonTrait,
 };
 use wkb::reader::Wkb;
 
@@ -60,9 +63,13 @@ pub struct WkbPolygon {
 pub fn polygons(bytes: &[u8]) -> Result<Vec<WkbPolygon>, ParseError> {
     let geometry = wkb::reader::read_wkb(bytes)
         .map_err(|e| ParseError::new(format!("not a valid WKB geometry: {e}")))?;
-    let polygons: Vec<geo_types::Polygon<f64>> = match geometry.as_type() {
-        GeometryType::Polygon(p) => vec![p.to_polygon()],
-        GeometryType::MultiPolygon(m) => m.polygons().map(|p| p.to_polygon()).collect(),
+    let polygons: Vec<(geo_types::Polygon<f64>, ZmValues)> = match geometry.as_type() {
+        GeometryType::Polygon(p) => vec![(p.to_polygon(), ordinates(p, 0))],
+        GeometryType::MultiPolygon(m) => m
+            .polygons()
+            .enumerate()
+            .map(|(i, p)| (p.to_polygon(), ordinates(&p, i)))
+            .collect(),
         _ => {
             return Err(ParseError::new(format!(
                 "expected a Polygon or MultiPolygon, found a {}",
@@ -70,16 +77,18 @@ pub fn polygons(bytes: &[u8]) -> Result<Vec<WkbPolygon>, ParseError> {
             )))
         }
     };
-    if polygons.is_empty() || polygons.iter().any(|p| p.exterior().0.is_empty()) {
+    if polygons.is_empty() || polygons.iter().any(|(p, _)| p.exterior().0.is_empty()) {
         return Err(ParseError::new("no polygon found: the geometry is EMPTY"));
     }
     polygons
-        .iter()
+        .into_iter()
         .enumerate()
-        .map(|(i, polygon)| {
+        .map(|(i, (polygon, ordinates))| {
+            let mut raw = exact(&polygon, i)?;
+            raw.ordinates = ordinates.map_err(ParseError::new)?;
             Ok(WkbPolygon {
-                raw: exact(polygon, i)?,
-                floats: floats(polygon),
+                raw,
+                floats: floats(&polygon),
             })
         })
         .collect()
@@ -372,8 +381,11 @@ impl Reading {
                 .push(Err(named(format!("polygon {index}: {message}"))));
             return;
         }
-        let part = exact(&polygon.to_polygon(), index).map_err(|e| named(e.message));
-        self.parts.push(part);
+        let part = exact(&polygon.to_polygon(), index).and_then(|mut raw| {
+            raw.ordinates = ordinates(polygon, index).map_err(ParseError::new)?;
+            Ok(raw)
+        });
+        self.parts.push(part.map_err(|e| named(e.message)));
     }
 }
 
@@ -434,6 +446,50 @@ fn exact(polygon: &geo_types::Polygon<f64>, index: usize) -> Result<RawPolygon, 
         crate::pipeline::Error::Parse(e) => e,
         other => ParseError::new(other.to_string()),
     })
+}
+
+/// A polygon's Z and M values ([`ordinates`]), or why they cannot be read.
+type ZmValues = Result<Option<Ordinates>, String>;
+
+/// The Z and M values of polygon `index`'s vertices in input numbering (each ring's closing
+/// coordinate dropped as [`crate::geo`] drops it: its x and y equal to the first's), each the
+/// shortest decimal of its double, NaN as `None`; `None` for an XY polygon.
+///
+/// # Errors
+/// An infinite Z or M, naming the polygon, ring and vertex.
+fn ordinates<P: PolygonTrait<T = f64>>(polygon: &P, index: usize) -> ZmValues {
+    let (dims, axes): (Dims, &[(usize, &str)]) = match polygon.dim() {
+        Dimensions::Xyz => (Dims::Z, &[(2, "z")]),
+        Dimensions::Xym => (Dims::M, &[(2, "m")]),
+        Dimensions::Xyzm => (Dims::Zm, &[(2, "z"), (3, "m")]),
+        _ => return Ok(None),
+    };
+    let mut values = Vec::new();
+    let rings = polygon.exterior().into_iter().chain(polygon.interiors());
+    for (r, ring) in rings.enumerate() {
+        let coords: Vec<_> = ring.coords().collect();
+        let mut kept = &coords[..];
+        if let (Some(first), Some(last), true) = (coords.first(), coords.last(), coords.len() > 1) {
+            if first.x() == last.x() && first.y() == last.y() {
+                kept = &coords[..coords.len() - 1];
+            }
+        }
+        for (k, c) in kept.iter().enumerate() {
+            for &(n, axis) in axes {
+                let value = c.nth(n).unwrap_or(f64::NAN);
+                if value.is_nan() {
+                    values.push(None);
+                    continue;
+                }
+                let decimal = value.to_decimal().map_err(|e| {
+                    let ring = crate::geom::polygon::Ring::from_index(r);
+                    format!("polygon {index}, {ring}, vertex {k}: {axis} coordinate {e}")
+                })?;
+                values.push(Some(decimal));
+            }
+        }
+    }
+    Ok(Some(Ordinates { dims, values }))
 }
 
 /// The coordinates of `polygon` in input numbering.

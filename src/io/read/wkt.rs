@@ -166,6 +166,8 @@ pub fn read_parts_srid_within(
         pos: 0,
         parts: Vec::new(),
         dimensions: None,
+        measured: false,
+        ordinates: Vec::new(),
         no_room: None,
         vertices: 0,
         max_vertices,
@@ -282,6 +284,10 @@ struct Parser<'a> {
     /// How many coordinates the current polygon's first point has: every point of a polygon
     /// must have as many (a point with more is most likely a missing comma).
     dimensions: Option<usize>,
+    /// Whether the geometry being read is tagged `M` (its 3-number points are `x y m`).
+    measured: bool,
+    /// The Z and M values of the current polygon's vertices read so far (input numbering).
+    ordinates: Vec<super::Ordinate>,
     /// The current polygon could not be stored (memory refused): its error, at the point where
     /// it happened. The polygon is read to its end (its syntax still checked) and becomes a
     /// failed part. Also set when the polygon has more than `max_vertices` vertices.
@@ -434,7 +440,16 @@ impl<'a> Parser<'a> {
                 _ => Err(error),
             };
         };
-        self.dimension(glued);
+        let tag = self.dimension(glued);
+        // The tag of a collection's member is its own (a collection's is not inherited).
+        self.measured = match tag {
+            Some(tag) => tag.eq_ignore_ascii_case("M"),
+            // Glued (`POLYGONM`): an `M` not after a `Z`.
+            None => {
+                let upper = word.to_ascii_uppercase();
+                glued && upper.ends_with('M') && !upper.ends_with("ZM")
+            }
+        };
         if self.eat_word("EMPTY") {
             return Ok(());
         }
@@ -471,11 +486,12 @@ impl<'a> Parser<'a> {
     }
 
     /// Skips a dimension tag (`Z`, `M`, `ZM`) after a geometry keyword, unless one is `glued`
-    /// to it.
-    fn dimension(&mut self, glued: bool) {
-        if !glued && !self.eat_word("ZM") && !self.eat_word("Z") {
-            self.eat_word("M");
+    /// to it; returns the tag skipped.
+    fn dimension(&mut self, glued: bool) -> Option<&'static str> {
+        if glued {
+            return None;
         }
+        ["ZM", "Z", "M"].into_iter().find(|&tag| self.eat_word(tag))
     }
 
     /// Skips the rest of a geometry of another type `name` (after its keyword): its dimension
@@ -506,6 +522,7 @@ impl<'a> Parser<'a> {
         self.expect(Tok::Open, what)?;
         self.dimensions = None;
         self.vertices = 0;
+        self.ordinates = Vec::new();
         let mut rings = Vec::new();
         loop {
             let ring = self.ring()?;
@@ -518,7 +535,12 @@ impl<'a> Parser<'a> {
                 break;
             }
         }
-        Ok(RawPolygon { rings })
+        let dims = self
+            .dimensions
+            .and_then(|count| super::Dims::of(count, self.measured));
+        let values = std::mem::take(&mut self.ordinates);
+        let ordinates = dims.map(|dims| super::Ordinates { dims, values });
+        Ok(RawPolygon { rings, ordinates })
     }
 
     /// Reads `( point, ... )`, without its repeated closing point.
@@ -543,7 +565,7 @@ impl<'a> Parser<'a> {
         let mut ring = Vec::new();
         loop {
             let token = self.peek();
-            let point = self.point()?;
+            let (point, extra) = self.point()?;
             self.count_vertex(token, &mut ring, &point);
             // Memory refused: the polygon is dropped and read on without storing its points.
             if self.no_room.is_none() && ring.try_reserve(1).is_err() {
@@ -556,6 +578,13 @@ impl<'a> Parser<'a> {
             }
             if self.no_room.is_none() {
                 ring.push(point);
+                if self.ordinates.try_reserve(2).is_err() {
+                    ring = Vec::new();
+                    self.no_room =
+                        Some(self.error(token, "not enough memory to hold this polygon"));
+                } else {
+                    self.ordinates.extend(extra.into_iter().flatten());
+                }
             }
             if !self.list_continues()? {
                 break;
@@ -564,6 +593,10 @@ impl<'a> Parser<'a> {
         // The closing vertex is not a vertex of the polygon: not counted against the cap.
         if drop_closing_vertex(&mut ring) {
             self.vertices -= 1;
+            // The closing point's z and m go with it.
+            let extra = self.dimensions.unwrap_or(2).saturating_sub(2);
+            self.ordinates
+                .truncate(self.ordinates.len().saturating_sub(extra));
         }
         Ok(ring)
     }
@@ -595,8 +628,8 @@ impl<'a> Parser<'a> {
         }
     }
 
-    /// Reads `x y [z [m]]`, keeping `x` and `y`.
-    fn point(&mut self) -> Result<[Decimal; 2], ParseError> {
+    /// Reads `x y [z [m]]`: `x` and `y`, and the values after them (`None` for NaN).
+    fn point(&mut self) -> Result<([Decimal; 2], [Option<super::Ordinate>; 2]), ParseError> {
         let first_token = self.next();
         let Tok::Word(x) = first_token.kind else {
             return Err(self.expected("a number", first_token));
@@ -611,19 +644,21 @@ impl<'a> Parser<'a> {
         };
         let y = parse_number(y).map_err(|m| self.error(second, m))?;
         let mut count = 2;
-        for _ in 0..2 {
+        let mut extras = [None, None];
+        for slot in &mut extras {
             let token = self.peek();
             let Tok::Word(extra) = token.kind else { break };
             self.next();
             count += 1;
-            // z and m are ignored, but must be numbers; NaN is a common "no value" for them.
-            if !matches!(
-                Decimal::parse(extra),
-                Ok(_) | Err(NumberError::NonFinite(_))
-            ) {
-                let message = parse_number(extra).err().unwrap_or_default();
-                return Err(self.error(token, message));
-            }
+            // z and m must be numbers; NaN is a common "no value" for them.
+            *slot = Some(match Decimal::parse(extra) {
+                Ok(d) => Some(d),
+                Err(NumberError::NonFinite(_)) if extra.eq_ignore_ascii_case("nan") => None,
+                Err(_) => {
+                    let message = parse_number(extra).err().unwrap_or_default();
+                    return Err(self.error(token, message));
+                }
+            });
         }
         let token = self.peek();
         if let Tok::Word(w) = token.kind {
@@ -648,7 +683,7 @@ impl<'a> Parser<'a> {
             }
             Some(_) => {}
         }
-        Ok([x, y])
+        Ok(([x, y], extras))
     }
 
     /// Whether a further geometry (its type keyword, or `SRID=`) starts on a later line than the
@@ -697,6 +732,7 @@ impl<'a> Parser<'a> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::io::read::{Dims, Ordinates};
     use crate::test_support::{as_f64, d, ring};
     use std::str::FromStr;
 
@@ -803,18 +839,49 @@ mod tests {
     }
 
     #[test]
-    fn ignores_z_and_m_values() {
+    fn keeps_z_and_m_values_beside_x_and_y() {
         let plain = read("POLYGON ((0 0, 1 0, 0 1))").unwrap();
-        for text in [
-            "POLYGON Z ((0 0 5, 1 0 6, 0 1 7))",
-            "POLYGON M ((0 0 5, 1 0 6, 0 1 7, 0 0 8))",
-            "POLYGON ZM ((0 0 5 1, 1 0 6 2, 0 1 7 NaN))",
-            "POLYGONZ ((0 0 5, 1 0 6, 0 1 7))",
-            "polygonzm((0 0 5 1,1 0 6 2,0 1 7 3))",
-            "POLYGON ((0 0 1, 1 0 2, 0 1 3))",
-        ] {
-            assert_eq!(read(text).unwrap(), plain, "{text}");
+        assert_eq!(plain[0].ordinates, None);
+        let n = |v: &str| (v != "NaN").then(|| d(v));
+        // The polygon, its dimensions, and its vertices' values (the closing point's go with it;
+        // without a tag, 3 numbers are x y z, as GEOS and PostGIS read them).
+        let cases: [(&str, Dims, &str); 8] = [
+            ("POLYGON Z ((0 0 5, 1 0 6, 0 1 7))", Dims::Z, "5 6 7"),
+            ("POLYGON M ((0 0 5, 1 0 6, 0 1 7, 0 0 8))", Dims::M, "5 6 7"),
+            (
+                "POLYGON ZM ((0 0 5 1, 1 0 6 2, 0 1 7 NaN))",
+                Dims::Zm,
+                "5 1 6 2 7 NaN",
+            ),
+            ("POLYGONZ ((0 0 5, 1 0 6, 0 1 7))", Dims::Z, "5 6 7"),
+            ("POLYGONM ((0 0 5, 1 0 6, 0 1 7))", Dims::M, "5 6 7"),
+            (
+                "polygonzm((0 0 5 1,1 0 6 2,0 1 7 3))",
+                Dims::Zm,
+                "5 1 6 2 7 3",
+            ),
+            ("POLYGON ((0 0 1, 1 0 2.50, 0 1 -3))", Dims::Z, "1 2.5 -3"),
+            (
+                "GEOMETRYCOLLECTION M (POLYGON Z ((0 0 1, 1 0 2, 0 1 3)))",
+                Dims::Z,
+                "1 2 3",
+            ),
+        ];
+        for (text, dims, values) in cases {
+            let read = read(text).unwrap();
+            assert_eq!(read[0].rings, plain[0].rings, "{text}");
+            let expected = Ordinates {
+                dims,
+                values: values.split(' ').map(n).collect(),
+            };
+            assert_eq!(read[0].ordinates.as_ref(), Some(&expected), "{text}");
         }
+        assert_eq!(
+            read("POLYGON Z ((0 0 1, 1 0 inf, 0 1 3))")
+                .unwrap_err()
+                .to_string(),
+            "line 1, column 24: `inf` is not a finite number"
+        );
         // Points of one polygon with different numbers of coordinates: most likely a missing
         // comma, which would otherwise swallow a point silently. Each polygon decides alone.
         assert_eq!(

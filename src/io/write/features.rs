@@ -296,6 +296,7 @@ pub fn render(outcome: &Outcome) -> Option<String> {
         return None;
     };
     let mut out = String::new();
+    let ordinates = outcome.ordinates.as_deref();
     let ring = |out: &mut String, vertices: &mut dyn Iterator<Item = usize>| {
         if !out.is_empty() {
             out.push_str(", ");
@@ -304,7 +305,11 @@ pub fn render(outcome: &Outcome) -> Option<String> {
         let mut first = None;
         for v in vertices {
             let [x, y] = polygon.coordinates(v);
-            let text = format!("[{x}, {y}]");
+            // The input vertex's Z (GeoJSON positions hold no M: the JSON output has it).
+            let z = ordinates
+                .map(|o| o.geojson(polygon.id(v)))
+                .unwrap_or_default();
+            let text = format!("[{x}, {y}{z}]");
             if first.is_some() {
                 out.push_str(", ");
             }

@@ -68,9 +68,13 @@ impl<W: Write> GeoJsonWriter<W> {
         };
         let t = &solved.triangulation;
         let source = json(&outcome.source);
+        let ordinates = outcome.ordinates.as_deref();
         let coordinate = |i: usize| {
             let [x, y] = polygon.coordinates(i);
-            format!("[{}, {}]", x, y)
+            let z = ordinates
+                .map(|o| o.geojson(polygon.id(i)))
+                .unwrap_or_default();
+            format!("[{x}, {y}{z}]")
         };
         if let Some(p) = &solved.pseudo {
             for (k, face) in p.faces.iter().enumerate() {

@@ -167,6 +167,9 @@ pub fn render(outcome: &Outcome) -> Option<String> {
         }
         None => crate::with_polygon!(polygon, q => triangle_fields(&mut out, q, t)),
     }
+    if let Some(ordinates) = &outcome.ordinates {
+        ordinate_fields(&mut out, ordinates);
+    }
     let mut out = out.0;
     out.push_str("      \"warnings\": ");
     if outcome.warnings.is_empty() {
@@ -284,6 +287,32 @@ fn triangle_fields<P: Coord>(
     out.0.push_str(", \"upper\": ");
     push_number(&mut out.0, upper);
     out.0.push_str("},\n");
+}
+
+/// `vertices_z` and `vertices_m` (as the input has them): each input vertex's Z and M value, by
+/// input vertex number (as `triangles` numbers them), decimals as written (`null` for NaN).
+fn ordinate_fields(out: &mut Fields, ordinates: &crate::io::read::Ordinates) {
+    let k = ordinates.dims.count();
+    // Every k-th value from `first`: Z is first, M last.
+    let list = |first: usize| {
+        let items: Vec<String> = ordinates
+            .values
+            .iter()
+            .skip(first)
+            .step_by(k)
+            .map(|value| match value {
+                Some(d) => d.to_string(),
+                None => "null".to_string(),
+            })
+            .collect();
+        format!("[{}]", items.join(","))
+    };
+    if ordinates.dims.has_z() {
+        out.text("vertices_z", &list(0));
+    }
+    if ordinates.dims.has_m() {
+        out.text("vertices_m", &list(k - 1));
+    }
 }
 
 /// `touches` (how many touches join rings into boundary walks), right after `holes`, for a

@@ -979,7 +979,11 @@ mod tests {
             .iter()
             .map(|&(x, y)| [d(&map(x)), d(&map(y))])
             .collect()];
-        let (p, _) = Polygon::from_raw(&RawPolygon { rings }).unwrap();
+        let (p, _) = Polygon::from_raw(&RawPolygon {
+            rings,
+            ordinates: None,
+        })
+        .unwrap();
         assert!((0..12).all(|i| p.id(i) == i), "stored in input order");
         p
     }

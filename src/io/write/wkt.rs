@@ -104,28 +104,42 @@ pub fn is_feature(outcome: &Outcome) -> bool {
 }
 
 /// The `GEOMETRYCOLLECTION` of a record's rendered outcomes: every triangle of every solved
-/// outcome, in order, or `GEOMETRYCOLLECTION EMPTY` when none was solved.
+/// outcome, in order, or `GEOMETRYCOLLECTION EMPTY` when none was solved. With the input's
+/// Z and M values, `GEOMETRYCOLLECTION Z (POLYGON Z ((x y z, ...)), ...)` (`M`, `ZM`): the
+/// positions of one feature, or one polygon, all have the same dimensions.
 pub fn collection(record: &[Rendered]) -> String {
     let members: Vec<&str> = record
         .iter()
         .filter_map(|(_, rendered)| rendered.as_deref().filter(|m| !m.is_empty()))
         .collect();
+    let tag = record
+        .iter()
+        .find_map(|(outcome, rendered)| rendered.as_ref().and(outcome.ordinates.as_ref()))
+        .map(|o| format!(" {}", o.dims.tag()))
+        .unwrap_or_default();
     if members.is_empty() {
         "GEOMETRYCOLLECTION EMPTY".to_string()
     } else {
-        format!("GEOMETRYCOLLECTION ({})", members.join(", "))
+        format!("GEOMETRYCOLLECTION{tag} ({})", members.join(", "))
     }
 }
 
 /// The `GEOMETRYCOLLECTION` members of a solved outcome: its triangles (or pseudotriangles) as
-/// `POLYGON ((x y, x y, x y, x y))`, comma-separated; `None` for a failed outcome.
+/// `POLYGON ((x y, x y, x y, x y))`, comma-separated (`POLYGON Z ((x y z, ...))` with the
+/// input vertices' Z, likewise `M`, `ZM`); `None` for a failed outcome.
 pub fn render(outcome: &Outcome) -> Option<String> {
     let (Ok(solved), Some(polygon)) = (&outcome.result, &outcome.polygon) else {
         return None;
     };
+    let ordinates = outcome.ordinates.as_deref();
     let coordinate = |i: usize| {
         let [x, y] = polygon.coordinates(i);
-        format!("{x} {y}")
+        let extra = ordinates.map(|o| o.wkt(polygon.id(i))).unwrap_or_default();
+        format!("{x} {y}{extra}")
+    };
+    let keyword = match ordinates {
+        Some(o) => format!("POLYGON {}", o.dims.tag()),
+        None => "POLYGON".to_string(),
     };
     let rings: Vec<String> = match &solved.pseudo {
         // A pseudotriangulation: its faces, each a closed counter-clockwise ring.
@@ -135,7 +149,7 @@ pub fn render(outcome: &Outcome) -> Option<String> {
             .map(|face| {
                 let ring: Vec<String> = face.cycle.iter().map(|&v| coordinate(v)).collect();
                 let first = ring.first().cloned().unwrap_or_default();
-                format!("POLYGON (({}, {first}))", ring.join(", "))
+                format!("{keyword} (({}, {first}))", ring.join(", "))
             })
             .collect(),
         None => solved
@@ -144,7 +158,7 @@ pub fn render(outcome: &Outcome) -> Option<String> {
             .iter()
             .map(|tri| {
                 let [a, b, c] = tri.map(coordinate);
-                format!("POLYGON (({a}, {b}, {c}, {a}))")
+                format!("{keyword} (({a}, {b}, {c}, {a}))")
             })
             .collect(),
     };
