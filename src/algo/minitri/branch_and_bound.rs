@@ -505,10 +505,15 @@ impl Search {
     /// bound is within [`FAILED_LITERAL_MARGIN`] of pruning.
     fn bound(&mut self, cand: &Bits, enough: usize, thorough: bool) -> usize {
         let cliques = self.cover(cand);
+        let deadline = self.deadline;
         let sc = &mut self.scratch;
         sc.spent.clear();
         sc.spent.resize(cliques, false);
         let mut bound = cliques;
+        // The failed-literal test goes round the small cliques once after the last set found
+        // (so it tests each at most once per set found), and stops at the deadline.
+        let mut at = 0;
+        let mut tested = 0;
         'lower: while bound > enough {
             if let Some(d) = sc.propagate(&self.adjacent, cand, cliques, None) {
                 sc.set.clear();
@@ -520,8 +525,13 @@ impl Search {
             if !thorough && bound > enough + FAILED_LITERAL_MARGIN {
                 break;
             }
-            for i in 0..sc.small.len() {
-                let c = sc.small[i];
+            while tested < sc.small.len() {
+                if tested % 64 == 63 && deadline.is_some_and(|d| Instant::now() >= d) {
+                    break 'lower;
+                }
+                let c = sc.small[at];
+                at = (at + 1) % sc.small.len();
+                tested += 1;
                 if sc.spent[c] {
                     continue;
                 }
@@ -541,6 +551,7 @@ impl Search {
                 if every {
                     sc.spend();
                     bound -= 1;
+                    tested = 0;
                     continue 'lower;
                 }
             }
