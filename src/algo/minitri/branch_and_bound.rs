@@ -258,8 +258,29 @@ fn solve_component(
     let greedy_set: Vec<usize> = greedy(adjacent, component).into_iter().map(local).collect();
     let start = local_search::improve(&adjacent_local, &greedy_set, 4 * n, deadline);
     if n > SEARCH_LIMIT {
-        let set = start.iter().map(|&v| component[v]).collect();
-        let bound = n - greedy_matching(adjacent, component);
+        // Not searched: the local search's set, and the better of two bounds: a greedy
+        // matching's (each matched edge a clique) and the propagated clique cover's, its work
+        // bounded by a multiple of the graph's size (and the deadline).
+        let set: Vec<usize> = start.iter().map(|&v| component[v]).collect();
+        let mut scratch = Scratch::default();
+        let cliques = scratch.cover_by_lists(&adjacent_local);
+        let edges: usize = adjacent_local.iter().map(Vec::len).sum();
+        let budget = LARGE_BOUND_WORK * (n + edges);
+        let all = Bits::full(n);
+        let covered = scratch.lower(
+            &adjacent_local,
+            &all,
+            cliques,
+            0,
+            Effort {
+                thorough: true,
+                deadline,
+                budget,
+            },
+        );
+        let bound = covered
+            .min(n - greedy_matching(adjacent, component))
+            .max(set.len());
         return (set, bound, Some(Stopped::SearchSize));
     }
     let mut closed = Vec::with_capacity(n); // closed neighbourhoods N[v]
@@ -363,13 +384,171 @@ struct Scratch {
     in_set: Vec<bool>,
     /// Cliques met by one [`Scratch::collect`].
     seen: Vec<bool>,
+    /// Adjacency entries and members looked at by the propagations of one [`Scratch::lower`].
+    work: usize,
 }
+
+/// How hard [`Scratch::lower`] tries: failed literals at any bound (`thorough`) or only near
+/// pruning; until `deadline`; within `budget` adjacency entries and members looked at.
+#[derive(Clone, Copy)]
+struct Effort {
+    thorough: bool,
+    deadline: Option<Instant>,
+    budget: usize,
+}
+
+/// The work allowed to the bound of a component too large to search, as a multiple of its
+/// vertices and adjacency entries (about that many propagations over the whole graph).
+const LARGE_BOUND_WORK: usize = 32;
 
 /// How close to pruning a node's bound must come for the failed-literal test
 /// ([`Search::bound`]).
 const FAILED_LITERAL_MARGIN: usize = 2;
 
 impl Scratch {
+    /// Closes the cover being built in the buffers: lists its cliques of one member and of two
+    /// or three; the number of cliques.
+    fn finish_cover(&mut self) -> usize {
+        self.starts.push(self.members.len());
+        let cliques = self.starts.len() - 1;
+        self.units.clear();
+        self.small.clear();
+        for c in 0..cliques {
+            match self.starts[c + 1] - self.starts[c] {
+                1 => self.units.push(c),
+                2 | 3 => self.small.push(c),
+                _ => {}
+            }
+        }
+        cliques
+    }
+
+    /// A greedy clique cover of the whole graph from its adjacency lists alone (for components
+    /// too large for bit-set rows): each clique grows from the first vertex left, taking its
+    /// neighbours left that are adjacent to every member so far. O(sum of degrees x clique
+    /// size).
+    fn cover_by_lists(&mut self, adjacent: &[Vec<usize>]) -> usize {
+        let n = adjacent.len();
+        const FREE: usize = usize::MAX;
+        self.members.clear();
+        self.starts.clear();
+        self.clique_of.clear();
+        self.clique_of.resize(n, FREE);
+        self.gone.resize(n, 0);
+        let mut near = vec![0u32; n]; // how many members of the growing clique each one touches
+        let mut candidates = Vec::new();
+        for v in 0..n {
+            if self.clique_of[v] != FREE {
+                continue;
+            }
+            let c = self.starts.len();
+            self.starts.push(self.members.len());
+            self.clique_of[v] = c;
+            self.members.push(v);
+            candidates.clear();
+            candidates.extend(
+                adjacent[v]
+                    .iter()
+                    .copied()
+                    .filter(|&u| self.clique_of[u] == FREE),
+            );
+            let mut size = 1;
+            for &u in &adjacent[v] {
+                near[u] = 1;
+            }
+            for &u in &candidates {
+                if near[u] as usize == size && self.clique_of[u] == FREE {
+                    self.clique_of[u] = c;
+                    self.members.push(u);
+                    size += 1;
+                    for &w in &adjacent[u] {
+                        near[w] += 1;
+                    }
+                }
+            }
+            for &m in &self.members[self.starts[c]..] {
+                near[m] = 0;
+                for &w in &adjacent[m] {
+                    near[w] = 0;
+                }
+            }
+        }
+        self.finish_cover()
+    }
+
+    /// [`Search::bound`] from the cover already made (`cliques` of them in the buffers).
+    fn lower(
+        &mut self,
+        adjacent: &[Vec<usize>],
+        cand: &Bits,
+        cliques: usize,
+        enough: usize,
+        effort: Effort,
+    ) -> usize {
+        let Effort {
+            thorough,
+            deadline,
+            budget,
+        } = effort;
+        self.work = 0;
+        self.spent.clear();
+        self.spent.resize(cliques, false);
+        let mut bound = cliques;
+        // The failed-literal test goes round the small cliques once after the last set found
+        // (so it tests each at most once per set found), and stops at the deadline.
+        let mut at = 0;
+        let mut tested = 0;
+        'lower: while bound > enough {
+            if self.work > budget || deadline.is_some_and(|d| Instant::now() >= d) {
+                break;
+            }
+            if let Some(d) = self.propagate(adjacent, cand, cliques, None) {
+                self.set.clear();
+                self.collect(d);
+                self.spend();
+                bound -= 1;
+                continue;
+            }
+            if !thorough && bound > enough + FAILED_LITERAL_MARGIN {
+                break;
+            }
+            while tested < self.small.len() {
+                if self.work > budget
+                    || tested % 64 == 63 && deadline.is_some_and(|d| Instant::now() >= d)
+                {
+                    break 'lower;
+                }
+                let c = self.small[at];
+                at = (at + 1) % self.small.len();
+                tested += 1;
+                if self.spent[c] {
+                    continue;
+                }
+                self.set.clear();
+                self.set.push(c);
+                let mut every = true;
+                for k in self.starts[c]..self.starts[c + 1] {
+                    let v = self.members[k];
+                    match self.propagate(adjacent, cand, cliques, Some((c, v))) {
+                        Some(d) => self.collect(d),
+                        None => {
+                            every = false;
+                            break;
+                        }
+                    }
+                }
+                if every {
+                    self.spend();
+                    bound -= 1;
+                    tested = 0;
+                    continue 'lower;
+                }
+            }
+            break;
+        }
+        bound
+    }
+
     /// One unit propagation over the cover's `cliques` (those not spent), from its cliques of
     /// one member and, if `forced` (clique, member), from that member alone in its clique: the
     /// clique it empties, if any (`because` then records what emptied what).
@@ -408,12 +587,14 @@ impl Scratch {
                 continue;
             }
             self.done[c] = true;
+            self.work += self.starts[c + 1] - self.starts[c];
             let Some(&v) = self.members[self.starts[c]..self.starts[c + 1]]
                 .iter()
                 .find(|&&v| self.gone[v] != self.pass)
             else {
                 continue;
             };
+            self.work += adjacent[v].len();
             for &u in &adjacent[v] {
                 if !cand.contains(u) || self.gone[u] == self.pass {
                     continue;
@@ -506,58 +687,18 @@ impl Search {
     fn bound(&mut self, cand: &Bits, enough: usize, thorough: bool) -> usize {
         let cliques = self.cover(cand);
         let deadline = self.deadline;
-        let sc = &mut self.scratch;
-        sc.spent.clear();
-        sc.spent.resize(cliques, false);
-        let mut bound = cliques;
-        // The failed-literal test goes round the small cliques once after the last set found
-        // (so it tests each at most once per set found), and stops at the deadline.
-        let mut at = 0;
-        let mut tested = 0;
-        'lower: while bound > enough {
-            if let Some(d) = sc.propagate(&self.adjacent, cand, cliques, None) {
-                sc.set.clear();
-                sc.collect(d);
-                sc.spend();
-                bound -= 1;
-                continue;
-            }
-            if !thorough && bound > enough + FAILED_LITERAL_MARGIN {
-                break;
-            }
-            while tested < sc.small.len() {
-                if tested % 64 == 63 && deadline.is_some_and(|d| Instant::now() >= d) {
-                    break 'lower;
-                }
-                let c = sc.small[at];
-                at = (at + 1) % sc.small.len();
-                tested += 1;
-                if sc.spent[c] {
-                    continue;
-                }
-                sc.set.clear();
-                sc.set.push(c);
-                let mut every = true;
-                for k in sc.starts[c]..sc.starts[c + 1] {
-                    let v = sc.members[k];
-                    match sc.propagate(&self.adjacent, cand, cliques, Some((c, v))) {
-                        Some(d) => sc.collect(d),
-                        None => {
-                            every = false;
-                            break;
-                        }
-                    }
-                }
-                if every {
-                    sc.spend();
-                    bound -= 1;
-                    tested = 0;
-                    continue 'lower;
-                }
-            }
-            break;
-        }
-        bound
+        let adjacent = &self.adjacent;
+        self.scratch.lower(
+            adjacent,
+            cand,
+            cliques,
+            enough,
+            Effort {
+                thorough,
+                deadline,
+                budget: usize::MAX,
+            },
+        )
     }
 
     /// A greedy clique cover of `cand` into the scratch buffers: the number of cliques.
@@ -583,18 +724,7 @@ impl Search {
                 sc.members.push(u);
             }
         }
-        sc.starts.push(sc.members.len());
-        let cliques = sc.starts.len() - 1;
-        sc.units.clear();
-        sc.small.clear();
-        for c in 0..cliques {
-            match sc.starts[c + 1] - sc.starts[c] {
-                1 => sc.units.push(c),
-                2 | 3 => sc.small.push(c),
-                _ => {}
-            }
-        }
-        cliques
+        sc.finish_cover()
     }
 
     /// Shrinks `cand` by the reductions that keep some maximum independent set (Akiba & Iwata,
@@ -873,6 +1003,52 @@ mod tests {
             let all: Vec<usize> = (0..n).collect();
             let (_, bound, _) = solve_component(&g, &all, Some(Instant::now()));
             assert!(bound >= exact, "case {case}: bound {bound} below {exact}");
+            // The bound of components too large to search, from adjacency lists alone.
+            let mut scratch = Scratch::default();
+            let cliques = scratch.cover_by_lists(&g);
+            let lists = scratch.lower(
+                &g,
+                &Bits::full(n),
+                cliques,
+                0,
+                Effort {
+                    thorough: true,
+                    deadline: None,
+                    budget: usize::MAX,
+                },
+            );
+            assert!(
+                lists >= exact,
+                "case {case}: list bound {lists} below {exact}"
+            );
+        }
+    }
+
+    /// A component too large to search (a chain of triangles, each joined to the next by an
+    /// edge) keeps the local search's set, and the propagated cover's bound (one per triangle)
+    /// where a matching's would allow half as many again.
+    #[test]
+    fn a_component_too_large_to_search_gets_the_cover_bound() {
+        let m = SEARCH_LIMIT / 3 + 10;
+        let mut g = vec![Vec::new(); 3 * m];
+        let join = |g: &mut Vec<Vec<usize>>, a: usize, b: usize| {
+            g[a].push(b);
+            g[b].push(a);
+        };
+        for i in 0..m {
+            join(&mut g, 3 * i, 3 * i + 1);
+            join(&mut g, 3 * i + 1, 3 * i + 2);
+            join(&mut g, 3 * i, 3 * i + 2);
+            if i + 1 < m {
+                join(&mut g, 3 * i + 2, 3 * i + 3);
+            }
+        }
+        let found = maximum_independent_set(&g, None);
+        assert_eq!(found.stopped, Some(Stopped::SearchSize));
+        assert_eq!(found.upper_bound, m);
+        assert_eq!(found.set.len(), m);
+        for &v in &found.set {
+            assert!(g[v].iter().all(|u| found.set.binary_search(u).is_err()));
         }
     }
 
