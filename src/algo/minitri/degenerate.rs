@@ -35,6 +35,7 @@
 //! shooting) is not implemented.
 
 use super::expansion::{double_cone, Mesh, Workspace};
+use super::ray_shooting::{Lazy, RayPolicy};
 use crate::algo::chords::visible_from;
 use crate::geom::kernel::Coord;
 use crate::geom::kernel::{cmp_angle, cross};
@@ -195,6 +196,27 @@ pub fn minimally_degenerate_over_until<P: Coord>(
     plain: Vec<[usize; 3]>,
     deadline: Option<std::time::Instant>,
 ) -> (Vec<Degenerate>, Vec<[usize; 3]>, usize) {
+    minimally_degenerate_over_with(polygon, plain, deadline, RayPolicy::Hybrid)
+}
+
+/// All minimally degenerate triangles as [`minimally_degenerate`] finds them, with rays walked
+/// or shot as `policy` says ([`super::ray_shooting`]): the same set whatever the policy (the
+/// tests compare them), only the time differs.
+pub fn minimally_degenerate_with<P: Coord>(
+    polygon: &Polygon<P>,
+    policy: RayPolicy,
+) -> Vec<Degenerate> {
+    let plain = crate::algo::plain_polygon_for_walking(polygon);
+    minimally_degenerate_over_with(polygon, plain, None, policy).0
+}
+
+/// [`minimally_degenerate_over_until`] with rays walked or shot as `policy` says.
+fn minimally_degenerate_over_with<P: Coord>(
+    polygon: &Polygon<P>,
+    plain: Vec<[usize; 3]>,
+    deadline: Option<std::time::Instant>,
+    policy: RayPolicy,
+) -> (Vec<Degenerate>, Vec<[usize; 3]>, usize) {
     let mut mesh = Mesh::new(polygon, plain);
     if polygon.len() >= FLIPS_FROM {
         mesh.flip_towards_delaunay(polygon, FLIPS_PER_VERTEX * polygon.len());
@@ -205,15 +227,33 @@ pub fn minimally_degenerate_over_until<P: Coord>(
     // rayon pool) by blocks of vertices, concatenated in vertex order, so the result does not
     // depend on the number of threads. A polygon of one block skips the pool altogether.
     let n = polygon.len();
+    // Long rays are shot over heavy paths once walking them has cost enough (built at most once).
+    let shooter = Lazy::new(n, policy);
     if n <= PARALLEL_BLOCK {
-        let found = search_range(polygon, &mesh, 0..n, deadline, &cut_short, &unexamined);
+        let found = search_range(
+            polygon,
+            &mesh,
+            &shooter,
+            0..n,
+            deadline,
+            &cut_short,
+            &unexamined,
+        );
         return (found, mesh.into_triangles(), unexamined.into_inner());
     }
     let blocks: Vec<Vec<Degenerate>> = (0..n.div_ceil(PARALLEL_BLOCK))
         .into_par_iter()
         .map(|block| {
             let range = block * PARALLEL_BLOCK..((block + 1) * PARALLEL_BLOCK).min(n);
-            search_range(polygon, &mesh, range, deadline, &cut_short, &unexamined)
+            search_range(
+                polygon,
+                &mesh,
+                &shooter,
+                range,
+                deadline,
+                &cut_short,
+                &unexamined,
+            )
         })
         .collect();
     (
@@ -229,6 +269,7 @@ pub fn minimally_degenerate_over_until<P: Coord>(
 fn search_range<P: Coord>(
     polygon: &Polygon<P>,
     mesh: &Mesh,
+    shooter: &Lazy,
     range: std::ops::Range<usize>,
     deadline: Option<std::time::Instant>,
     cut_short: &std::sync::atomic::AtomicBool,
@@ -262,7 +303,7 @@ fn search_range<P: Coord>(
                     break;
                 }
             }
-            search_from(polygon, mesh, b, work, &mut out);
+            search_from(polygon, mesh, shooter, b, work, &mut out);
         }
         out
     })
@@ -277,6 +318,7 @@ const PARALLEL_BLOCK: usize = 256;
 fn search_from<P: Coord>(
     polygon: &Polygon<P>,
     mesh: &Mesh,
+    shooter: &Lazy,
     b: usize,
     work: &mut Workspace<P>,
     out: &mut Vec<Degenerate>,
@@ -284,7 +326,7 @@ fn search_from<P: Coord>(
     if !reflex_or_flat(polygon, b, out) {
         return;
     }
-    let (first, second) = double_cone(polygon, mesh, b, work);
+    let (first, second) = double_cone(polygon, mesh, b, work, shooter);
     // Opposite directions are at the same place of the two cones (both sorted by angle).
     let (mut i, mut j) = (0, 0);
     while i < first.len() && j < second.len() {

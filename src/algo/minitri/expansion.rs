@@ -40,6 +40,7 @@
 //! the length of the polygon, Theta(n^2) visible pairs), about 10 states per vertex on the mesh
 //! swept along the corridor (`crate::algo::plain_polygon_for_walking`).
 
+use super::ray_shooting::{Lazy, RAY_WALK};
 use crate::algo::mesh::twin_halves;
 use crate::geom::kernel::Coord;
 use crate::geom::kernel::{cross, incircle_approx, Dir};
@@ -174,25 +175,34 @@ impl Mesh {
 
     /// The vertex a half-edge starts from.
     #[inline]
-    fn tail(&self, h: usize) -> usize {
+    pub(super) fn tail(&self, h: usize) -> usize {
         self.triangles[h / 3][h % 3]
     }
 
     /// The vertex a half-edge ends at.
     #[inline]
-    fn head(&self, h: usize) -> usize {
+    pub(super) fn head(&self, h: usize) -> usize {
         self.triangles[h / 3][(h + 1) % 3]
     }
 
     /// The vertex of a half-edge's triangle opposite it.
     #[inline]
-    fn apex(&self, h: usize) -> usize {
+    pub(super) fn apex(&self, h: usize) -> usize {
         self.triangles[h / 3][(h + 2) % 3]
+    }
+
+    /// The same side seen from the neighbouring triangle (`None` on the polygon boundary).
+    #[inline]
+    pub(super) fn twin_of(&self, h: usize) -> Option<usize> {
+        match self.twin[h] {
+            NONE => None,
+            g => Some(g as usize),
+        }
     }
 
     /// The next half-edge of the same triangle (counter-clockwise).
     #[inline]
-    fn next_in_triangle(h: usize) -> usize {
+    pub(super) fn next_in_triangle(h: usize) -> usize {
         if h % 3 == 2 {
             h - 2
         } else {
@@ -344,6 +354,7 @@ pub fn double_cone<'w, P: Coord>(
     mesh: &Mesh,
     b: usize,
     work: &'w mut Workspace<P>,
+    shooter: &Lazy,
 ) -> (&'w [Sighting<P>], &'w [Sighting<P>]) {
     let c = polygon.point(b);
     let dir = |v: usize| Dir::between(c, polygon.point(v));
@@ -464,6 +475,22 @@ pub fn double_cone<'w, P: Coord>(
         if !pending_in(parts, opposite) && !found_in(seen, opposite) {
             continue;
         }
+        // Above the other cone's highest wide part, only isolated directions matter: those of
+        // vertices found there and of zero-width parts still pending (vertices to record, or
+        // rays). The part then becomes a few rays, and a range below that wide part's upper end.
+        if let Step::Enter(g) = step {
+            if let Some((range, rays)) = isolated(parts, seen, cone) {
+                let stack = &mut stacks[side];
+                if let Some(range) = range {
+                    stack.push((Step::Enter(g), range));
+                }
+                // The rays by increasing angle, the highest on top.
+                for &d in rays.0.iter().rev().flatten() {
+                    stack.push((Step::Enter(g), Cone::at(d)));
+                }
+                continue;
+            }
+        }
         // Above the other cone's top part, only the directions of vertices found there matter:
         // if there are none, the part narrows down to that top part's upper bound (a bound not
         // defined by a vertex, strictly inside the part).
@@ -495,7 +522,21 @@ pub fn double_cone<'w, P: Coord>(
         // the highest part of both cones and the other cone is unchanged, so the tests above
         // would give the same answer again (no push and pop for each triangle crossed).
         let stack = &mut stacks[side];
+        // A ray (zero-width part) walks RAY_WALK triangles at a time; past that, once long
+        // walks have cost enough in all, it is shot over heavy paths instead (`ray_shooting`).
+        let ray = cone.lo.cross(cone.hi) == 0;
+        let (mut walked, mut ask) = (0, shooter.first_ask());
         loop {
+            if ray && walked >= ask {
+                ask = walked.saturating_add(RAY_WALK);
+                if let Some(shooter) = shooter.get(polygon, mesh, RAY_WALK) {
+                    if let Some(x) = shooter.shoot(polygon, mesh, b, cone.lo, g) {
+                        stack.push((Step::Found(x), Cone::at(dir(x))));
+                    }
+                    break;
+                }
+            }
+            walked += 1;
             // The entered triangle has the half-edge g = w -> u; its apex x follows u.
             let x = mesh.apex(g);
             let k_ux = Mesh::next_in_triangle(g);
@@ -544,6 +585,114 @@ pub fn double_cone<'w, P: Coord>(
     }
     let [first, second] = found;
     (first, second)
+}
+
+/// The most rays a part is cut into by [`isolated`]; with more, it is walked whole.
+const MAX_RAYS: usize = 4;
+
+/// Cuts a wide part `cone` of one cone (just popped: it lies above or at everything pending in
+/// the other cone, and below or at everything found there) down to the directions that still
+/// matter, when above the other cone's highest wide pending part (`parts`, sorted by angle, the
+/// highest last) only isolated directions are left: zero-width parts there (vertices waiting to
+/// be recorded, or rays), and a vertex found at the part's upper end (`seen`). Returns the part
+/// of `cone` at or below that wide part's upper end (if any), and the rays, by decreasing angle,
+/// strictly above it; `None` when nothing is cut off (the part is walked whole), or when more
+/// than [`MAX_RAYS`] rays would be needed.
+///
+/// Exact: the directions are those of vertices, compared by cross product signs. A ray walked
+/// from the part's entry side finds the nearest vertex exactly on it, as the part would have
+/// (a zero-width part is a part like any other for the walk); the walk of the rest of the part
+/// is skipped, and with it the triangles crossed only by directions whose opposite holds no
+/// vertex (on a comb whose gap floors lie on one line, every reflex vertex walked half the
+/// polygon's base before).
+fn isolated<P: Coord>(
+    parts: &[(Step, Cone<P>)],
+    seen: &[Sighting<P>],
+    cone: Cone<P>,
+) -> Option<(Option<Cone<P>>, Rays<P>)> {
+    if cone.lo.cross(cone.hi) <= 0 {
+        return None; // already a ray
+    }
+    let mut rays = Rays::default();
+    // A vertex found exactly opposite the upper end (found vertices lie above or at the part).
+    if cone.hi_in && found_in(seen, Cone::at(cone.hi.reversed())) && !rays.add(cone.hi) {
+        return None;
+    }
+    // The zero-width parts on top of the other stack, from the top down.
+    let mut k = parts.len();
+    while k > 0 {
+        let part = parts[k - 1].1;
+        if part.lo.cross(part.hi) != 0 {
+            break;
+        }
+        k -= 1;
+        let d = part.lo.reversed();
+        if cone.holds(d) {
+            if !rays.add(d) {
+                return None;
+            }
+        } else if cone.lo.cross(d) <= 0 {
+            // At or below the part's lower end: so is everything further down.
+            return Some((None, rays));
+        }
+    }
+    // The highest wide part left: below its upper end the part stays a range.
+    let Some(wide) = k.checked_sub(1).map(|k| parts[k].1) else {
+        return Some((None, rays));
+    };
+    let f = wide.hi.reversed();
+    if f.cross(cone.hi) <= 0 {
+        return None; // the wide part reaches the part's upper end: nothing to cut
+    }
+    let low = cone.lo.cross(f);
+    if low < 0 {
+        return Some((None, rays)); // the wide part lies wholly below the part
+    }
+    if low == 0 {
+        // The two meet at the part's lower end only: a ray there if both include it.
+        if cone.lo_in && wide.hi_in && !rays.add(cone.lo) {
+            return None;
+        }
+        return Some((None, rays));
+    }
+    // Rays at or below the range's upper end are in the range already.
+    for r in rays.0.iter_mut() {
+        if r.is_some_and(|d| f.cross(d) <= 0) {
+            *r = None;
+        }
+    }
+    let range = Cone {
+        hi: f,
+        hi_in: true,
+        ..cone
+    };
+    Some((Some(range), rays))
+}
+
+/// Up to [`MAX_RAYS`] directions by decreasing angle ([`isolated`]).
+struct Rays<P: Coord>([Option<Dir<P>>; MAX_RAYS]);
+
+impl<P: Coord> Default for Rays<P> {
+    fn default() -> Self {
+        Rays([None; MAX_RAYS])
+    }
+}
+
+impl<P: Coord> Rays<P> {
+    /// Adds `d`, at or below those already in (a repeat of the last is skipped); false if full.
+    fn add(&mut self, d: Dir<P>) -> bool {
+        let count = self.0.iter().take_while(|r| r.is_some()).count();
+        if count > 0 && self.0[count - 1].is_some_and(|r| r.cross(d) == 0) {
+            return true;
+        }
+        match self.0.get_mut(count) {
+            Some(slot) => {
+                *slot = Some(d);
+                true
+            }
+            None => false,
+        }
+    }
 }
 
 /// Whether a part of `parts` (disjoint, sorted by angle, the highest last) shares a direction

@@ -26,6 +26,7 @@ pub mod ladder;
 pub mod lists;
 pub mod mis;
 pub mod partition;
+pub mod ray_shooting;
 pub mod small;
 mod staircase;
 
