@@ -211,7 +211,7 @@ pub fn minimally_degenerate_with<P: Coord>(
 }
 
 /// [`minimally_degenerate_over_until`] with rays walked or shot as `policy` says.
-fn minimally_degenerate_over_with<P: Coord>(
+pub fn minimally_degenerate_over_with<P: Coord>(
     polygon: &Polygon<P>,
     plain: Vec<[usize; 3]>,
     deadline: Option<std::time::Instant>,

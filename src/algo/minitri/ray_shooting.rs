@@ -167,14 +167,14 @@ impl Shooter {
         }
         // The heavy child of each triangle, as the half-edge leading to it.
         let mut heavy = vec![u32::MAX; triangles];
-        for t in 0..triangles {
+        for (t, heavy) in heavy.iter_mut().enumerate() {
             let mut best = 0;
             for k in 0..3 {
                 if let Some(g) = mesh.twin_of(3 * t + k) {
                     let s = g / 3;
                     if parent[s] == t as u32 && size[s] > best {
                         best = size[s];
-                        heavy[t] = (3 * t + k) as u32;
+                        *heavy = (3 * t + k) as u32;
                     }
                 }
             }

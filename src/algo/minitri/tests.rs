@@ -1243,3 +1243,56 @@ fn step_one_is_the_same_whatever_the_ray_policy() {
         assert!(assert_policies_agree(&wide, &format!("wide {k}")) > 0);
     }
 }
+
+/// On the earcut fixtures of up to 3000 vertices (holes and touching rings among them: the
+/// walks' mesh, with a copy of each touch point; both kernels), step 1 finds the same triangles,
+/// kinds included, whatever the ray policy, and the sweep agrees.
+#[test]
+fn step_one_on_the_earcut_fixtures_is_the_same_whatever_the_ray_policy() {
+    use crate::geom::polygon::AnyPolygon;
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/earcut");
+    let (mut fast, mut wide) = (0, 0);
+    for entry in std::fs::read_dir(dir).unwrap().flatten() {
+        let path = entry.path();
+        if path.extension().is_none_or(|e| e != "json") || path.ends_with("expected.json") {
+            continue;
+        }
+        let text = std::fs::read_to_string(&path).unwrap();
+        let Ok(raws) = crate::io::read::geojson::read(&text) else {
+            continue;
+        };
+        for raw in raws {
+            match AnyPolygon::from_raw(&raw) {
+                Ok((AnyPolygon::Fast(p), _)) if p.len() <= 3000 => {
+                    fast += 1;
+                    over_the_walks_mesh_policies_agree(&p, &path.display().to_string());
+                }
+                Ok((AnyPolygon::Wide(p), _)) if p.len() <= 3000 => {
+                    wide += 1;
+                    over_the_walks_mesh_policies_agree(&p, &path.display().to_string());
+                }
+                _ => {}
+            }
+        }
+    }
+    // (All of them fit the fast kernel today; a wide one would be checked the same way.)
+    assert!(fast > 25, "{fast} fast, {wide} wide");
+}
+
+/// [`assert_policies_agree`] over the mesh the pipeline walks (the walks' one for touching
+/// rings).
+fn over_the_walks_mesh_policies_agree<P: Coord>(p: &Polygon<P>, what: &str) {
+    use super::degenerate::{minimally_degenerate_by_sweep, minimally_degenerate_over_with};
+    use super::ray_shooting::RayPolicy;
+    let swept = with_kinds(&minimally_degenerate_by_sweep(p));
+    for policy in [RayPolicy::WalkOnly, RayPolicy::ShootOnly, RayPolicy::Hybrid] {
+        let plain = if p.touches() > 0 {
+            crate::algo::walks::plain(p).unwrap()
+        } else {
+            crate::algo::plain_polygon_for_walking(p)
+        };
+        let (found, _, unexamined) = minimally_degenerate_over_with(p, plain, None, policy);
+        assert_eq!(unexamined, 0);
+        assert_eq!(with_kinds(&found), swept, "{what} {policy:?}");
+    }
+}
