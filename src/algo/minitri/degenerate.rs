@@ -27,12 +27,17 @@
 //!
 //! Complexity: a plain triangulation (O(n log n), swept along x when the bounding box is more
 //! than twice as wide as tall: `crate::algo::plain_polygon_for_walking`), at most `4 n` edge
-//! flips to fatten it, then work proportional to the triangles met inside each reflex vertex's double cone where both
-//! cones may still see a vertex: O(n^2) in the worst case (every reflex vertex seeing most of the
-//! polygon in two opposite directions), near-linear on typical polygons (on random star polygons
-//! about 40-50 triangle visits per vertex from 10^4 to 10^6 vertices; see [`super::expansion`]
-//! and `docs/benchmarks.md`). The paper's O(n log^2 n) worst case (polygon cutting and ray
-//! shooting) is not implemented.
+//! flips to fatten it, then work proportional to the triangles met inside each reflex vertex's
+//! double cone where both cones may still see a vertex, near-linear on typical polygons (on
+//! random star polygons about 40-50 triangle visits per vertex from 10^4 to 10^6 vertices; see
+//! [`super::expansion`] and `docs/benchmarks.md`). Parts of a cone left with only isolated
+//! directions to match become rays, and a ray that walks far is shot instead
+//! ([`super::ray_shooting`]: O(log^3 n) per ray after an O(n log n) build, made only once long
+//! rays have cost about as much), so combs and sliver staircases, quadratic for the walk alone,
+//! are near-linear. The parts that stay wide are still walked: O(n^2) in the worst case (every
+//! reflex vertex seeing most of the polygon in two opposite wide ranges). The paper's
+//! O(n log^2 n) worst case (polygon cutting and shortest-path trees feeding the ray shooting) is
+//! not implemented; `deadline` bounds the step instead.
 
 use super::expansion::{double_cone, Mesh, Workspace};
 use super::ray_shooting::{Lazy, RayPolicy};
