@@ -5,16 +5,13 @@
 //!
 //! Inputs: a ring grown point by point on the grid 0..=16 (each point inserted after the vertex
 //! its third byte names, kept only when the polygon stays valid, as in the `core` target), up to
-//! `MAX` vertices; or, by the first byte, a comb (teeth `w` wide and `h` high over gap floors on
-//! one line) or a sliver staircase over a long edge, the polygons whose long rays the shooter
-//! is for, of up to a few hundred vertices.
+//! `MAX` vertices; or, by the first byte, a comb of teeth of given widths, gaps and heights over
+//! gap floors on one line, or a staircase of given steps over one long edge (a sliver): the
+//! polygons whose long rays the shooter is for, of up to a few hundred vertices.
 #![no_main]
 use arbitrary::Arbitrary;
 use libfuzzer_sys::fuzz_target;
-use minitri::algo::minitri::degenerate::{
-    minimally_degenerate_by_sweep, minimally_degenerate_with, Degenerate,
-};
-use minitri::algo::minitri::ray_shooting::RayPolicy;
+use minitri::algo::minitri::degenerate::check_ray_policies;
 use minitri::io::read::RawPolygon;
 use minitri::Polygon;
 use minitri_fuzz::ring;
@@ -29,8 +26,10 @@ struct Vertex(u8, u8, u8);
 #[derive(Arbitrary, Debug)]
 enum Input {
     Grown(Vec<Vertex>),
-    Comb { teeth: u8, w: u8, h: u8 },
-    Sliver { steps: u8, w: u8, h: u8 },
+    /// Per tooth: its width, the gap after it, its height (each taken modulo 4, plus 1).
+    Comb(Vec<(u8, u8, u8)>),
+    /// Per step: how far left and how far up (each taken modulo 3, plus 1).
+    Staircase(Vec<(u8, u8)>),
 }
 
 fn valid(points: &[(i64, i64)]) -> Option<Polygon> {
@@ -38,15 +37,6 @@ fn valid(points: &[(i64, i64)]) -> Option<Polygon> {
         rings: vec![ring(points)],
     };
     Polygon::from_raw_all_errors(&raw).ok().map(|(p, _)| p)
-}
-
-fn keys(found: &[Degenerate]) -> Vec<(usize, usize, usize, u8)> {
-    let mut keys: Vec<_> = found
-        .iter()
-        .map(|m| (m.a, m.b, m.c, m.kind as u8))
-        .collect();
-    keys.sort_unstable();
-    keys
 }
 
 fuzz_target!(|input: Input| {
@@ -69,31 +59,36 @@ fuzz_target!(|input: Input| {
             }
             ring
         }
-        Input::Comb { teeth, w, h } => {
-            let (teeth, w, h) = (
-                1 + i64::from(teeth % 80),
-                1 + i64::from(w % 3),
-                1 + i64::from(h % 9),
-            );
-            let mut ring = vec![(0, 0), (2 * w * teeth, 0)];
-            for k in (0..teeth).rev() {
-                let x = 2 * w * k;
-                ring.extend([(x + 2 * w, 1), (x + w, 1), (x + w, 1 + h), (x, 1 + h)]);
+        Input::Comb(teeth) => {
+            // Teeth from right to left above the floor line y = 1, over a base down to y = 0.
+            let size = |v: u8| 1 + i64::from(v % 4);
+            let teeth = &teeth[..teeth.len().min(100)];
+            let width: i64 = teeth.iter().map(|&(w, g, _)| size(w) + size(g)).sum();
+            let mut ring = vec![(0, 0), (width, 0)];
+            let mut x = width;
+            for &(w, g, h) in teeth {
+                ring.extend([
+                    (x, 1 + size(h)),
+                    (x - size(w), 1 + size(h)),
+                    (x - size(w), 1),
+                ]);
+                x -= size(w) + size(g);
+                ring.push((x, 1));
             }
             ring
         }
-        Input::Sliver { steps, w, h } => {
-            let (steps, w, h) = (
-                2 + i64::from(steps % 150),
-                1 + i64::from(w % 3),
-                1 + i64::from(h % 3),
-            );
-            let mut ring = vec![(0, 0), (steps * w, 1)];
-            for k in 1..steps {
-                ring.extend([
-                    ((steps - k) * w, 1 + (k - 1) * h),
-                    ((steps - k) * w, 1 + k * h),
-                ]);
+        Input::Staircase(steps) => {
+            // From (width, 1) left and up, step by step, over the edge from the origin.
+            let size = |v: u8| 1 + i64::from(v % 3);
+            let steps = &steps[..steps.len().min(150)];
+            let width: i64 = steps.iter().map(|&(l, _)| size(l)).sum();
+            let (mut x, mut y) = (width, 1);
+            let mut ring = vec![(0, 0), (x, y)];
+            for &(left, up) in steps.iter().take(steps.len().saturating_sub(1)) {
+                x -= size(left);
+                ring.push((x, y));
+                y += size(up);
+                ring.push((x, y));
             }
             ring
         }
@@ -101,9 +96,7 @@ fuzz_target!(|input: Input| {
     let Some(polygon) = valid(&points) else {
         return;
     };
-    let swept = keys(&minimally_degenerate_by_sweep(&polygon));
-    for policy in [RayPolicy::WalkOnly, RayPolicy::ShootOnly, RayPolicy::Hybrid] {
-        let found = keys(&minimally_degenerate_with(&polygon, policy));
-        assert_eq!(found, swept, "{policy:?} on {points:?}");
+    if let Err(e) = check_ray_policies(&polygon) {
+        panic!("{e} on {points:?}");
     }
 });

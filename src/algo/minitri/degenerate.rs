@@ -215,6 +215,32 @@ pub fn minimally_degenerate_with<P: Coord>(
     minimally_degenerate_over_with(polygon, plain, None, policy).0
 }
 
+/// The oracle of the tests and the `step_one` fuzz target: the set of minimally degenerate
+/// triangles, kinds included, found with each [`RayPolicy`] must equal the angular sweep's
+/// ([`minimally_degenerate_by_sweep`]). Returns how many there are, or the first policy that
+/// disagrees with both sets.
+///
+/// # Errors
+/// A description of the disagreement (a bug).
+pub fn check_ray_policies<P: Coord>(polygon: &Polygon<P>) -> Result<usize, String> {
+    let sorted = |found: &[Degenerate]| {
+        let mut keys: Vec<_> = found
+            .iter()
+            .map(|m| (m.a, m.b, m.c, m.kind as u8))
+            .collect();
+        keys.sort_unstable();
+        keys
+    };
+    let swept = sorted(&minimally_degenerate_by_sweep(polygon));
+    for policy in [RayPolicy::WalkOnly, RayPolicy::ShootOnly, RayPolicy::Hybrid] {
+        let found = sorted(&minimally_degenerate_with(polygon, policy));
+        if found != swept {
+            return Err(format!("{policy:?}: {found:?}, the sweep: {swept:?}"));
+        }
+    }
+    Ok(swept.len())
+}
+
 /// [`minimally_degenerate_over_until`] with rays walked or shot as `policy` says.
 pub fn minimally_degenerate_over_with<P: Coord>(
     polygon: &Polygon<P>,

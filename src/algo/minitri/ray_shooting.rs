@@ -260,9 +260,9 @@ impl Shooter {
                 // Down: the first link from i + 1 on not crossed with its tail right and head left.
                 let end = path.links.len();
                 let fail = [
-                    path.tails.first_at_or_left(polygon, pb, d, i + 1, end),
+                    path.tails.at_or_left(polygon, pb, d, i + 1..end, true),
                     path.heads
-                        .first_at_or_left(polygon, pb, d.reversed(), i + 1, end),
+                        .at_or_left(polygon, pb, d.reversed(), i + 1..end, true),
                 ]
                 .into_iter()
                 .flatten()
@@ -282,8 +282,9 @@ impl Shooter {
                 // Up across h_m: the last link below m not crossed with its tail left and head
                 // right (going up, the twin's tail is h's head).
                 let fail = [
-                    path.tails.last_at_or_left(polygon, pb, d.reversed(), 0, m),
-                    path.heads.last_at_or_left(polygon, pb, d, 0, m),
+                    path.tails
+                        .at_or_left(polygon, pb, d.reversed(), 0..m, false),
+                    path.heads.at_or_left(polygon, pb, d, 0..m, false),
                 ]
                 .into_iter()
                 .flatten()
@@ -425,35 +426,30 @@ impl HullTree {
         false
     }
 
-    /// The first index in `lo..hi` whose point lies on the line through `b` with direction `d`
-    /// or left of it.
-    fn first_at_or_left<P: Coord>(
+    /// The first (`forward`) or the last index in `range` whose point lies on the line through
+    /// `b` with direction `d` or left of it.
+    fn at_or_left<P: Coord>(
         &self,
         polygon: &Polygon<P>,
         b: P,
         d: Dir<P>,
-        lo: usize,
-        hi: usize,
+        range: std::ops::Range<usize>,
+        forward: bool,
     ) -> Option<usize> {
-        if lo >= hi {
+        if range.is_empty() {
             return None;
         }
-        self.find(polygon, b, d, 1, 0, self.len, lo, hi, true)
-    }
-
-    /// The last index in `lo..hi` whose point lies on the line or left of it.
-    fn last_at_or_left<P: Coord>(
-        &self,
-        polygon: &Polygon<P>,
-        b: P,
-        d: Dir<P>,
-        lo: usize,
-        hi: usize,
-    ) -> Option<usize> {
-        if lo >= hi {
-            return None;
-        }
-        self.find(polygon, b, d, 1, 0, self.len, lo, hi, false)
+        self.find(
+            polygon,
+            b,
+            d,
+            1,
+            0,
+            self.len,
+            range.start,
+            range.end,
+            forward,
+        )
     }
 
     /// The first (`forward`) or last index of `lo..hi` within node `node` (over `from..to`)

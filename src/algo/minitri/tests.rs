@@ -1175,27 +1175,10 @@ fn lattice_stairs_ring(steps: usize, seed: u64) -> Vec<(i64, i64)> {
     ring
 }
 
-/// The minimally degenerate triangles with their kinds, sorted, for comparing sets.
-fn with_kinds(found: &[Degenerate]) -> Vec<(usize, usize, usize, u8)> {
-    let mut keys: Vec<_> = found
-        .iter()
-        .map(|m| (m.a, m.b, m.c, m.kind as u8))
-        .collect();
-    keys.sort_unstable();
-    keys
-}
-
 /// Step 1 finds the same set of triangles, kinds included, with every ray walked, every ray
 /// shot over heavy paths (`ray_shooting`), the default hybrid, and by the angular sweep.
 fn assert_policies_agree<P: Coord>(p: &Polygon<P>, what: &str) -> usize {
-    use super::degenerate::{minimally_degenerate_by_sweep, minimally_degenerate_with};
-    use super::ray_shooting::RayPolicy;
-    let swept = with_kinds(&minimally_degenerate_by_sweep(p));
-    for policy in [RayPolicy::WalkOnly, RayPolicy::ShootOnly, RayPolicy::Hybrid] {
-        let found = with_kinds(&minimally_degenerate_with(p, policy));
-        assert_eq!(found, swept, "{what}, {policy:?}");
-    }
-    swept.len()
+    super::degenerate::check_ray_policies(p).unwrap_or_else(|e| panic!("{what}: {e}"))
 }
 
 #[test]
@@ -1284,15 +1267,18 @@ fn step_one_on_the_earcut_fixtures_is_the_same_whatever_the_ray_policy() {
 fn over_the_walks_mesh_policies_agree<P: Coord>(p: &Polygon<P>, what: &str) {
     use super::degenerate::{minimally_degenerate_by_sweep, minimally_degenerate_over_with};
     use super::ray_shooting::RayPolicy;
-    let swept = with_kinds(&minimally_degenerate_by_sweep(p));
+    let key = |m: &Degenerate| (m.a, m.b, m.c);
+    let mut swept = minimally_degenerate_by_sweep(p);
+    swept.sort_by_key(key);
     for policy in [RayPolicy::WalkOnly, RayPolicy::ShootOnly, RayPolicy::Hybrid] {
         let plain = if p.touches() > 0 {
             crate::algo::walks::plain(p).unwrap()
         } else {
             crate::algo::plain_polygon_for_walking(p)
         };
-        let (found, _, unexamined) = minimally_degenerate_over_with(p, plain, None, policy);
+        let (mut found, _, unexamined) = minimally_degenerate_over_with(p, plain, None, policy);
         assert_eq!(unexamined, 0);
-        assert_eq!(with_kinds(&found), swept, "{what} {policy:?}");
+        found.sort_by_key(key);
+        assert_eq!(found, swept, "{what} {policy:?}");
     }
 }
