@@ -457,6 +457,10 @@ pub fn double_cone<'w, P: Coord>(
             before = after;
         }
     }
+    // Triangles walked from b so far: parts are cut into rays only past `isolate_after`
+    // (ISOLATE_AFTER in the default hybrid).
+    let mut crossed: usize = 0;
+    let isolate_after = shooter.isolate_after();
     loop {
         // Expand the cone whose top part reaches higher (comparing the other cone's directions
         // turned by a half-turn), so that both sweep down together.
@@ -475,18 +479,14 @@ pub fn double_cone<'w, P: Coord>(
         if !pending_in(parts, opposite) && !found_in(seen, opposite) {
             continue;
         }
-        // Above the other cone's highest wide part, only isolated directions matter: those of
-        // vertices found there and of zero-width parts still pending (vertices to record, or
-        // rays). The part then becomes a few rays, and a range below that wide part's upper end.
-        if let Step::Enter(g) = step {
-            if let Some((range, rays)) = isolated(parts, seen, cone) {
-                let stack = &mut stacks[side];
-                if let Some(range) = range {
-                    stack.push((Step::Enter(g), range));
-                }
+        // Once the walk from b has crossed `isolate_after` triangles: where the other cone holds
+        // only isolated directions opposite this part (vertices found there, zero-width parts
+        // still pending), and no wide part, the part becomes a few rays.
+        if let (Step::Enter(g), true) = (step, crossed >= isolate_after) {
+            if let Some(rays) = isolated(parts, seen, cone) {
                 // The rays by increasing angle, the highest on top.
                 for &d in rays.0.iter().rev().flatten() {
-                    stack.push((Step::Enter(g), Cone::at(d)));
+                    stacks[side].push((Step::Enter(g), Cone::at(d)));
                 }
                 continue;
             }
@@ -537,6 +537,12 @@ pub fn double_cone<'w, P: Coord>(
                 }
             }
             walked += 1;
+            crossed += 1;
+            if crossed == isolate_after && !ray {
+                // Back to the stack, to be taken again at once and cut into rays if it can.
+                stack.push((Step::Enter(g), cone));
+                break;
+            }
             // The entered triangle has the half-edge g = w -> u; its apex x follows u.
             let x = mesh.apex(g);
             let k_ux = Mesh::next_in_triangle(g);
@@ -587,17 +593,23 @@ pub fn double_cone<'w, P: Coord>(
     (first, second)
 }
 
+/// How many triangles the walk from one vertex crosses before its parts are cut into rays
+/// ([`isolated`]) in the default hybrid ([`super::ray_shooting::RayPolicy`]): typical vertices never get there (random stars walk 40-50 triangles per
+/// vertex), so they keep the plain walk, which is cheaper when cones are short; a vertex of a
+/// comb's floor or a sliver's staircase does, and its remaining parts become a few rays.
+pub const ISOLATE_AFTER: usize = 64;
+
 /// The most rays a part is cut into by [`isolated`]; with more, it is walked whole.
 const MAX_RAYS: usize = 4;
 
 /// Cuts a wide part `cone` of one cone (just popped: it lies above or at everything pending in
-/// the other cone, and below or at everything found there) down to the directions that still
-/// matter, when above the other cone's highest wide pending part (`parts`, sorted by angle, the
-/// highest last) only isolated directions are left: zero-width parts there (vertices waiting to
-/// be recorded, or rays), and a vertex found at the part's upper end (`seen`). Returns the part
-/// of `cone` at or below that wide part's upper end (if any), and the rays, by decreasing angle,
-/// strictly above it; `None` when nothing is cut off (the part is walked whole), or when more
-/// than [`MAX_RAYS`] rays would be needed.
+/// the other cone, and below or at everything found there) into rays, when the other cone has
+/// nothing but isolated directions opposite it: zero-width parts on top of its stack (`parts`,
+/// sorted by angle, the highest last: vertices waiting to be recorded, or rays), a vertex found
+/// at the part's upper end (`seen`), and no wide part overlapping it. Returns the rays, by
+/// decreasing angle; `None` when a wide part overlaps the part (then walking the part costs
+/// less than walking a few rays besides), when more than [`MAX_RAYS`] rays would be needed or
+/// more zero-width parts would have to be looked at.
 ///
 /// Exact: the directions are those of vertices, compared by cross product signs. A ray walked
 /// from the part's entry side finds the nearest vertex exactly on it, as the part would have
@@ -609,7 +621,7 @@ fn isolated<P: Coord>(
     parts: &[(Step, Cone<P>)],
     seen: &[Sighting<P>],
     cone: Cone<P>,
-) -> Option<(Option<Cone<P>>, Rays<P>)> {
+) -> Option<Rays<P>> {
     if cone.lo.cross(cone.hi) <= 0 {
         return None; // already a ray
     }
@@ -618,12 +630,17 @@ fn isolated<P: Coord>(
     if cone.hi_in && found_in(seen, Cone::at(cone.hi.reversed())) && !rays.add(cone.hi) {
         return None;
     }
-    // The zero-width parts on top of the other stack, from the top down.
+    // The zero-width parts on top of the other stack, from the top down: at most MAX_RAYS + 1
+    // looked at, so that each part taken costs O(1) more (a stack topped by many vertices
+    // waiting to be recorded is left to the walk).
     let mut k = parts.len();
     while k > 0 {
         let part = parts[k - 1].1;
         if part.lo.cross(part.hi) != 0 {
             break;
+        }
+        if parts.len() - k > MAX_RAYS {
+            return None;
         }
         k -= 1;
         let d = part.lo.reversed();
@@ -633,12 +650,12 @@ fn isolated<P: Coord>(
             }
         } else if cone.lo.cross(d) <= 0 {
             // At or below the part's lower end: so is everything further down.
-            return Some((None, rays));
+            return Some(rays);
         }
     }
-    // The highest wide part left: below its upper end the part stays a range.
+    // The highest wide part left, if any.
     let Some(wide) = k.checked_sub(1).map(|k| parts[k].1) else {
-        return Some((None, rays));
+        return Some(rays);
     };
     let f = wide.hi.reversed();
     if f.cross(cone.hi) <= 0 {
@@ -646,27 +663,18 @@ fn isolated<P: Coord>(
     }
     let low = cone.lo.cross(f);
     if low < 0 {
-        return Some((None, rays)); // the wide part lies wholly below the part
+        return Some(rays); // the wide part lies wholly below the part
     }
     if low == 0 {
         // The two meet at the part's lower end only: a ray there if both include it.
         if cone.lo_in && wide.hi_in && !rays.add(cone.lo) {
             return None;
         }
-        return Some((None, rays));
+        return Some(rays);
     }
-    // Rays at or below the range's upper end are in the range already.
-    for r in rays.0.iter_mut() {
-        if r.is_some_and(|d| f.cross(d) <= 0) {
-            *r = None;
-        }
-    }
-    let range = Cone {
-        hi: f,
-        hi_in: true,
-        ..cone
-    };
-    Some((Some(range), rays))
+    // A wide part overlapping this one: the walk of the range would stay, and walking a few
+    // rays besides costs more than it saves (measured on random stars and corridors).
+    None
 }
 
 /// Up to [`MAX_RAYS`] directions by decreasing angle ([`isolated`]).

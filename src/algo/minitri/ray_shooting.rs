@@ -37,7 +37,7 @@
 //!    x-------x-------x-------x               x: tails of h_i, right of the ray
 //! ```
 
-use super::expansion::Mesh;
+use super::expansion::{Mesh, ISOLATE_AFTER};
 use crate::geom::kernel::{Coord, Dir};
 use crate::geom::polygon::Polygon;
 use std::sync::atomic::{AtomicUsize, Ordering::Relaxed};
@@ -46,12 +46,14 @@ use std::sync::OnceLock;
 /// When rays are walked and when they are shot ([`Lazy`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum RayPolicy {
-    /// The default hybrid: every ray walks [`RAY_WALK`] triangles; a longer one is shot once
-    /// long walks have crossed [`BUILD_AFTER`] triangles per vertex in all.
+    /// The default hybrid: the walk from a vertex cuts its parts into rays once it has crossed
+    /// [`ISOLATE_AFTER`] triangles; every ray walks [`RAY_WALK`] triangles, and a longer one is
+    /// shot once long walks have crossed [`BUILD_AFTER`] triangles per vertex in all.
     Hybrid,
-    /// Every ray walked to its end (the shooter never built).
+    /// The walk alone (budget unlimited): parts never cut into rays, nothing shot.
     WalkOnly,
-    /// Every ray shot from its first triangle on (the shooter built at the first ray).
+    /// The rays at once (budget 0): parts cut into rays from the start, every ray shot from its
+    /// first triangle on (the shooter built at the first ray).
     ShootOnly,
 }
 
@@ -72,22 +74,30 @@ pub struct Lazy {
     walked: AtomicUsize,
     threshold: usize,
     first_ask: usize,
+    isolate_after: usize,
 }
 
 impl Lazy {
     /// Nothing built yet, for a polygon of `n` vertices.
     pub fn new(n: usize, policy: RayPolicy) -> Lazy {
-        let (threshold, first_ask) = match policy {
-            RayPolicy::Hybrid => (BUILD_AFTER.saturating_mul(n), RAY_WALK),
-            RayPolicy::WalkOnly => (usize::MAX, usize::MAX),
-            RayPolicy::ShootOnly => (0, 0),
+        let (threshold, first_ask, isolate_after) = match policy {
+            RayPolicy::Hybrid => (BUILD_AFTER.saturating_mul(n), RAY_WALK, ISOLATE_AFTER),
+            RayPolicy::WalkOnly => (usize::MAX, usize::MAX, usize::MAX),
+            RayPolicy::ShootOnly => (0, 0, 0),
         };
         Lazy {
             cell: OnceLock::new(),
             walked: AtomicUsize::new(0),
             threshold,
             first_ask,
+            isolate_after,
         }
+    }
+
+    /// After how many triangles walked from one vertex its parts may be cut into rays
+    /// (`usize::MAX`: never).
+    pub fn isolate_after(&self) -> usize {
+        self.isolate_after
     }
 
     /// After how many triangles a ray first asks for the shooter (`usize::MAX`: never).
