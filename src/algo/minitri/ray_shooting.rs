@@ -145,24 +145,30 @@ impl Shooter {
     /// O(n log n) time and memory.
     pub fn new<P: Coord>(polygon: &Polygon<P>, mesh: &Mesh) -> Shooter {
         let triangles = mesh.triangles().len();
-        // The dual tree from triangle 0: parents and a preorder, iteratively.
+        // The dual tree (a spanning tree of the dual graph with holes): parents and a preorder,
+        // iteratively.
         let mut parent = vec![u32::MAX; triangles];
         let mut order = Vec::with_capacity(triangles);
         let mut seen = vec![false; triangles];
         let mut stack = Vec::new();
-        if triangles > 0 {
-            stack.push(0usize);
-            seen[0] = true;
-        }
-        while let Some(t) = stack.pop() {
-            order.push(t);
-            for k in 0..3 {
-                if let Some(g) = mesh.twin_of(3 * t + k) {
-                    let s = g / 3;
-                    if !seen[s] {
-                        seen[s] = true;
-                        parent[s] = t as u32;
-                        stack.push(s);
+        // From every triangle not reached yet (one root for a connected region; a forest
+        // otherwise, so that every triangle is on some heavy path).
+        for root in 0..triangles {
+            if seen[root] {
+                continue;
+            }
+            seen[root] = true;
+            stack.push(root);
+            while let Some(t) = stack.pop() {
+                order.push(t);
+                for k in 0..3 {
+                    if let Some(g) = mesh.twin_of(3 * t + k) {
+                        let s = g / 3;
+                        if !seen[s] {
+                            seen[s] = true;
+                            parent[s] = t as u32;
+                            stack.push(s);
+                        }
                     }
                 }
             }
