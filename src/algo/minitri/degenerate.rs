@@ -27,14 +27,20 @@
 //!
 //! Complexity: a plain triangulation (O(n log n), swept along x when the bounding box is more
 //! than twice as wide as tall: `crate::algo::plain_polygon_for_walking`), at most `4 n` edge
-//! flips to fatten it, then work proportional to the triangles met inside each reflex vertex's double cone where both
-//! cones may still see a vertex: O(n^2) in the worst case (every reflex vertex seeing most of the
-//! polygon in two opposite directions), near-linear on typical polygons (on random star polygons
-//! about 40-50 triangle visits per vertex from 10^4 to 10^6 vertices; see [`super::expansion`]
-//! and `docs/benchmarks.md`). The paper's O(n log^2 n) worst case (polygon cutting and ray
-//! shooting) is not implemented.
+//! flips to fatten it, then work proportional to the triangles met inside each reflex vertex's
+//! double cone where both cones may still see a vertex, near-linear on typical polygons (on
+//! random star polygons about 40-50 triangle visits per vertex from 10^4 to 10^6 vertices; see
+//! [`super::expansion`] and `docs/benchmarks.md`). Parts of a cone left with only isolated
+//! directions to match become rays, and a ray that walks far is shot instead
+//! ([`super::ray_shooting`]: O(log^3 n) per ray after an O(n log n) build, made only once long
+//! rays have cost about as much), so combs and sliver staircases, quadratic for the walk alone,
+//! are near-linear. The parts that stay wide are still walked: O(n^2) in the worst case (every
+//! reflex vertex seeing most of the polygon in two opposite wide ranges). The paper's
+//! O(n log^2 n) worst case (polygon cutting and shortest-path trees feeding the ray shooting) is
+//! not implemented; `deadline` bounds the step instead.
 
 use super::expansion::{double_cone, Mesh, Workspace};
+use super::ray_shooting::{Lazy, RayPolicy};
 use crate::algo::chords::visible_from;
 use crate::geom::kernel::Coord;
 use crate::geom::kernel::{cmp_angle, cross};
@@ -195,6 +201,53 @@ pub fn minimally_degenerate_over_until<P: Coord>(
     plain: Vec<[usize; 3]>,
     deadline: Option<std::time::Instant>,
 ) -> (Vec<Degenerate>, Vec<[usize; 3]>, usize) {
+    minimally_degenerate_over_with(polygon, plain, deadline, RayPolicy::Hybrid)
+}
+
+/// All minimally degenerate triangles as [`minimally_degenerate`] finds them, with rays walked
+/// or shot as `policy` says ([`super::ray_shooting`]): the same set whatever the policy (the
+/// tests compare them), only the time differs.
+pub fn minimally_degenerate_with<P: Coord>(
+    polygon: &Polygon<P>,
+    policy: RayPolicy,
+) -> Vec<Degenerate> {
+    let plain = crate::algo::plain_polygon_for_walking(polygon);
+    minimally_degenerate_over_with(polygon, plain, None, policy).0
+}
+
+/// The oracle of the tests and the `step_one` fuzz target: the set of minimally degenerate
+/// triangles, kinds included, found with each [`RayPolicy`] must equal the angular sweep's
+/// ([`minimally_degenerate_by_sweep`]). Returns how many there are, or the first policy that
+/// disagrees with both sets.
+///
+/// # Errors
+/// A description of the disagreement (a bug).
+pub fn check_ray_policies<P: Coord>(polygon: &Polygon<P>) -> Result<usize, String> {
+    let sorted = |found: &[Degenerate]| {
+        let mut keys: Vec<_> = found
+            .iter()
+            .map(|m| (m.a, m.b, m.c, m.kind as u8))
+            .collect();
+        keys.sort_unstable();
+        keys
+    };
+    let swept = sorted(&minimally_degenerate_by_sweep(polygon));
+    for policy in [RayPolicy::WalkOnly, RayPolicy::ShootOnly, RayPolicy::Hybrid] {
+        let found = sorted(&minimally_degenerate_with(polygon, policy));
+        if found != swept {
+            return Err(format!("{policy:?}: {found:?}, the sweep: {swept:?}"));
+        }
+    }
+    Ok(swept.len())
+}
+
+/// [`minimally_degenerate_over_until`] with rays walked or shot as `policy` says.
+pub fn minimally_degenerate_over_with<P: Coord>(
+    polygon: &Polygon<P>,
+    plain: Vec<[usize; 3]>,
+    deadline: Option<std::time::Instant>,
+    policy: RayPolicy,
+) -> (Vec<Degenerate>, Vec<[usize; 3]>, usize) {
     let mut mesh = Mesh::new(polygon, plain);
     if polygon.len() >= FLIPS_FROM {
         mesh.flip_towards_delaunay(polygon, FLIPS_PER_VERTEX * polygon.len());
@@ -205,15 +258,33 @@ pub fn minimally_degenerate_over_until<P: Coord>(
     // rayon pool) by blocks of vertices, concatenated in vertex order, so the result does not
     // depend on the number of threads. A polygon of one block skips the pool altogether.
     let n = polygon.len();
+    // Long rays are shot over heavy paths once walking them has cost enough (built at most once).
+    let shooter = Lazy::new(n, policy);
     if n <= PARALLEL_BLOCK {
-        let found = search_range(polygon, &mesh, 0..n, deadline, &cut_short, &unexamined);
+        let found = search_range(
+            polygon,
+            &mesh,
+            &shooter,
+            0..n,
+            deadline,
+            &cut_short,
+            &unexamined,
+        );
         return (found, mesh.into_triangles(), unexamined.into_inner());
     }
     let blocks: Vec<Vec<Degenerate>> = (0..n.div_ceil(PARALLEL_BLOCK))
         .into_par_iter()
         .map(|block| {
             let range = block * PARALLEL_BLOCK..((block + 1) * PARALLEL_BLOCK).min(n);
-            search_range(polygon, &mesh, range, deadline, &cut_short, &unexamined)
+            search_range(
+                polygon,
+                &mesh,
+                &shooter,
+                range,
+                deadline,
+                &cut_short,
+                &unexamined,
+            )
         })
         .collect();
     (
@@ -229,6 +300,7 @@ pub fn minimally_degenerate_over_until<P: Coord>(
 fn search_range<P: Coord>(
     polygon: &Polygon<P>,
     mesh: &Mesh,
+    shooter: &Lazy,
     range: std::ops::Range<usize>,
     deadline: Option<std::time::Instant>,
     cut_short: &std::sync::atomic::AtomicBool,
@@ -262,7 +334,7 @@ fn search_range<P: Coord>(
                     break;
                 }
             }
-            search_from(polygon, mesh, b, work, &mut out);
+            search_from(polygon, mesh, shooter, b, work, &mut out);
         }
         out
     })
@@ -277,6 +349,7 @@ const PARALLEL_BLOCK: usize = 256;
 fn search_from<P: Coord>(
     polygon: &Polygon<P>,
     mesh: &Mesh,
+    shooter: &Lazy,
     b: usize,
     work: &mut Workspace<P>,
     out: &mut Vec<Degenerate>,
@@ -284,7 +357,7 @@ fn search_from<P: Coord>(
     if !reflex_or_flat(polygon, b, out) {
         return;
     }
-    let (first, second) = double_cone(polygon, mesh, b, work);
+    let (first, second) = double_cone(polygon, mesh, b, work, shooter);
     // Opposite directions are at the same place of the two cones (both sorted by angle).
     let (mut i, mut j) = (0, 0);
     while i < first.len() && j < second.len() {

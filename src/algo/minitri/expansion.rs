@@ -40,6 +40,7 @@
 //! the length of the polygon, Theta(n^2) visible pairs), about 10 states per vertex on the mesh
 //! swept along the corridor (`crate::algo::plain_polygon_for_walking`).
 
+use super::ray_shooting::{Lazy, RAY_WALK};
 use crate::algo::mesh::twin_halves;
 use crate::geom::kernel::Coord;
 use crate::geom::kernel::{cross, incircle_approx, Dir};
@@ -174,25 +175,34 @@ impl Mesh {
 
     /// The vertex a half-edge starts from.
     #[inline]
-    fn tail(&self, h: usize) -> usize {
+    pub(super) fn tail(&self, h: usize) -> usize {
         self.triangles[h / 3][h % 3]
     }
 
     /// The vertex a half-edge ends at.
     #[inline]
-    fn head(&self, h: usize) -> usize {
+    pub(super) fn head(&self, h: usize) -> usize {
         self.triangles[h / 3][(h + 1) % 3]
     }
 
     /// The vertex of a half-edge's triangle opposite it.
     #[inline]
-    fn apex(&self, h: usize) -> usize {
+    pub(super) fn apex(&self, h: usize) -> usize {
         self.triangles[h / 3][(h + 2) % 3]
+    }
+
+    /// The same side seen from the neighbouring triangle (`None` on the polygon boundary).
+    #[inline]
+    pub(super) fn twin_of(&self, h: usize) -> Option<usize> {
+        match self.twin[h] {
+            NONE => None,
+            g => Some(g as usize),
+        }
     }
 
     /// The next half-edge of the same triangle (counter-clockwise).
     #[inline]
-    fn next_in_triangle(h: usize) -> usize {
+    pub(super) fn next_in_triangle(h: usize) -> usize {
         if h % 3 == 2 {
             h - 2
         } else {
@@ -344,6 +354,7 @@ pub fn double_cone<'w, P: Coord>(
     mesh: &Mesh,
     b: usize,
     work: &'w mut Workspace<P>,
+    shooter: &Lazy,
 ) -> (&'w [Sighting<P>], &'w [Sighting<P>]) {
     let c = polygon.point(b);
     let dir = |v: usize| Dir::between(c, polygon.point(v));
@@ -446,6 +457,10 @@ pub fn double_cone<'w, P: Coord>(
             before = after;
         }
     }
+    // Triangles walked from b so far: parts are cut into rays only past `isolate_after`
+    // (ISOLATE_AFTER in the default hybrid).
+    let mut crossed: usize = 0;
+    let isolate_after = shooter.isolate_after();
     loop {
         // Expand the cone whose top part reaches higher (comparing the other cone's directions
         // turned by a half-turn), so that both sweep down together.
@@ -463,6 +478,18 @@ pub fn double_cone<'w, P: Coord>(
         let (parts, seen) = (&stacks[other], &found[other]);
         if !pending_in(parts, opposite) && !found_in(seen, opposite) {
             continue;
+        }
+        // Once the walk from b has crossed `isolate_after` triangles: where the other cone holds
+        // only isolated directions opposite this part (vertices found there, zero-width parts
+        // still pending), and no wide part, the part becomes a few rays.
+        if let (Step::Enter(g), true) = (step, crossed >= isolate_after) {
+            if let Some(rays) = isolated(parts, seen, cone) {
+                // The rays by increasing angle, the highest on top.
+                for &d in rays.0.iter().rev().flatten() {
+                    stacks[side].push((Step::Enter(g), Cone::at(d)));
+                }
+                continue;
+            }
         }
         // Above the other cone's top part, only the directions of vertices found there matter:
         // if there are none, the part narrows down to that top part's upper bound (a bound not
@@ -495,7 +522,27 @@ pub fn double_cone<'w, P: Coord>(
         // the highest part of both cones and the other cone is unchanged, so the tests above
         // would give the same answer again (no push and pop for each triangle crossed).
         let stack = &mut stacks[side];
+        // A ray (zero-width part) walks RAY_WALK triangles at a time; past that, once long
+        // walks have cost enough in all, it is shot over heavy paths instead (`ray_shooting`).
+        let ray = cone.lo.cross(cone.hi) == 0;
+        let (mut walked, mut ask) = (0, shooter.first_ask());
         loop {
+            if ray && walked >= ask {
+                ask = walked.saturating_add(RAY_WALK);
+                if let Some(shooter) = shooter.get(polygon, mesh, RAY_WALK) {
+                    if let Some(x) = shooter.shoot(polygon, mesh, b, cone.lo, g) {
+                        stack.push((Step::Found(x), Cone::at(dir(x))));
+                    }
+                    break;
+                }
+            }
+            walked += 1;
+            crossed += 1;
+            if crossed == isolate_after && !ray {
+                // Back to the stack, to be taken again at once and cut into rays if it can.
+                stack.push((Step::Enter(g), cone));
+                break;
+            }
             // The entered triangle has the half-edge g = w -> u; its apex x follows u.
             let x = mesh.apex(g);
             let k_ux = Mesh::next_in_triangle(g);
@@ -544,6 +591,116 @@ pub fn double_cone<'w, P: Coord>(
     }
     let [first, second] = found;
     (first, second)
+}
+
+/// How many triangles the walk from one vertex crosses before its parts are cut into rays
+/// ([`isolated`]) in the default hybrid ([`super::ray_shooting::RayPolicy`]): typical vertices never get there (random stars walk 40-50 triangles per
+/// vertex), so they keep the plain walk, which is cheaper when cones are short; a vertex of a
+/// comb's floor or a sliver's staircase does, and its remaining parts become a few rays.
+pub const ISOLATE_AFTER: usize = 64;
+
+/// The most rays a part is cut into by [`isolated`]; with more, it is walked whole.
+const MAX_RAYS: usize = 4;
+
+/// Cuts a wide part `cone` of one cone (just popped: it lies above or at everything pending in
+/// the other cone, and below or at everything found there) into rays, when the other cone has
+/// nothing but isolated directions opposite it: zero-width parts on top of its stack (`parts`,
+/// sorted by angle, the highest last: vertices waiting to be recorded, or rays), a vertex found
+/// at the part's upper end (`seen`), and no wide part overlapping it. Returns the rays, by
+/// decreasing angle; `None` when a wide part overlaps the part (then walking the part costs
+/// less than walking a few rays besides), when more than [`MAX_RAYS`] rays would be needed or
+/// more zero-width parts would have to be looked at.
+///
+/// Exact: the directions are those of vertices, compared by cross product signs. A ray walked
+/// from the part's entry side finds the nearest vertex exactly on it, as the part would have
+/// (a zero-width part is a part like any other for the walk); the walk of the rest of the part
+/// is skipped, and with it the triangles crossed only by directions whose opposite holds no
+/// vertex (on a comb whose gap floors lie on one line, every reflex vertex walked half the
+/// polygon's base before).
+fn isolated<P: Coord>(
+    parts: &[(Step, Cone<P>)],
+    seen: &[Sighting<P>],
+    cone: Cone<P>,
+) -> Option<Rays<P>> {
+    if cone.lo.cross(cone.hi) <= 0 {
+        return None; // already a ray
+    }
+    let mut rays = Rays::default();
+    // A vertex found exactly opposite the upper end (found vertices lie above or at the part).
+    if cone.hi_in && found_in(seen, Cone::at(cone.hi.reversed())) && !rays.add(cone.hi) {
+        return None;
+    }
+    // The zero-width parts on top of the other stack, from the top down: at most MAX_RAYS + 1
+    // looked at, so that each part taken costs O(1) more (a stack topped by many vertices
+    // waiting to be recorded is left to the walk).
+    let mut k = parts.len();
+    while k > 0 {
+        let part = parts[k - 1].1;
+        if part.lo.cross(part.hi) != 0 {
+            break;
+        }
+        if parts.len() - k > MAX_RAYS {
+            return None;
+        }
+        k -= 1;
+        let d = part.lo.reversed();
+        if cone.holds(d) {
+            if !rays.add(d) {
+                return None;
+            }
+        } else if cone.lo.cross(d) <= 0 {
+            // At or below the part's lower end: so is everything further down.
+            return Some(rays);
+        }
+    }
+    // The highest wide part left, if any.
+    let Some(wide) = k.checked_sub(1).map(|k| parts[k].1) else {
+        return Some(rays);
+    };
+    let f = wide.hi.reversed();
+    if f.cross(cone.hi) <= 0 {
+        return None; // the wide part reaches the part's upper end: nothing to cut
+    }
+    let low = cone.lo.cross(f);
+    if low < 0 {
+        return Some(rays); // the wide part lies wholly below the part
+    }
+    if low == 0 {
+        // The two meet at the part's lower end only: a ray there if both include it.
+        if cone.lo_in && wide.hi_in && !rays.add(cone.lo) {
+            return None;
+        }
+        return Some(rays);
+    }
+    // A wide part overlapping this one: the walk of the range would stay, and walking a few
+    // rays besides costs more than it saves (measured on random stars and corridors).
+    None
+}
+
+/// Up to [`MAX_RAYS`] directions by decreasing angle ([`isolated`]).
+struct Rays<P: Coord>([Option<Dir<P>>; MAX_RAYS]);
+
+impl<P: Coord> Default for Rays<P> {
+    fn default() -> Self {
+        Rays([None; MAX_RAYS])
+    }
+}
+
+impl<P: Coord> Rays<P> {
+    /// Adds `d`, at or below those already in (a repeat of the last is skipped); false if full.
+    fn add(&mut self, d: Dir<P>) -> bool {
+        let count = self.0.iter().take_while(|r| r.is_some()).count();
+        if count > 0 && self.0[count - 1].is_some_and(|r| r.cross(d) == 0) {
+            return true;
+        }
+        match self.0.get_mut(count) {
+            Some(slot) => {
+                *slot = Some(d);
+                true
+            }
+            None => false,
+        }
+    }
 }
 
 /// Whether a part of `parts` (disjoint, sorted by angle, the highest last) shares a direction

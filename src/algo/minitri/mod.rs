@@ -27,6 +27,7 @@ pub mod lists;
 pub(crate) mod local_search;
 pub mod mis;
 pub mod partition;
+pub mod ray_shooting;
 pub mod small;
 mod staircase;
 
@@ -51,7 +52,8 @@ pub fn triangulate<P: Coord>(polygon: &Polygon<P>) -> Result<Triangulation, Tria
 /// search); with holes by [`triangulate_general`], searching until `deadline`.
 ///
 /// Without holes `deadline` bounds step 1, the one stage without a worst-case bound below
-/// O(n^2) (a comb whose gap bottoms lie on one line): past it the triangles found so far are
+/// O(n^2) (parts of a reflex vertex's cones that stay wide are walked; combs and slivers, whose
+/// long rays are shot, are near-linear): past it the triangles found so far are
 /// used, and the result is valid but `optimal` only if it meets the lower bound, else with
 /// `lower_bound` and [`Stopped::TimeLimit`]. `None`: no limit, always exact.
 ///

@@ -1136,3 +1136,149 @@ fn the_bound_after_a_cut_short_step_1_holds_for_any_vertices_looked_from() {
     }
     assert!(tight > 100, "{tight}");
 }
+
+/// A sliver staircase: unit steps (scaled by `w` and `h`) from `(steps w, 1)` up to
+/// `(w, steps h)` over the long edge from the origin, as `bench/polygon.py sliver` (with `w = h
+/// = 1` every reflex corner lies on one line, each seeing along it).
+fn sliver_ring(steps: i64, w: i64, h: i64) -> Vec<(i64, i64)> {
+    let mut ring = vec![(0, 0), (steps * w, 1)];
+    for k in 1..steps {
+        ring.extend([
+            ((steps - k) * w, 1 + (k - 1) * h),
+            ((steps - k) * w, 1 + k * h),
+        ]);
+    }
+    ring
+}
+
+/// A corridor one unit wide climbing a random staircase (steps of 1 to 3 units right and up,
+/// the upper wall the lower one moved by (-1, 1)), every lattice point of its walls a vertex,
+/// as `bench/polygon.py stairs-lattice`.
+fn lattice_stairs_ring(steps: usize, seed: u64) -> Vec<(i64, i64)> {
+    let mut rnd = crate::test_support::xorshift(seed | 1);
+    let mut lower = vec![(0i64, 0i64)];
+    for _ in 0..steps {
+        let (x, y) = lower[lower.len() - 1];
+        let run = 1 + rnd(3);
+        lower.extend((1..=run).map(|i| (x + i, y)));
+        let rise = 1 + rnd(3);
+        lower.extend((1..=rise).map(|i| (x + run, y + i)));
+    }
+    let upper: Vec<(i64, i64)> = lower.iter().rev().map(|&(x, y)| (x - 1, y + 1)).collect();
+    // The ends joined by unit edges: the last lower point to the first upper one is one
+    // diagonal step; make it two lattice edges through the corner (x, y + 1).
+    let (x, y) = lower[lower.len() - 1];
+    let mut ring = lower;
+    ring.push((x, y + 1));
+    ring.extend(upper.into_iter().skip(1));
+    ring.push((-1, 0));
+    ring
+}
+
+/// Step 1 finds the same set of triangles, kinds included, with every ray walked, every ray
+/// shot over heavy paths (`ray_shooting`), the default hybrid, and by the angular sweep.
+fn assert_policies_agree<P: Coord>(p: &Polygon<P>, what: &str) -> usize {
+    super::degenerate::check_ray_policies(p).unwrap_or_else(|e| panic!("{what}: {e}"))
+}
+
+#[test]
+fn step_one_is_the_same_whatever_the_ray_policy() {
+    let mut found = 0;
+    for teeth in [1, 2, 3, 5, 17, 60] {
+        for (w, h) in [(1, 9), (2, 1), (3, 7)] {
+            let ring = crate::test_support::comb(teeth, w, h);
+            found += assert_policies_agree(&polygon(&[&ring]), &format!("comb {teeth} {w} {h}"));
+        }
+    }
+    for steps in [2, 3, 4, 9, 40, 150] {
+        for (w, h) in [(1, 1), (2, 1), (1, 3)] {
+            let ring = sliver_ring(steps, w, h);
+            found += assert_policies_agree(&polygon(&[&ring]), &format!("sliver {steps} {w} {h}"));
+        }
+    }
+    for seed in 1..=12u64 {
+        let ring = lattice_stairs_ring(3 + 4 * seed as usize, seed);
+        found += assert_policies_agree(&polygon(&[&ring]), &format!("stairs {seed}"));
+        let ring = snake_ring(1 + seed as usize % 3, 4 + 3 * seed as usize, seed, 0);
+        found += assert_policies_agree(&polygon(&[&ring]), &format!("snake {seed}"));
+        found += assert_policies_agree(&bars(5 + 7 * seed as usize, seed), &format!("bars {seed}"));
+    }
+    let mut rnd = crate::test_support::xorshift(0x35_5eed_0000_0001u64);
+    for k in 0..600 {
+        if let Some(p) = star_or_grid(&mut rnd, k) {
+            found += assert_policies_agree(&p, &format!("random {k}"));
+        }
+    }
+    assert!(found > 5000, "{found} triangles");
+    // The same on the wide kernel (its own orientation tests).
+    let rings = [
+        crate::test_support::comb(30, 1, 9),
+        sliver_ring(80, 1, 1),
+        sliver_ring(50, 3, 2),
+        lattice_stairs_ring(25, 3),
+        snake_ring(2, 12, 5, 0),
+    ];
+    for (k, ring) in rings.iter().enumerate() {
+        let raw = crate::test_support::raw(&[ring]);
+        let Ok((wide, _)) = Polygon::from_raw_wide(&raw) else {
+            panic!("ring {k} is valid");
+        };
+        assert!(assert_policies_agree(&wide, &format!("wide {k}")) > 0);
+    }
+}
+
+/// On the earcut fixtures of up to 3000 vertices (holes and touching rings among them: the
+/// walks' mesh, with a copy of each touch point; both kernels), step 1 finds the same triangles,
+/// kinds included, whatever the ray policy, and the sweep agrees.
+#[test]
+fn step_one_on_the_earcut_fixtures_is_the_same_whatever_the_ray_policy() {
+    use crate::geom::polygon::AnyPolygon;
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/earcut");
+    let (mut fast, mut wide) = (0, 0);
+    for entry in std::fs::read_dir(dir).unwrap().flatten() {
+        let path = entry.path();
+        if path.extension().is_none_or(|e| e != "json") || path.ends_with("expected.json") {
+            continue;
+        }
+        let text = std::fs::read_to_string(&path).unwrap();
+        let Ok(raws) = crate::io::read::geojson::read(&text) else {
+            continue;
+        };
+        for raw in raws {
+            match AnyPolygon::from_raw(&raw) {
+                Ok((AnyPolygon::Fast(p), _)) if p.len() <= 3000 => {
+                    fast += 1;
+                    over_the_walks_mesh_policies_agree(&p, &path.display().to_string());
+                }
+                Ok((AnyPolygon::Wide(p), _)) if p.len() <= 3000 => {
+                    wide += 1;
+                    over_the_walks_mesh_policies_agree(&p, &path.display().to_string());
+                }
+                _ => {}
+            }
+        }
+    }
+    // (All of them fit the fast kernel today; a wide one would be checked the same way.)
+    assert!(fast > 25, "{fast} fast, {wide} wide");
+}
+
+/// [`assert_policies_agree`] over the mesh the pipeline walks (the walks' one for touching
+/// rings).
+fn over_the_walks_mesh_policies_agree<P: Coord>(p: &Polygon<P>, what: &str) {
+    use super::degenerate::{minimally_degenerate_by_sweep, minimally_degenerate_over_with};
+    use super::ray_shooting::RayPolicy;
+    let key = |m: &Degenerate| (m.a, m.b, m.c);
+    let mut swept = minimally_degenerate_by_sweep(p);
+    swept.sort_by_key(key);
+    for policy in [RayPolicy::WalkOnly, RayPolicy::ShootOnly, RayPolicy::Hybrid] {
+        let plain = if p.touches() > 0 {
+            crate::algo::walks::plain(p).unwrap()
+        } else {
+            crate::algo::plain_polygon_for_walking(p)
+        };
+        let (mut found, _, unexamined) = minimally_degenerate_over_with(p, plain, None, policy);
+        assert_eq!(unexamined, 0);
+        found.sort_by_key(key);
+        assert_eq!(found, swept, "{what} {policy:?}");
+    }
+}

@@ -1,0 +1,588 @@
+//! Ray shooting from a vertex over a triangulation, in O(log^3 n) per ray after O(n log n)
+//! preprocessing, with orientation tests only: for the rays of step 1 of MINITRI (Chen & Chang
+//! 1990, §3, Step 1, which shoots rays from reflex vertices along directions given by two
+//! vertices; the paper uses Chazelle and Guibas' procedure, this is a simpler one with a
+//! logarithmic factor more).
+//!
+//! A ray from vertex `b` in direction `d` inside a triangulated polygon crosses a sequence of
+//! triangles, a path in the dual tree (degree at most 3), until it meets a vertex exactly (the
+//! nearest vertex in that direction: the answer) or leaves through a polygon edge (no vertex).
+//! Walking it triangle by triangle costs the length of that path, which is linear on long thin
+//! pieces (the base of a comb, the interior of a sliver staircase: every triangle there is a
+//! long sliver). Instead, the dual tree is cut into heavy paths (each triangle continues the
+//! path of its child with the largest subtree; any path in the tree meets O(log n) heavy paths).
+//! Along one heavy path `T_0, T_1, ..`, the diagonal `h_i` between `T_i` and `T_(i+1)` is
+//! crossed by the ray, going down, exactly when its tail lies strictly right of the ray's line
+//! and its head strictly left; and a ray crossing `h_i, .., h_(j-1)` in turn runs inside those
+//! triangles (a line crosses a triangle's boundary twice: once in, once out), so it reaches
+//! `T_j`. The first `j` where this fails is found in O(log^2 n): a segment tree over the tails
+//! (and one over the heads) of the path holds the convex hull of each range, and whether some
+//! point of a range lies on the closed wrong side of the line is read at the hull's extreme
+//! vertex, found by binary search (the edge directions of a lower or upper hull turn
+//! monotonically within a half-turn, so the side changes at most once along it). Going up is
+//! the mirror image. In `T_j` one step decides: the apex on the line is the answer, else the ray
+//! leaves by one of two sides, to a polygon edge (no vertex) or into a triangle of another heavy
+//! path.
+//!
+//! Exact: every decision is the sign of a cross product of two differences of input points
+//! ([`Dir::cross`]), in both kernels; no intersection point and no ray parameter is computed.
+//!
+//! ```text
+//!      heavy path T_0 .. T_5, the ray from b crossing h_1 .. h_3 (tails x right, heads o left)
+//!
+//!        o-------o-------o-------o           o: heads of h_i, left of the ray
+//!       / \ T_1 / \ T_3 / \ T_5 /
+//!  b ==/===\===/===\===/===\===/====>        the ray, skipping T_2 .. T_4 by two hull tests
+//!     / T_0 \ / T_2 \ / T_4 \ /
+//!    x-------x-------x-------x               x: tails of h_i, right of the ray
+//! ```
+
+use super::expansion::{Mesh, ISOLATE_AFTER};
+use crate::geom::kernel::{Coord, Dir};
+use crate::geom::polygon::Polygon;
+use std::sync::atomic::{AtomicUsize, Ordering::Relaxed};
+use std::sync::OnceLock;
+
+/// When rays are walked and when they are shot ([`Lazy`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RayPolicy {
+    /// The default hybrid: the walk from a vertex cuts its parts into rays once it has crossed
+    /// [`ISOLATE_AFTER`] triangles; every ray walks [`RAY_WALK`] triangles, and a longer one is
+    /// shot once long walks have crossed [`BUILD_AFTER`] triangles per vertex in all.
+    Hybrid,
+    /// The walk alone (budget unlimited): parts never cut into rays, nothing shot.
+    WalkOnly,
+    /// The rays at once (budget 0): parts cut into rays from the start, every ray shot from its
+    /// first triangle on (the shooter built at the first ray).
+    ShootOnly,
+}
+
+/// How many triangles a ray walks before asking for the shooter (in [`RayPolicy::Hybrid`]).
+pub const RAY_WALK: usize = 32;
+
+/// Long-ray triangles walked per vertex before the shooter is built (its O(n log n)
+/// preprocessing then costs about as much as the walking done so far).
+pub const BUILD_AFTER: usize = 8;
+
+/// A [`Shooter`] built on first need, shared by the threads searching one polygon, following a
+/// [`RayPolicy`]: by default only once rays walked triangle by triangle have crossed, beyond
+/// their first [`RAY_WALK`] triangles each, [`BUILD_AFTER`] triangles per vertex in all, so
+/// that polygons whose rays are short never pay for it (the walk first, with a budget; the
+/// bounded method for the rest).
+pub struct Lazy {
+    cell: OnceLock<Shooter>,
+    walked: AtomicUsize,
+    threshold: usize,
+    first_ask: usize,
+    isolate_after: usize,
+}
+
+impl Lazy {
+    /// Nothing built yet, for a polygon of `n` vertices.
+    pub fn new(n: usize, policy: RayPolicy) -> Lazy {
+        let (threshold, first_ask, isolate_after) = match policy {
+            RayPolicy::Hybrid => (BUILD_AFTER.saturating_mul(n), RAY_WALK, ISOLATE_AFTER),
+            RayPolicy::WalkOnly => (usize::MAX, usize::MAX, usize::MAX),
+            RayPolicy::ShootOnly => (0, 0, 0),
+        };
+        Lazy {
+            cell: OnceLock::new(),
+            walked: AtomicUsize::new(0),
+            threshold,
+            first_ask,
+            isolate_after,
+        }
+    }
+
+    /// After how many triangles walked from one vertex its parts may be cut into rays
+    /// (`usize::MAX`: never).
+    pub fn isolate_after(&self) -> usize {
+        self.isolate_after
+    }
+
+    /// After how many triangles a ray first asks for the shooter (`usize::MAX`: never).
+    pub fn first_ask(&self) -> usize {
+        self.first_ask
+    }
+
+    /// The shooter, if built, or if `steps` more triangles walked by long rays bring the total
+    /// to the threshold (then built here, once).
+    pub fn get<P: Coord>(
+        &self,
+        polygon: &Polygon<P>,
+        mesh: &Mesh,
+        steps: usize,
+    ) -> Option<&Shooter> {
+        if let Some(shooter) = self.cell.get() {
+            return Some(shooter);
+        }
+        let total = self.walked.fetch_add(steps, Relaxed).saturating_add(steps);
+        if total < self.threshold {
+            return None;
+        }
+        Some(self.cell.get_or_init(|| Shooter::new(polygon, mesh)))
+    }
+}
+
+/// A ray shooter over a fixed triangulation (the walk's [`Mesh`], after its flips).
+pub struct Shooter {
+    /// For each triangle, its heavy path and its position on it.
+    place: Vec<(u32, u32)>,
+    /// The heavy paths.
+    paths: Vec<HeavyPath>,
+}
+
+/// One heavy path `T_0, .., T_m` (from the top): the half-edges `h_i` of `T_i` whose twin lies
+/// in `T_(i+1)`, with hull trees over their tails and their heads.
+struct HeavyPath {
+    links: Vec<u32>,
+    tails: HullTree,
+    heads: HullTree,
+}
+
+impl Shooter {
+    /// Preprocesses the triangulation: heavy paths of the dual tree, hull trees along them.
+    /// O(n log n) time and memory.
+    pub fn new<P: Coord>(polygon: &Polygon<P>, mesh: &Mesh) -> Shooter {
+        let triangles = mesh.triangles().len();
+        // The dual tree (a spanning tree of the dual graph with holes): parents and a preorder,
+        // iteratively.
+        let mut parent = vec![u32::MAX; triangles];
+        let mut order = Vec::with_capacity(triangles);
+        let mut seen = vec![false; triangles];
+        let mut stack = Vec::new();
+        // From every triangle not reached yet (one root for a connected region; a forest
+        // otherwise, so that every triangle is on some heavy path).
+        for root in 0..triangles {
+            if seen[root] {
+                continue;
+            }
+            seen[root] = true;
+            stack.push(root);
+            while let Some(t) = stack.pop() {
+                order.push(t);
+                for k in 0..3 {
+                    if let Some(g) = mesh.twin_of(3 * t + k) {
+                        let s = g / 3;
+                        if !seen[s] {
+                            seen[s] = true;
+                            parent[s] = t as u32;
+                            stack.push(s);
+                        }
+                    }
+                }
+            }
+        }
+        let mut size = vec![1u32; triangles];
+        for &t in order.iter().rev() {
+            if let Some(&p) = parent.get(t) {
+                if p != u32::MAX {
+                    size[p as usize] += size[t];
+                }
+            }
+        }
+        // The heavy child of each triangle, as the half-edge leading to it.
+        let mut heavy = vec![u32::MAX; triangles];
+        for (t, heavy) in heavy.iter_mut().enumerate() {
+            let mut best = 0;
+            for k in 0..3 {
+                if let Some(g) = mesh.twin_of(3 * t + k) {
+                    let s = g / 3;
+                    if parent[s] == t as u32 && size[s] > best {
+                        best = size[s];
+                        *heavy = (3 * t + k) as u32;
+                    }
+                }
+            }
+        }
+        let mut place = vec![(u32::MAX, u32::MAX); triangles];
+        let mut paths = Vec::new();
+        for &top in &order {
+            if place[top].0 != u32::MAX {
+                continue; // on the path of an earlier triangle
+            }
+            let id = paths.len() as u32;
+            let mut links = Vec::new();
+            let mut t = top;
+            loop {
+                place[t] = (id, links.len() as u32);
+                let h = heavy[t];
+                if h == u32::MAX {
+                    break;
+                }
+                links.push(h);
+                match mesh.twin_of(h as usize) {
+                    Some(g) => t = g / 3,
+                    None => break,
+                }
+            }
+            let ends = |tail: bool| -> Vec<usize> {
+                links
+                    .iter()
+                    .map(|&h| {
+                        let h = h as usize;
+                        if tail {
+                            mesh.tail(h)
+                        } else {
+                            mesh.head(h)
+                        }
+                    })
+                    .collect()
+            };
+            let tails = HullTree::new(polygon, &ends(true));
+            let heads = HullTree::new(polygon, &ends(false));
+            paths.push(HeavyPath {
+                links,
+                tails,
+                heads,
+            });
+        }
+        Shooter { place, paths }
+    }
+
+    /// The first vertex met exactly by the ray from vertex `b` in direction `d`, the ray having
+    /// entered the triangle of half-edge `g` through that half-edge (strictly between its ends,
+    /// as in the walk of [`super::expansion`]); `None` if it leaves through a polygon edge first.
+    pub fn shoot<P: Coord>(
+        &self,
+        polygon: &Polygon<P>,
+        mesh: &Mesh,
+        b: usize,
+        d: Dir<P>,
+        mut g: usize,
+    ) -> Option<usize> {
+        let pb = polygon.point(b);
+        let side = |v: usize| d.cross(Dir::between(pb, polygon.point(v)));
+        // The side the ray leaves the triangle of `g` by, or the apex it meets.
+        let exit = |g: usize| -> Result<usize, usize> {
+            let x = mesh.apex(g);
+            match side(x) {
+                0 => Err(x),
+                s if s < 0 => Ok(Mesh::next_in_triangle(Mesh::next_in_triangle(g))),
+                _ => Ok(Mesh::next_in_triangle(g)),
+            }
+        };
+        loop {
+            let k = match exit(g) {
+                Err(x) => return Some(x),
+                Ok(k) => k,
+            };
+            // Along the heavy path of this triangle, if the ray follows it.
+            let t = g / 3;
+            let (id, i) = self.place[t];
+            let path = &self.paths[id as usize];
+            let i = i as usize;
+            if path.links.get(i).is_some_and(|&h| h as usize == k) {
+                // Down: the first link from i + 1 on not crossed with its tail right and head left.
+                let end = path.links.len();
+                let fail = [
+                    path.tails.at_or_left(polygon, pb, d, i + 1..end, true),
+                    path.heads
+                        .at_or_left(polygon, pb, d.reversed(), i + 1..end, true),
+                ]
+                .into_iter()
+                .flatten()
+                .min()
+                .unwrap_or(end);
+                // The ray reaches T_fail through the twin of h_(fail - 1).
+                match mesh.twin_of(path.links[fail - 1] as usize) {
+                    Some(next) => g = next,
+                    None => return None, // not reached: links are diagonals
+                }
+                continue;
+            }
+            let up = i
+                .checked_sub(1)
+                .and_then(|m| mesh.twin_of(path.links[m] as usize).map(|h| (m, h)));
+            if let Some((m, _)) = up.filter(|&(_, h)| h == k) {
+                // Up across h_m: the last link below m not crossed with its tail left and head
+                // right (going up, the twin's tail is h's head).
+                let fail = [
+                    path.tails
+                        .at_or_left(polygon, pb, d.reversed(), 0..m, false),
+                    path.heads.at_or_left(polygon, pb, d, 0..m, false),
+                ]
+                .into_iter()
+                .flatten()
+                .max();
+                // The ray reaches T_(fail + 1) through h_(fail + 1) (T_0 through h_0).
+                g = match fail {
+                    Some(f) => path.links[f + 1] as usize,
+                    None => path.links[0] as usize,
+                };
+                continue;
+            }
+            // Off the path: one step into the next triangle.
+            match mesh.twin_of(k) {
+                Some(next) => g = next,
+                None => return None,
+            }
+        }
+    }
+}
+
+/// A segment tree over a sequence of points (vertex indices), each node holding the convex
+/// hull of its range as a lower and an upper chain (Andrew's monotone chains), for the first or
+/// last point of a range on the closed left of a line.
+struct HullTree {
+    len: usize,
+    /// Per node (heap order, root 1): the range of `verts` holding its lower chain, then its
+    /// upper chain.
+    nodes: Vec<(u32, u32, u32)>,
+    verts: Vec<u32>,
+    /// The points of the sequence, in order (the leaves).
+    seq: Vec<u32>,
+}
+
+impl HullTree {
+    fn new<P: Coord>(polygon: &Polygon<P>, seq: &[usize]) -> HullTree {
+        let len = seq.len();
+        let mut tree = HullTree {
+            len,
+            nodes: vec![(0, 0, 0); if len == 0 { 0 } else { 4 * len }],
+            verts: Vec::new(),
+            seq: seq.iter().map(|&v| v as u32).collect(),
+        };
+        if len > 0 {
+            tree.build(polygon, 1, 0, len);
+        }
+        tree
+    }
+
+    /// Builds node `node` over `lo..hi`; returns its points sorted (x, then y), repeats removed.
+    fn build<P: Coord>(
+        &mut self,
+        polygon: &Polygon<P>,
+        node: usize,
+        lo: usize,
+        hi: usize,
+    ) -> Vec<u32> {
+        let p = |v: u32| polygon.point(v as usize);
+        let sorted = if hi - lo == 1 {
+            vec![self.seq[lo]]
+        } else {
+            let mid = (lo + hi) / 2;
+            let left = self.build(polygon, 2 * node, lo, mid);
+            let right = self.build(polygon, 2 * node + 1, mid, hi);
+            let mut merged = Vec::with_capacity(left.len() + right.len());
+            let (mut i, mut j) = (0, 0);
+            while i < left.len() || j < right.len() {
+                let take_left = j == right.len() || (i < left.len() && p(left[i]) <= p(right[j]));
+                let v = if take_left {
+                    i += 1;
+                    left[i - 1]
+                } else {
+                    j += 1;
+                    right[j - 1]
+                };
+                if merged.last().is_none_or(|&u| p(u) != p(v)) {
+                    merged.push(v);
+                }
+            }
+            merged
+        };
+        let start = self.verts.len();
+        let chain = |verts: &mut Vec<u32>, iter: &mut dyn Iterator<Item = &u32>| {
+            let base = verts.len();
+            for &v in iter {
+                while verts.len() >= base + 2
+                    && crate::geom::kernel::cross(
+                        p(verts[verts.len() - 2]),
+                        p(verts[verts.len() - 1]),
+                        p(v),
+                    ) <= 0
+                {
+                    verts.pop();
+                }
+                verts.push(v);
+            }
+        };
+        chain(&mut self.verts, &mut sorted.iter());
+        let split = self.verts.len();
+        chain(&mut self.verts, &mut sorted.iter().rev());
+        self.nodes[node] = (start as u32, split as u32, self.verts.len() as u32);
+        sorted
+    }
+
+    /// Whether some point of the node lies on the line through `b` with direction `d` or left
+    /// of it: the largest `d x (p - b)` over the hull is at an end of a chain or where the
+    /// chain's edges stop turning towards the left of `d`.
+    fn reaches<P: Coord>(&self, polygon: &Polygon<P>, node: usize, b: P, d: Dir<P>) -> bool {
+        let p = |v: u32| polygon.point(v as usize);
+        let left = |v: u32| d.cross(Dir::between(b, p(v))) >= 0;
+        let (start, split, end) = self.nodes[node];
+        for chain in [
+            &self.verts[start as usize..split as usize],
+            &self.verts[split as usize..end as usize],
+        ] {
+            let (Some(&first), Some(&last)) = (chain.first(), chain.last()) else {
+                continue;
+            };
+            if left(first) || left(last) {
+                return true;
+            }
+            // Edge k runs from chain[k] to chain[k + 1]; d x edge > 0: the side grows along it.
+            let grows = |k: usize| d.cross(Dir::between(p(chain[k]), p(chain[k + 1]))) > 0;
+            if chain.len() >= 3 && grows(0) {
+                // Growing, then not: the maximum is where it stops.
+                let (mut lo, mut hi) = (0, chain.len() - 1); // grows(lo), !grows(hi) or hi = last
+                while hi - lo > 1 {
+                    let mid = (lo + hi) / 2;
+                    if grows(mid) {
+                        lo = mid;
+                    } else {
+                        hi = mid;
+                    }
+                }
+                if left(chain[hi]) {
+                    return true;
+                }
+            }
+        }
+        false
+    }
+
+    /// The first (`forward`) or the last index in `range` whose point lies on the line through
+    /// `b` with direction `d` or left of it.
+    fn at_or_left<P: Coord>(
+        &self,
+        polygon: &Polygon<P>,
+        b: P,
+        d: Dir<P>,
+        range: std::ops::Range<usize>,
+        forward: bool,
+    ) -> Option<usize> {
+        if range.is_empty() {
+            return None;
+        }
+        self.find(
+            polygon,
+            b,
+            d,
+            1,
+            0,
+            self.len,
+            range.start,
+            range.end,
+            forward,
+        )
+    }
+
+    /// The first (`forward`) or last index of `lo..hi` within node `node` (over `from..to`)
+    /// whose point is on the closed left of the line: O(log^2) (O(log) nodes tested whole).
+    #[allow(clippy::too_many_arguments)]
+    fn find<P: Coord>(
+        &self,
+        polygon: &Polygon<P>,
+        b: P,
+        d: Dir<P>,
+        node: usize,
+        from: usize,
+        to: usize,
+        lo: usize,
+        hi: usize,
+        forward: bool,
+    ) -> Option<usize> {
+        if hi <= from || to <= lo || !self.reaches(polygon, node, b, d) {
+            return None;
+        }
+        if to - from == 1 {
+            return Some(from);
+        }
+        let mid = (from + to) / 2;
+        let halves = [(2 * node, from, mid), (2 * node + 1, mid, to)];
+        let order = if forward { [0, 1] } else { [1, 0] };
+        order.into_iter().find_map(|k| {
+            let (n, f, t) = halves[k];
+            self.find(polygon, b, d, n, f, t, lo, hi, forward)
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Mesh, Shooter};
+    use crate::geom::kernel::Dir;
+    use crate::geom::polygon::Polygon;
+    use crate::test_support::{comb, polygon, xorshift};
+
+    /// The ray walked triangle by triangle: the reference.
+    fn walk(p: &Polygon, mesh: &Mesh, b: usize, d: Dir, mut g: usize) -> Option<usize> {
+        let pb = p.point(b);
+        loop {
+            let x = mesh.apex(g);
+            let s = d.cross(Dir::between(pb, p.point(x)));
+            if s == 0 {
+                return Some(x);
+            }
+            let k = if s < 0 {
+                Mesh::next_in_triangle(Mesh::next_in_triangle(g))
+            } else {
+                Mesh::next_in_triangle(g)
+            };
+            g = mesh.twin_of(k)?;
+        }
+    }
+
+    /// Every ray from a vertex towards another vertex, strictly inside the angle of one of its
+    /// triangles, is shot where the walk ends: on combs, slivers and random grid polygons,
+    /// over the flipped mesh step 1 walks.
+    #[test]
+    fn shoots_where_the_walk_ends() {
+        let mut rings = vec![comb(40, 1, 9), comb(13, 2, 3)];
+        let mut sliver = vec![(0, 0), (60, 1)];
+        for k in 1..60 {
+            sliver.extend([(60 - k, k), (60 - k, k + 1)]);
+        }
+        rings.push(sliver);
+        let mut rnd = xorshift(0x35_0000_5407);
+        for _ in 0..300 {
+            let mut ring: Vec<(i64, i64)> = vec![(0, 0), (12, 0), (6, 12)];
+            for _ in 0..rnd(60) {
+                let at = rnd(ring.len() as i64) as usize + 1;
+                let mut next = ring.clone();
+                next.insert(at, (rnd(13), rnd(13)));
+                if Polygon::from_raw(&crate::test_support::raw(&[&next])).is_ok() {
+                    ring = next;
+                }
+            }
+            rings.push(ring);
+        }
+        let mut shot = 0;
+        for ring in &rings {
+            let p = polygon(&[ring]);
+            let mut mesh = Mesh::new(&p, crate::algo::plain_polygon_for_walking(&p));
+            mesh.flip_towards_delaunay(&p, 4 * p.len());
+            let shooter = Shooter::new(&p, &mesh);
+            for t in 0..mesh.triangles().len() {
+                for k in 0..3 {
+                    // From the corner b of triangle t across its far side g, into the
+                    // neighbour through g's twin.
+                    let g = 3 * t + k;
+                    let b = mesh.apex(g);
+                    let Some(entry) = mesh.twin_of(g) else {
+                        continue;
+                    };
+                    let (u, w) = (mesh.tail(g), mesh.head(g));
+                    let (du, dw) = (
+                        Dir::between(p.point(b), p.point(u)),
+                        Dir::between(p.point(b), p.point(w)),
+                    );
+                    for v in 0..p.len() {
+                        let d = Dir::between(p.point(b), p.point(v));
+                        if v == b || du.cross(d) <= 0 || d.cross(dw) <= 0 {
+                            continue;
+                        }
+                        assert_eq!(
+                            shooter.shoot(&p, &mesh, b, d, entry),
+                            walk(&p, &mesh, b, d, entry),
+                            "{ring:?} from {b} towards {v}"
+                        );
+                        shot += 1;
+                    }
+                }
+            }
+        }
+        assert!(shot > 10_000, "{shot} rays");
+    }
+}
