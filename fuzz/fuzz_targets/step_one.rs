@@ -35,6 +35,7 @@ enum Input {
 fn valid(points: &[(i64, i64)]) -> Option<Polygon> {
     let raw = RawPolygon {
         rings: vec![ring(points)],
+        ..Default::default()
     };
     Polygon::from_raw_all_errors(&raw).ok().map(|(p, _)| p)
 }
