@@ -688,6 +688,23 @@ fn the_documents_link_only_to_files_of_the_repository() {
     }
 }
 
+/// No document keeps a merge's conflict markers (the README once carried both sides of a
+/// conflicting `--time-limit` row for a day).
+#[test]
+fn documents_hold_no_conflict_markers() {
+    for (path, text) in documents() {
+        for (i, line) in text.lines().enumerate() {
+            let marker =
+                line.starts_with("<<<<<<< ") || line.starts_with(">>>>>>> ") || line == "=======";
+            assert!(
+                !marker,
+                "{path:?} line {}: a conflict marker: {line}",
+                i + 1
+            );
+        }
+    }
+}
+
 /// The targets of the Markdown links `[text](target)` of a text.
 fn markdown_links(text: &str) -> Vec<String> {
     text.match_indices("](")
