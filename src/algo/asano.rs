@@ -216,7 +216,7 @@ pub(crate) fn solve_walk_in<'a, P: Coord>(
         cost_t[at(i + 1, i)] = 0;
     }
     for gap in 2..n {
-        if deadline.is_some_and(|d| Instant::now() >= d) {
+        if crate::algo::past(deadline) {
             return None;
         }
         for i in 0..n - gap {

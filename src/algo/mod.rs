@@ -152,6 +152,11 @@ pub struct Triangulation {
     pub stopped: Option<Stopped>,
 }
 
+/// Whether `deadline` (`None`: no limit) has passed: what every loop that can run long asks.
+pub(crate) fn past(deadline: Option<std::time::Instant>) -> bool {
+    deadline.is_some_and(|d| std::time::Instant::now() >= d)
+}
+
 /// Why a minimum algorithm's count is not proved minimum (`optimal` false). The triangulation
 /// is valid all the same, and `lower_bound` says how far from the minimum it can be.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -446,8 +451,10 @@ pub(crate) fn touching<P: Coord>(
     let (triangles, degenerate) = match flattened {
         Some(found) => found,
         None => (
-            walks::plain(polygon)
-                .map_err(|detail| TriangulateError::Touching { algorithm, detail })?,
+            walks::plain(polygon).map_err(|e| TriangulateError::Touching {
+                algorithm,
+                detail: e.to_string(),
+            })?,
             Vec::new(),
         ),
     };

@@ -84,9 +84,9 @@ fn strictly_inside<P: Coord>(prev: P, w: P, next: P, t: P) -> bool {
 /// A plain triangulation of a polygon with touching rings (see the module documentation).
 ///
 /// # Errors
-/// `Err(what)` if no ear or bridge is found, which the theory excludes (a broken invariant,
+/// [`WalksError`] if no ear or bridge is found, which the theory excludes (a broken invariant,
 /// reported rather than a wrong answer).
-pub fn plain<P: Coord>(polygon: &Polygon<P>) -> Result<Vec<[usize; 3]>, String> {
+pub fn plain<P: Coord>(polygon: &Polygon<P>) -> Result<Vec<[usize; 3]>, WalksError> {
     if let Some(triangles) = swept(polygon) {
         return Ok(triangles);
     }
@@ -171,12 +171,12 @@ fn tiles<P: Coord>(polygon: &Polygon<P>, triangles: &[[usize; 3]]) -> bool {
 /// nondegenerate triangles and the degenerate ones, at most as many triangles as [`plain`].
 ///
 /// # Errors
-/// `Err(what)` as [`plain`], or when the degenerate triangles read off the result do not
+/// [`WalksError::TimeLimit`] past `deadline`; as [`plain`]; or when the degenerate triangles read off the result do not
 /// account for the triangles saved (a broken invariant; the caller falls back to [`plain`]).
 pub fn flattened<P: Coord>(
     polygon: &Polygon<P>,
     deadline: Option<Instant>,
-) -> Result<(Triangles, Triangles), String> {
+) -> Result<(Triangles, Triangles), WalksError> {
     let cycle = bridged(polygon, deadline)?;
     let greedy = flattened_clip(polygon, &cycle, true, deadline);
     if cycle.len() > BOTH_ORDERS_UP_TO {
@@ -196,18 +196,17 @@ fn flattened_clip<P: Coord>(
     cycle: &[usize],
     greedy: bool,
     deadline: Option<Instant>,
-) -> Result<(Triangles, Triangles), String> {
+) -> Result<(Triangles, Triangles), WalksError> {
     let (triangles, dropped) = clip(polygon, cycle, true, greedy, deadline)?;
     let mut candidates: Vec<usize> = dropped.iter().map(|&k| cycle[k]).collect();
     candidates.sort_unstable();
     candidates.dedup();
     let degenerate = junctions_among(polygon, &triangles, &candidates);
     if degenerate.len() != dropped.len() || triangles.len() + dropped.len() + 2 != cycle.len() {
-        return Err(format!(
-            "{} degenerate triangles read off for {} vertices passed straight through",
-            degenerate.len(),
-            dropped.len()
-        ));
+        return Err(WalksError::Unaccounted {
+            found: degenerate.len(),
+            dropped: dropped.len(),
+        });
     }
     Ok((triangles, degenerate))
 }
@@ -217,7 +216,7 @@ fn flattened_clip<P: Coord>(
 fn bridged<P: Coord>(
     polygon: &Polygon<P>,
     deadline: Option<Instant>,
-) -> Result<Vec<usize>, String> {
+) -> Result<Vec<usize>, WalksError> {
     let pt = |i: usize| polygon.point(i);
     let walks: Vec<Vec<usize>> = (0..=polygon.holes())
         .map(|w| polygon.ring_range(w).collect())
@@ -227,8 +226,8 @@ fn bridged<P: Coord>(
     // Highest (lexicographically greatest (x, y)) point first, as earcut joins holes.
     holes.sort_by_key(|h| std::cmp::Reverse(h.iter().map(|&i| pt(i)).max()));
     for k in 0..holes.len() {
-        if past(deadline) {
-            return Err(TIME_LIMIT.to_string());
+        if super::past(deadline) {
+            return Err(WalksError::TimeLimit);
         }
         let hole = &holes[k];
         let top = hole
@@ -242,8 +241,8 @@ fn bridged<P: Coord>(
         let rest: Vec<&Vec<usize>> = holes[k + 1..].iter().collect();
         let mut bridge = None;
         'search: for &o in &candidates {
-            if past(deadline) {
-                return Err(TIME_LIMIT.to_string());
+            if super::past(deadline) {
+                return Err(WalksError::TimeLimit);
             }
             let v = outer[o];
             for h in (0..m).filter(|&h| pt(hole[h]) == top) {
@@ -272,7 +271,7 @@ fn bridged<P: Coord>(
             }
         }
         let Some((o, h)) = bridge else {
-            return Err(format!("no bridge from hole walk {} found", k + 1));
+            return Err(WalksError::NoBridge(k + 1));
         };
         let mut joined = Vec::with_capacity(outer.len() + m + 2);
         joined.extend_from_slice(&outer[..=o]);
@@ -283,12 +282,34 @@ fn bridged<P: Coord>(
     Ok(outer)
 }
 
-/// What [`flattened`] says when `deadline` passes first.
-const TIME_LIMIT: &str = "the time limit passed";
-
-/// Whether `deadline` has passed.
-fn past(deadline: Option<Instant>) -> bool {
-    deadline.is_some_and(|d| Instant::now() >= d)
+/// Why a triangulation of the walks was not made. Only [`WalksError::TimeLimit`] is expected;
+/// the others are broken invariants the theory excludes, reported rather than a wrong answer
+/// (none seen in the tests).
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum WalksError {
+    /// The deadline passed first.
+    #[error("the time limit passed")]
+    TimeLimit,
+    /// No bridge joins this hole walk (numbered from 1) to the walks before it.
+    #[error("no bridge from hole walk {0} found")]
+    NoBridge(usize),
+    /// The ear clipper found no ear among this many vertices.
+    #[error("no ear among {0} vertices")]
+    NoEar(usize),
+    /// The ear clipper's last three vertices were not a triangle.
+    #[error("the last three vertices do not make a triangle")]
+    LastNotATriangle,
+    /// The degenerate triangles read off a flattened triangulation did not account for the
+    /// vertices passed straight through.
+    #[error(
+        "{found} degenerate triangles read off for {dropped} vertices passed straight through"
+    )]
+    Unaccounted {
+        /// Degenerate triangles found.
+        found: usize,
+        /// Vertices passed straight through.
+        dropped: usize,
+    },
 }
 
 /// Whether the open segment `a b` contains no vertex of `cycles` and crosses none of their
@@ -319,7 +340,7 @@ fn clip<P: Coord>(
     flatten: bool,
     greedy: bool,
     deadline: Option<Instant>,
-) -> Result<(Triangles, Vec<usize>), String> {
+) -> Result<(Triangles, Vec<usize>), WalksError> {
     let n = cycle.len();
     let pt = |k: usize| polygon.point(cycle[k]);
     let mut next: Vec<usize> = (0..n).map(|k| (k + 1) % n).collect();
@@ -361,8 +382,8 @@ fn clip<P: Coord>(
     let mut steps = 0u32;
     while remaining > 3 {
         steps = steps.wrapping_add(1);
-        if steps.is_multiple_of(64) && past(deadline) {
-            return Err(TIME_LIMIT.to_string());
+        if steps.is_multiple_of(64) && super::past(deadline) {
+            return Err(WalksError::TimeLimit);
         }
         let (p, q) = (prev[v], next[v]);
         let (a, b, c) = (pt(p), pt(v), pt(q));
@@ -402,7 +423,7 @@ fn clip<P: Coord>(
             misses += 1;
             if misses > remaining {
                 if !only_flattening {
-                    return Err(format!("no ear among {remaining} vertices"));
+                    return Err(WalksError::NoEar(remaining));
                 }
                 only_flattening = false;
                 misses = 0;
@@ -415,7 +436,7 @@ fn clip<P: Coord>(
         if cross(pt(p), pt(v), pt(q)) > 0 {
             triangles.push([cycle[p], cycle[v], cycle[q]]);
         } else {
-            return Err("the last three vertices do not make a triangle".to_string());
+            return Err(WalksError::LastNotATriangle);
         }
     }
     Ok((triangles, dropped))
@@ -473,7 +494,7 @@ pub fn minimum<P: Coord>(
         deadline,
     );
     let Some(walk) = walk else {
-        return Err(if deadline.is_some_and(|d| Instant::now() >= d) {
+        return Err(if super::past(deadline) {
             Stopped::TimeLimit
         } else {
             Stopped::Touching // not seen: a valid walk always has a triangulation

@@ -499,7 +499,7 @@ impl Scratch {
         let mut at = 0;
         let mut tested = 0;
         'lower: while bound > enough {
-            if self.work > budget || deadline.is_some_and(|d| Instant::now() >= d) {
+            if self.work > budget || crate::algo::past(deadline) {
                 break;
             }
             if let Some(d) = self.propagate(adjacent, cand, cliques, None) {
@@ -513,9 +513,7 @@ impl Scratch {
                 break;
             }
             while tested < self.small.len() {
-                if self.work > budget
-                    || tested % 64 == 63 && deadline.is_some_and(|d| Instant::now() >= d)
-                {
+                if self.work > budget || tested % 64 == 63 && crate::algo::past(deadline) {
                     break 'lower;
                 }
                 let c = self.small[at];
@@ -819,7 +817,7 @@ impl Search {
             return;
         }
         self.nodes += 1;
-        if self.nodes % 256 == 1 && self.deadline.is_some_and(|d| Instant::now() >= d) {
+        if self.nodes % 256 == 1 && crate::algo::past(self.deadline) {
             self.stopped = true;
             return;
         }

@@ -395,7 +395,7 @@ pub fn minimally_degenerate_by_sweep_until<P: Coord>(
     let mut visible = Vec::new();
     let mut seen = vec![false; polygon.len()];
     for b in 0..polygon.len() {
-        if b % 16 == 0 && deadline.is_some_and(|d| std::time::Instant::now() >= d) {
+        if b % 16 == 0 && crate::algo::past(deadline) {
             return (out, false);
         }
         if !reflex_or_flat(polygon, b, &mut out) {

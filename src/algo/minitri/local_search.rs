@@ -199,7 +199,7 @@ pub fn improve(
         (seed % below as u64) as usize
     };
     for round in 0..rounds {
-        if round % 64 == 63 && deadline.is_some_and(|d| Instant::now() >= d) {
+        if round % 64 == 63 && crate::algo::past(deadline) {
             break;
         }
         // A vertex outside the set, chosen at random (a few tries; the set may be almost all).

@@ -151,9 +151,9 @@ pub fn triangulate_walks<P: Coord>(
     polygon: &Polygon<P>,
     deadline: Option<Instant>,
 ) -> Result<Triangulation, TriangulateError> {
-    let plain = walks::plain(polygon).map_err(|detail| TriangulateError::Touching {
+    let plain = walks::plain(polygon).map_err(|e| TriangulateError::Touching {
         algorithm: Algorithm::Minitri,
-        detail,
+        detail: e.to_string(),
     })?;
     let (mdts, base, unexamined) =
         degenerate::minimally_degenerate_over_until(polygon, plain, deadline);
@@ -206,7 +206,7 @@ fn general_from<P: Coord>(
     let mut stopped = (unexamined > 0).then_some(Stopped::TimeLimit);
     let mut sorted = false;
     let graph = loop {
-        let late = deadline.is_some_and(|d| Instant::now() >= d);
+        let late = crate::algo::past(deadline);
         let (budget, until) = if late {
             (LATE_PAIRS, None)
         } else {
@@ -215,7 +215,7 @@ fn general_from<P: Coord>(
         if let Some(graph) = dependency::graph_within(polygon, &mdts, budget, until) {
             break graph;
         }
-        let late = deadline.is_some_and(|d| Instant::now() >= d);
+        let late = crate::algo::past(deadline);
         stopped.get_or_insert(if late {
             Stopped::TimeLimit
         } else {
