@@ -263,14 +263,13 @@ fn solve_component(
         // bounded by a multiple of the graph's size (and the deadline).
         let set: Vec<usize> = start.iter().map(|&v| component[v]).collect();
         let mut scratch = Scratch::default();
-        let cliques = scratch.cover_by_lists(&adjacent_local);
+        scratch.cover_by_lists(&adjacent_local);
         let edges: usize = adjacent_local.iter().map(Vec::len).sum();
         let budget = LARGE_BOUND_WORK * (n + edges);
         let all = Bits::full(n);
         let covered = scratch.lower(
             &adjacent_local,
             &all,
-            cliques,
             0,
             Effort {
                 thorough: true,
@@ -382,8 +381,9 @@ struct Scratch {
     /// An inconsistent set being collected (cliques), and whether each is in it.
     set: Vec<usize>,
     in_set: Vec<bool>,
-    /// Cliques met by one [`Scratch::collect`].
+    /// Cliques met by one [`Scratch::collect`], and the list of them (to clear the marks).
     seen: Vec<bool>,
+    trail: Vec<usize>,
     /// Adjacency entries and members looked at by the propagations of one [`Scratch::lower`].
     work: usize,
 }
@@ -476,15 +476,15 @@ impl Scratch {
         self.finish_cover()
     }
 
-    /// [`Search::bound`] from the cover already made (`cliques` of them in the buffers).
+    /// [`Search::bound`] from the cover already made in the buffers.
     fn lower(
         &mut self,
         adjacent: &[Vec<usize>],
         cand: &Bits,
-        cliques: usize,
         enough: usize,
         effort: Effort,
     ) -> usize {
+        let cliques = self.starts.len() - 1;
         let Effort {
             thorough,
             deadline,
@@ -502,7 +502,7 @@ impl Scratch {
             if self.work > budget || crate::algo::past(deadline) {
                 break;
             }
-            if let Some(d) = self.propagate(adjacent, cand, cliques, None) {
+            if let Some(d) = self.propagate(adjacent, cand, None) {
                 self.set.clear();
                 self.collect(d);
                 self.spend();
@@ -527,7 +527,7 @@ impl Scratch {
                 let mut every = true;
                 for k in self.starts[c]..self.starts[c + 1] {
                     let v = self.members[k];
-                    match self.propagate(adjacent, cand, cliques, Some((c, v))) {
+                    match self.propagate(adjacent, cand, Some((c, v))) {
                         Some(d) => self.collect(d),
                         None => {
                             every = false;
@@ -547,16 +547,16 @@ impl Scratch {
         bound
     }
 
-    /// One unit propagation over the cover's `cliques` (those not spent), from its cliques of
+    /// One unit propagation over the cover's cliques (those not spent), from its cliques of
     /// one member and, if `forced` (clique, member), from that member alone in its clique: the
     /// clique it empties, if any (`because` then records what emptied what).
     fn propagate(
         &mut self,
         adjacent: &[Vec<usize>],
         cand: &Bits,
-        cliques: usize,
         forced: Option<(usize, usize)>,
     ) -> Option<usize> {
+        let cliques = self.starts.len() - 1;
         self.pass = self.pass.wrapping_add(1);
         if self.pass == 0 {
             self.gone.fill(0);
@@ -627,20 +627,22 @@ impl Scratch {
     }
 
     /// Adds to `set` the emptied clique `d` and, transitively, the cliques that emptied it in
-    /// the last propagation.
+    /// the last propagation. Costs what it visits: its marks are cleared afterwards, not
+    /// allocated or filled per call.
     fn collect(&mut self, d: usize) {
-        let cliques = self.spent.len();
-        self.in_set.clear();
+        let cliques = self.starts.len() - 1;
         self.in_set.resize(cliques, false);
+        self.seen.resize(cliques, false);
         for &c in &self.set {
             self.in_set[c] = true;
         }
-        self.seen.clear();
-        self.seen.resize(cliques, false);
+        self.trail.clear();
         self.seen[d] = true;
-        self.queue.clear();
-        self.queue.push(d);
-        while let Some(c) = self.queue.pop() {
+        self.trail.push(d);
+        let mut k = 0;
+        while k < self.trail.len() {
+            let c = self.trail[k];
+            k += 1;
             if !self.in_set[c] {
                 self.in_set[c] = true;
                 self.set.push(c);
@@ -652,9 +654,15 @@ impl Scratch {
                 let e = self.because[c][i];
                 if !self.seen[e] {
                     self.seen[e] = true;
-                    self.queue.push(e);
+                    self.trail.push(e);
                 }
             }
+        }
+        for &c in &self.trail {
+            self.seen[c] = false;
+        }
+        for &c in &self.set {
+            self.in_set[c] = false;
         }
     }
 
@@ -683,13 +691,12 @@ impl Search {
     /// all those sets. That costs more, so it runs at the root (`thorough`) and at nodes whose
     /// bound is within [`FAILED_LITERAL_MARGIN`] of pruning.
     fn bound(&mut self, cand: &Bits, enough: usize, thorough: bool) -> usize {
-        let cliques = self.cover(cand);
+        self.cover(cand);
         let deadline = self.deadline;
         let adjacent = &self.adjacent;
         self.scratch.lower(
             adjacent,
             cand,
-            cliques,
             enough,
             Effort {
                 thorough,
@@ -1003,11 +1010,10 @@ mod tests {
             assert!(bound >= exact, "case {case}: bound {bound} below {exact}");
             // The bound of components too large to search, from adjacency lists alone.
             let mut scratch = Scratch::default();
-            let cliques = scratch.cover_by_lists(&g);
+            scratch.cover_by_lists(&g);
             let lists = scratch.lower(
                 &g,
                 &Bits::full(n),
-                cliques,
                 0,
                 Effort {
                     thorough: true,
