@@ -61,14 +61,10 @@ pub(crate) fn walks<P: Coord>(
     // Around each touch point: the vertex whose outgoing edge the walk takes after arriving at
     // each vertex of the group (`leave[i]`), found from the angular order.
     let mut leave: Vec<usize> = (0..p.len()).collect();
+    let mut dirs = Vec::new(); // reused by every group
     for group in &groups {
-        match around(&p, group, &name) {
-            Ok(pairs) => {
-                for (arrive, depart) in pairs {
-                    leave[arrive] = depart;
-                }
-            }
-            Err(e) => errors.push(e),
+        if let Err(e) = around(&p, group, &name, &mut dirs, &mut leave) {
+            errors.push(e);
         }
     }
     if !errors.is_empty() {
@@ -147,33 +143,36 @@ fn insert_on_edges<P: Coord>(
 
 /// The stored vertices sharing a point with another, one group per point.
 fn touch_groups<P: Coord>(p: &Polygon<P>) -> Vec<Vec<usize>> {
-    let mut order: Vec<usize> = (0..p.len()).collect();
-    order.sort_unstable_by_key(|&i| (p.point(i), i));
+    // Sorted as (point, vertex) values, not vertex numbers looked up at each comparison: the
+    // sort is most of this function's work on a polygon with many touches.
+    let mut order: Vec<(P, usize)> = (0..p.len()).map(|i| (p.point(i), i)).collect();
+    order.sort_unstable();
     order
-        .chunk_by(|&i, &j| p.point(i) == p.point(j))
+        .chunk_by(|a, b| a.0 == b.0)
         .filter(|g| g.len() > 1)
-        .map(<[usize]>::to_vec)
+        .map(|g| g.iter().map(|&(_, i)| i).collect())
         .collect()
 }
 
-/// Step 2 at one touch point: `(arriving vertex, vertex whose outgoing edge follows)` for each
-/// vertex of the group, or why the rings may not meet like this.
+/// Step 2 at one touch point: sets `leave[arriving vertex]` to the vertex whose outgoing edge
+/// follows, for each vertex of the group, or says why the rings may not meet like this (`leave`
+/// is then partly set). `dirs` is scratch space.
 fn around<P: Coord>(
     p: &Polygon<P>,
     group: &[usize],
     name: &impl Fn(usize) -> String,
-) -> Result<Vec<(usize, usize)>, InvalidPolygon> {
+    dirs: &mut Vec<(P, usize, bool)>,
+    leave: &mut [usize],
+) -> Result<(), InvalidPolygon> {
     let at = p.point(group[0]);
     // (direction's far point, vertex, is it the outgoing edge)
-    let mut dirs: Vec<(P, usize, bool)> = group
-        .iter()
-        .flat_map(|&v| {
-            [
-                (p.point(p.prev(v)), v, false),
-                (p.point(p.next(v)), v, true),
-            ]
-        })
-        .collect();
+    dirs.clear();
+    dirs.extend(group.iter().flat_map(|&v| {
+        [
+            (p.point(p.prev(v)), v, false),
+            (p.point(p.next(v)), v, true),
+        ]
+    }));
     dirs.sort_by(|x, y| cmp_angle(at, x.0, y.0).then(x.2.cmp(&y.2)));
     let k = dirs.len();
     for i in 0..k {
@@ -190,7 +189,6 @@ fn around<P: Coord>(
     // Each incoming direction must be followed counter-clockwise by its own ring's outgoing one.
     // Start the circle at an incoming direction.
     let first_in = dirs.iter().position(|d| !d.2).unwrap_or(0);
-    let mut pairs = Vec::with_capacity(group.len());
     for step in 0..k / 2 {
         let i = first_in + 2 * step;
         let (x, y) = (dirs[i % k], dirs[(i + 1) % k]);
@@ -205,9 +203,9 @@ fn around<P: Coord>(
         }
         // Arriving along x's ring (edge prev -> point), the region is the sector clockwise of
         // the incoming direction: it is left by `before`'s outgoing edge.
-        pairs.push((x.1, before.1));
+        leave[x.1] = before.1;
     }
-    Ok(pairs)
+    Ok(())
 }
 
 /// Step 3: the rings joined by touches (`joined[r]`: the representative of ring r's group), or
@@ -222,15 +220,16 @@ fn forest<P: Coord>(p: &Polygon<P>, groups: &[Vec<usize>]) -> Result<Vec<usize>,
         }
         r
     }
-    // The touches kept so far: ring -> (ring, point) both ways, to name a cycle.
-    let mut adjacent: Vec<Vec<(usize, usize)>> = vec![Vec::new(); rings];
+    // The touches kept so far, `(ring, ring, vertex of the second at the point, vertex of the
+    // first)`: only read to name a cycle, so kept flat (no list per ring on the valid path).
+    let mut kept: Vec<(usize, usize, usize, usize)> = Vec::new();
     for group in groups {
         let first = p.ring_index(group[0]);
         for &v in &group[1..] {
             let r = p.ring_index(v);
             let (a, b) = (find(&mut root, first), find(&mut root, r));
             if a == b {
-                let path = cycle(&adjacent, first, r);
+                let path = cycle(rings, &kept, first, r);
                 let rings: Vec<String> = path
                     .iter()
                     .map(|&(r, _)| Ring::from_index(r).to_string())
@@ -248,17 +247,27 @@ fn forest<P: Coord>(p: &Polygon<P>, groups: &[Vec<usize>]) -> Result<Vec<usize>,
                 });
             }
             root[a] = b;
-            adjacent[first].push((r, v));
-            adjacent[r].push((first, group[0]));
+            kept.push((first, r, v, group[0]));
         }
     }
     Ok((0..rings).map(|r| find(&mut root, r)).collect())
 }
 
-/// The rings (with a vertex at each touch point passed) on the path of touches from `from` to
-/// `to`: `(ring, vertex at the point reached by)`; the first entry is `(from, _)`.
-fn cycle(adjacent: &[Vec<(usize, usize)>], from: usize, to: usize) -> Vec<(usize, usize)> {
-    let mut back: Vec<Option<(usize, usize)>> = vec![None; adjacent.len()];
+/// The rings (with a vertex at each touch point passed) on the path of `kept` touches (see
+/// [`forest`]) from `from` to `to`: `(ring, vertex at the point reached by)`; the first entry is
+/// `(from, _)`.
+fn cycle(
+    rings: usize,
+    kept: &[(usize, usize, usize, usize)],
+    from: usize,
+    to: usize,
+) -> Vec<(usize, usize)> {
+    let mut adjacent: Vec<Vec<(usize, usize)>> = vec![Vec::new(); rings];
+    for &(a, b, at_b, at_a) in kept {
+        adjacent[a].push((b, at_b));
+        adjacent[b].push((a, at_a));
+    }
+    let mut back: Vec<Option<(usize, usize)>> = vec![None; rings];
     let mut queue = std::collections::VecDeque::from([from]);
     back[from] = Some((from, usize::MAX));
     while let Some(r) = queue.pop_front() {
