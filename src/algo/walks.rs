@@ -9,7 +9,7 @@
 //! triangles (n stored vertices, copies counted, w hole walks) and `d` degenerate ones
 //! (T-junctions) covering the region, as stored indices, each corner the copy whose sector holds
 //! the triangle there, never more than the plain triangulation of the walks
-//! ([`crate::algo::plain::walks`], `n + 2w - 2`); [`minimum`] the exact minimum of a
+//! (`crate::algo::plain::walks`, `n + 2w - 2`); [`minimum`] the exact minimum of a
 //! polygon whose rings all join the outer ring (one walk), by the DP of [`super::asano`] over the
 //! walk (`asano`'s method; `minitri` runs Chen & Chang's steps on the walks instead). Every decision is an exact orientation test.
 //!
@@ -18,8 +18,8 @@
 //! inside the closed angle of one copy there (so it stays in the closed region: away from
 //! vertices nothing but a proper crossing can take it out, at a vertex it stays in that copy's
 //! sector). The plain triangulation of the walks is the monotone sweep on the walks with every
-//! copy moved symbolically into its sector ([`crate::algo::plain::walks`]); the ear clipper of
-//! the bridged cycle below ([`clipped_bridged`]) remains only as its fallback, never taken in
+//! copy moved symbolically into its sector (`crate::algo::plain::walks`); the ear clipper of
+//! the bridged cycle below (`clipped_bridged`) remains only as its fallback, never taken in
 //! the tests.
 //!
 //! [`flattened`] joins each hole walk to the outer walk by a bridge (a chord from the hole's
@@ -81,7 +81,7 @@ fn strictly_inside<P: Coord>(prev: P, w: P, next: P, t: P) -> bool {
 }
 
 /// The ear clipper over the bridged cycle (see the module documentation): the fallback of the
-/// walks' plain triangulation ([`crate::algo::plain::walks`]) when its sweep fails its check
+/// walks' plain triangulation (`crate::algo::plain::walks`) when its sweep fails its check
 /// (not seen in the tests).
 ///
 /// # Errors
@@ -95,10 +95,10 @@ pub(crate) fn clipped_bridged<P: Coord>(polygon: &Polygon<P>) -> Result<Triangle
 /// A triangulation of a polygon with touching rings with degenerate triangles where the
 /// bridged cycle runs straight through a vertex (see the module documentation): the
 /// nondegenerate triangles and the degenerate ones, at most as many triangles as the plain
-/// triangulation ([`crate::algo::plain::walks`]).
+/// triangulation (`crate::algo::plain::walks`).
 ///
 /// # Errors
-/// [`WalksError::TimeLimit`] past `deadline`; as [`clipped_bridged`]; or when the degenerate
+/// [`WalksError::TimeLimit`] past `deadline`; as `clipped_bridged`; or when the degenerate
 /// triangles read off the result do not account for the triangles saved (a broken invariant;
 /// the caller falls back to the plain triangulation).
 pub fn flattened<P: Coord>(

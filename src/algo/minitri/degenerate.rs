@@ -191,7 +191,7 @@ pub fn minimally_degenerate_and_mesh_until<P: Coord>(
 
 /// [`minimally_degenerate_and_mesh_until`] over a given plain triangulation `plain` of the
 /// polygon (counter-clockwise triangles of stored vertices covering it). For touching rings,
-/// the walks' plain triangulation ([`crate::algo::plain::walks`]): a copy of a touch point is a
+/// the walks' plain triangulation (`crate::algo::plain::walks`): a copy of a touch point is a
 /// vertex of its own with its own fan of triangles inside its sector, so the mesh is that of the
 /// polygon with each copy moved into its sector, and the expansion never passes through a
 /// vertex (it stops at the nearest one in each direction); the tests compare the result with

@@ -4,13 +4,13 @@
 //! triangles are cut into it).
 //!
 //! One entry point per contract:
-//! - [`rings`]: the points of simple rings, the outer one counter-clockwise first, holes
+//! - `rings`: the points of simple rings, the outer one counter-clockwise first, holes
 //!   clockwise; rings pairwise disjoint, no two points equal, flat vertices and any other
 //!   collinearity allowed (a [`Polygon`] whose rings do not touch, or a piece another algorithm
-//!   cut out). [`polygon`] is [`rings`] of such a [`Polygon`], swept along its longer side for
-//!   the walks of step 1, or the copy made while it was validated; [`try_polygon`] the same on
+//!   cut out). `polygon` is `rings` of such a [`Polygon`], swept along its longer side for
+//!   the walks of step 1, or the copy made while it was validated; `try_polygon` the same on
 //!   rings still being validated.
-//! - [`walks`]: the boundary walks of touching rings (copies of a touch point as vertices of
+//! - `walks`: the boundary walks of touching rings (copies of a touch point as vertices of
 //!   their own, `docs/touching.md`).
 //! - [`triangulate`]: the `ear` algorithm on any valid polygon, as a [`Triangulation`].
 //!
@@ -22,8 +22,8 @@
 //! Method and bound: monotone pieces ([`monotone`]: Lee & Preparata 1977; Garey, Johnson,
 //! Preparata & Tarjan 1978; de Berg et al., *Computational Geometry*, ch. 3), O(n log n) time
 //! and O(n) memory whatever the number of holes; ear clipping (`ear_clipping.rs`: Meisters 1975)
-//! for rings without holes of up to [`CLIP_UP_TO`] vertices, where it is quicker. Walks: the
-//! same sweep over the copies moved symbolically into their sectors ([`perturbed`], simulation
+//! for rings without holes of up to `CLIP_UP_TO` vertices, where it is quicker. Walks: the
+//! same sweep over the copies moved symbolically into their sectors (`perturbed`, simulation
 //! of simplicity: Edelsbrunner & Mücke 1990), checked in O(N log N); if the check failed (never
 //! seen), the ear clipper of the bridged cycle ([`super::walks`]), O(N^2) to O(N^3).
 
@@ -84,12 +84,12 @@ pub fn triangulate<P: Coord>(polygon: &Polygon<P>) -> Result<Triangulation, Tria
 
 /// The plain triangulation of simple rings given as points one after another (see the module
 /// documentation): `ring_starts[k]` is the index of the first point of ring `k` (`[0]` for one
-/// cycle). Ear clipping for one ring of up to [`CLIP_UP_TO`] points (none for fewer than 3),
+/// cycle). Ear clipping for one ring of up to `CLIP_UP_TO` points (none for fewer than 3),
 /// monotone pieces otherwise.
 ///
 /// # Panics
 /// As [`monotone::triangulate_rings`], if `ring_starts` does not describe rings of at least 3
-/// points (one ring of more than [`CLIP_UP_TO`] points or several rings), and on a broken
+/// points (one ring of more than `CLIP_UP_TO` points or several rings), and on a broken
 /// invariant (rings outside the contract).
 pub(crate) fn rings<P: Coord>(pts: &[P], ring_starts: &[usize]) -> Vec<[usize; 3]> {
     if ring_starts.len() == 1 && pts.len() <= CLIP_UP_TO {
@@ -99,10 +99,10 @@ pub(crate) fn rings<P: Coord>(pts: &[P], ring_starts: &[usize]) -> Vec<[usize; 3
     }
 }
 
-/// [`rings`] of a valid polygon whose rings do not touch, as stored vertex indices: the
-/// triangulation MINITRI's step 1 walks. Above [`CLIP_UP_TO`] vertices it is swept along x when
+/// `rings` of a valid polygon whose rings do not touch, as stored vertex indices: the
+/// triangulation MINITRI's step 1 walks. Above `CLIP_UP_TO` vertices it is swept along x when
 /// the bounding box is more than twice as wide as tall, else along y as always; a triangulation
-/// made while the polygon was validated ([`try_polygon`]) is taken instead when there is one.
+/// made while the polygon was validated (`try_polygon`) is taken instead when there is one.
 ///
 /// The monotone pieces are swept bottom to top, so a long horizontal corridor is one wide piece
 /// whose walls, vertices at nearly the same heights, get joined by long fans; walks through
@@ -122,7 +122,7 @@ pub(crate) fn polygon<P: Coord>(polygon: &Polygon<P>) -> Vec<[usize; 3]> {
     try_polygon(polygon).expect("monotone triangulation of a valid polygon: invariant broken")
 }
 
-/// [`polygon`] of a polygon of more than [`CLIP_UP_TO`] vertices whose validation is still
+/// `polygon` of a polygon of more than `CLIP_UP_TO` vertices whose validation is still
 /// running: the same triangles if it turns out valid, and on any rings no panic and an end in
 /// the same time bound (`None` where they break the monotone sweep's contract; `None` for
 /// small polygons too).
@@ -152,7 +152,7 @@ pub(crate) fn walks<P: Coord>(polygon: &Polygon<P>) -> Result<Vec<[usize; 3]>, W
 }
 
 /// The points turned a quarter-turn when the bounding box is more than twice as wide as tall
-/// (see [`polygon`]), else `None`.
+/// (see `polygon`), else `None`.
 fn turned_for_walking<P: Coord>(polygon: &Polygon<P>) -> Option<Vec<P>> {
     let pts = polygon.points();
     // The points of least and greatest x, then y.
