@@ -22,12 +22,12 @@
 //! Method and bound: monotone pieces ([`monotone`]: Lee & Preparata 1977; Garey, Johnson,
 //! Preparata & Tarjan 1978; de Berg et al., *Computational Geometry*, ch. 3), O(n log n) time
 //! and O(n) memory whatever the number of holes; ear clipping (`ear_clipping.rs`: Meisters 1975)
-//! for rings without holes of up to `CLIP_UP_TO` vertices, where it is quicker. Walks: the
+//! for rings without holes of up to 32 vertices (`CLIP_UP_TO`), where it is quicker. Walks: the
 //! same sweep over the copies moved symbolically into their sectors (`perturbed`, simulation
 //! of simplicity: Edelsbrunner & Mücke 1990), checked in O(N log N); if the check failed (never
 //! seen), the ear clipper of the bridged cycle ([`super::walks`]), O(N^2) to O(N^3).
 
-pub(crate) mod ear_clipping;
+mod ear_clipping;
 pub mod monotone;
 pub(crate) mod perturbed;
 
