@@ -51,7 +51,7 @@ validate=$(count_of 'minitri::geom::polygon::Polygon<P>::validated')
 minitri=$(count_of 'minitri::algo::minitri::triangulate_within')
 step1=$(either 'minitri::algo::minitri::degenerate::minimally_degenerate_and_mesh_until' \
   'minitri::algo::minitri::degenerate::minimally_degenerate_over_until')
-plain=$(count_of 'minitri::algo::plain_polygon_for_walking')
+plain=$(count_of 'minitri::algo::plain::polygon')
 mesh=$(count_of 'minitri::algo::minitri::expansion::Mesh::new')
 cones=$(count_of 'minitri::algo::minitri::expansion::double_cone')
 circle=$(count_of 'minitri::algo::minitri::circle::circle')
@@ -68,7 +68,7 @@ row "reading a line (JSON to exact decimals: \`read_line_feature\`)" "$read_line
 row "the exact grid (\`to_grid\`)" "$grid"
 row "validation (\`validated\`)" "$validate"
 row "MINITRI (\`triangulate_within\`)" "$minitri"
-row "- step 1: plain triangulation to walk (\`plain_polygon_for_walking\`)" "$plain"
+row "- step 1: plain triangulation to walk (\`plain::polygon\`)" "$plain"
 row "- step 1: its mesh (\`Mesh::new\`)" "$mesh"
 row "- step 1: the double cones (\`double_cone\`)" "$cones"
 row "- step 1 in all (\`minimally_degenerate_and_mesh_until\`)" "$step1"

@@ -21,8 +21,8 @@ mod common;
 use criterion::{
     criterion_group, criterion_main, BenchmarkId, Criterion, SamplingMode, Throughput,
 };
-use minitri::algo::ear;
 use minitri::algo::minitri::triangulate_within;
+use minitri::algo::plain;
 use minitri::{Polygon, Triangulation};
 use std::hint::black_box;
 use std::time::{Duration, Instant};
@@ -91,7 +91,7 @@ fn squares(c: &mut Criterion) {
     let (coords, hole_starts) = common::earcut_rings(&rings);
     let param = format!("{}_holes_n{}", p.holes(), p.len());
 
-    let plain = ear::triangulate(&p)
+    let plain = plain::triangulate(&p)
         .expect("ear handles holes")
         .triangles
         .len();
@@ -117,7 +117,7 @@ fn squares(c: &mut Criterion) {
         .measurement_time(Duration::from_secs(10))
         .throughput(Throughput::Elements(p.len() as u64));
     group.bench_with_input(BenchmarkId::new("ear", &param), &p, |b, p| {
-        b.iter(|| ear::triangulate(black_box(p)).expect("ear handles holes"))
+        b.iter(|| plain::triangulate(black_box(p)).expect("ear handles holes"))
     });
     group.bench_with_input(BenchmarkId::new("earcut", &param), &coords, |b, coords| {
         b.iter(|| common::earcut(black_box(coords), &hole_starts))
@@ -138,7 +138,7 @@ fn triangle_holes(c: &mut Criterion) {
         group.throughput(Throughput::Elements(p.len() as u64));
         let id = BenchmarkId::new("ear", format!("{}_holes_n{}", p.holes(), p.len()));
         group.bench_with_input(id, &p, |b, p| {
-            b.iter(|| ear::triangulate(black_box(p)).expect("ear handles holes"))
+            b.iter(|| plain::triangulate(black_box(p)).expect("ear handles holes"))
         });
     }
     group.finish();

@@ -19,7 +19,7 @@ use common::Shape;
 use criterion::{
     criterion_group, criterion_main, BenchmarkId, Criterion, SamplingMode, Throughput,
 };
-use minitri::algo::{ear, pseudo, pseudo_hull};
+use minitri::algo::{plain, pseudo, pseudo_hull};
 use std::hint::black_box;
 use std::time::Duration;
 
@@ -30,7 +30,7 @@ fn greedy(c: &mut Criterion) {
         for shape in [Shape::Star, Shape::Maze] {
             for n in [1_000, 10_000, 100_000, 1_000_000] {
                 let polygon = common::polygon(&shape.points(n, 7));
-                let start = ear::triangulate(&polygon).expect("plain");
+                let start = plain::triangulate(&polygon).expect("plain");
                 group.throughput(Throughput::Elements(polygon.len() as u64));
                 group.sample_size(if n >= 1_000_000 { 10 } else { 20 });
                 group.measurement_time(Duration::from_secs(if n >= 100_000 { 8 } else { 3 }));
@@ -38,7 +38,7 @@ fn greedy(c: &mut Criterion) {
                 if end_to_end {
                     group.bench_with_input(id, &polygon, |b, p| {
                         b.iter(|| {
-                            let t = ear::triangulate(black_box(p)).expect("plain");
+                            let t = plain::triangulate(black_box(p)).expect("plain");
                             pseudo::minimal(p, &t.triangles)
                         })
                     });

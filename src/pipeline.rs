@@ -6,7 +6,7 @@
 //! Complexity: that of reading and validating (O(n log n)) plus the chosen algorithm's.
 
 use crate::algo::{
-    asano, ear, minitri, pseudo, pseudo_hull, Algorithm, Pseudotriangulation, TriangulateError,
+    asano, minitri, plain, pseudo, pseudo_hull, Algorithm, Pseudotriangulation, TriangulateError,
     Triangulation,
 };
 use crate::feature::Identity;
@@ -376,7 +376,7 @@ pub fn triangulate_with<P: Coord>(
             crate::algo::touching(polygon, algorithm, options.dp_limit, deadline())
         }
         Algorithm::Asano => asano::triangulate(polygon, options.dp_limit),
-        Algorithm::Ear => ear::triangulate(polygon),
+        Algorithm::Ear => plain::triangulate(polygon),
         Algorithm::Pseudo | Algorithm::PseudoHull => Err(TriangulateError::WrongFunction {
             algorithm,
             makes: "a pseudotriangulation",
@@ -438,7 +438,7 @@ pub fn pseudotriangulate<P: Coord>(
         Algorithm::PseudoHull => pseudo_hull::pseudotriangulate(polygon),
         Algorithm::Pseudo => Ok(pseudo::minimal(
             polygon,
-            &ear::triangulate(polygon)?.triangles,
+            &plain::triangulate(polygon)?.triangles,
         )),
         Algorithm::Minitri | Algorithm::Asano | Algorithm::Ear => {
             Err(TriangulateError::WrongFunction {
@@ -484,7 +484,7 @@ pub fn solve<P: Coord>(polygon: &Polygon<P>, options: &Options) -> Result<Solved
                 triangles,
                 degenerate,
                 ..
-            } = ear::triangulate(polygon)?;
+            } = plain::triangulate(polygon)?;
             triangulation = Triangulation {
                 triangles,
                 degenerate,
@@ -507,7 +507,7 @@ pub fn solve<P: Coord>(polygon: &Polygon<P>, options: &Options) -> Result<Solved
 /// `pseudo` (minimal, inside the plain triangulation) or `pseudo-hull` (minimum, of the hull;
 /// past `--time-limit`, minimal, `pseudo`'s greedy on the hull, with `stopped`).
 fn solve_pseudo<P: Coord>(polygon: &Polygon<P>, options: &Options) -> Result<Solved, Error> {
-    let triangulation = ear::triangulate(polygon)?;
+    let triangulation = plain::triangulate(polygon)?;
     let mut result = if options.algorithm == Algorithm::PseudoHull {
         let deadline = options
             .time_limit

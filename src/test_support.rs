@@ -21,6 +21,19 @@ pub(crate) const U_SHAPE: [(i64, i64); 12] = [
     (3, 3),
 ];
 
+/// The 2 x 2 square with a flat vertex in the middle of every side, counter-clockwise from the
+/// origin.
+pub(crate) const FLAT_SQUARE: [(i64, i64); 8] = [
+    (0, 0),
+    (1, 0),
+    (2, 0),
+    (2, 1),
+    (2, 2),
+    (1, 2),
+    (0, 2),
+    (0, 1),
+];
+
 /// What the independent checker ([`crate::verify::check`]) finds wrong with `triangles` as a plain
 /// triangulation of `p` (no degenerate triangles claimed): nothing when it is one.
 pub(crate) fn plain_problems(p: &Polygon, triangles: Vec<[usize; 3]>) -> Vec<String> {

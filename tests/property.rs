@@ -18,7 +18,7 @@
 //! Either kind is used with its flat vertices, and with them removed.
 
 use crate::util::{chord, polygon_from_rings, xorshift};
-use minitri::algo::{asano, ear, minitri as chen_chang};
+use minitri::algo::{asano, minitri as chen_chang, plain};
 use minitri::geom::kernel::{cross, dot, Point};
 use minitri::{verify, Decimal, Polygon, RawPolygon};
 use proptest::prelude::*;
@@ -291,7 +291,7 @@ fn check_all(ring: &[(i64, i64)]) -> Result<(), TestCaseError> {
         "general method vs DP on {:?}",
         ring
     );
-    let plain = ear::triangulate(&poly).map_err(|e| TestCaseError::fail(e.to_string()))?;
+    let plain = plain::triangulate(&poly).map_err(|e| TestCaseError::fail(e.to_string()))?;
     prop_assert_eq!(plain.triangles.len(), n - 2);
     let report = verify::check(&poly, &plain);
     prop_assert!(
@@ -673,7 +673,7 @@ pub(crate) fn holed_recipe() -> impl Strategy<Value = HoledRecipe> {
 fn check_plain_with_holes(rings: &[Vec<(i64, i64)>]) -> Result<(), TestCaseError> {
     let poly = polygon_from_rings(rings).ok_or_else(|| TestCaseError::fail("invalid polygon"))?;
     let (n, w) = (poly.len(), poly.holes());
-    let t = ear::triangulate(&poly).map_err(|e| TestCaseError::fail(e.to_string()))?;
+    let t = plain::triangulate(&poly).map_err(|e| TestCaseError::fail(e.to_string()))?;
     prop_assert_eq!(t.triangles.len(), n + 2 * w - 2, "count on {:?}", rings);
     prop_assert!(t.degenerate.is_empty());
     let report = verify::check(&poly, &t);

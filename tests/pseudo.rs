@@ -14,14 +14,14 @@
 
 use crate::property::{config, general, holed, holed_recipe, rectilinear, without_flat};
 use crate::util::polygon_from_rings;
-use minitri::algo::{ear, pseudo, pseudo_hull, Algorithm};
+use minitri::algo::{plain, pseudo, pseudo_hull, Algorithm};
 use minitri::geom::kernel::{cross, Point};
 use minitri::verify::pseudo::check;
 use minitri::Polygon;
 use proptest::prelude::*;
 
 fn check_pseudo(poly: &Polygon, rings: &[Vec<(i64, i64)>]) -> Result<(), TestCaseError> {
-    let start = ear::triangulate(poly).map_err(|e| TestCaseError::fail(e.to_string()))?;
+    let start = plain::triangulate(poly).map_err(|e| TestCaseError::fail(e.to_string()))?;
     let result = pseudo::minimal(poly, &start.triangles);
     let report = check(poly, Algorithm::Pseudo, &result);
     prop_assert!(
@@ -217,7 +217,7 @@ fn the_cases_are_varied() {
         }
         general_count += 1;
         big += usize::from(poly.len() >= 12);
-        let start = ear::triangulate(&poly).expect("plain");
+        let start = plain::triangulate(&poly).expect("plain");
         let result = pseudo::minimal(&poly, &start.triangles);
         merged += result.faces.iter().filter(|f| f.cycle.len() > 3).count();
     }

@@ -14,7 +14,7 @@
 //!   as on their integer grid.
 
 use crate::property::{config, general, rectilinear, without_flat};
-use minitri::algo::{asano, ear, minitri as chen_chang};
+use minitri::algo::{asano, minitri as chen_chang, plain};
 use minitri::geom::repair::RepairKind;
 use minitri::{verify, Algorithm, AnyPolygon, Decimal, Format, Options, RawPolygon};
 use proptest::prelude::*;
@@ -101,7 +101,7 @@ fn counts(polygon: &AnyPolygon) -> Result<[usize; 3], TestCaseError> {
     minitri::with_polygon!(polygon, p => {
         let m = chen_chang::triangulate(p).map_err(|e| TestCaseError::fail(e.to_string()))?;
         let a = asano::triangulate(p, 40).map_err(|e| TestCaseError::fail(e.to_string()))?;
-        let e = ear::triangulate(p).map_err(|e| TestCaseError::fail(e.to_string()))?;
+        let e = plain::triangulate(p).map_err(|e| TestCaseError::fail(e.to_string()))?;
         for t in [&m, &a, &e] {
             let check = verify::check(p, t);
             prop_assert!(check.valid, "{:?}: {:?}", t.algorithm, check.problems);

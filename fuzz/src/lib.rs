@@ -6,7 +6,7 @@
 //! exact counts compared ([`check_polygon`]); and all the outcomes go through every writer, whose
 //! JSON and GeoJSON output must parse as JSON. A panic or a failed assertion is a finding.
 
-use minitri::algo::{asano, ear, minitri as chen_chang};
+use minitri::algo::{asano, minitri as chen_chang, plain};
 use minitri::io::read::RawPolygon;
 use minitri::io::write::{svg::Style, OutputFormat};
 use minitri::pipeline::{self, Options, Outcome};
@@ -97,7 +97,7 @@ pub fn check_polygon(polygon: &Polygon) {
 /// # Panics
 /// When it does not: that is a finding.
 pub fn check_ear<P: Coord>(polygon: &Polygon<P>) {
-    let ear = ear::triangulate(polygon).expect("ear triangulates every valid polygon");
+    let ear = plain::triangulate(polygon).expect("ear triangulates every valid polygon");
     let report = verify::check(polygon, &ear);
     assert!(
         report.valid,

@@ -121,7 +121,7 @@ pub fn triangulate<P: Coord>(
         None,
     )
     .expect("`n-1 -> 0` is an edge, so the whole polygon always has a triangulation");
-    let degenerate = super::t_junctions(polygon, &walk.triangles);
+    let degenerate = super::t_junctions(polygon, &walk.triangles, super::Junctions::Rings);
     debug_assert_eq!(
         degenerate.len(),
         walk.dummies,

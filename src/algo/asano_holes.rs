@@ -194,7 +194,7 @@ pub fn triangulate<P: Coord>(
     // A valid polygon has a triangulation, and its sides join every hole to another ring: some
     // cut has one (see the module documentation).
     let best = best.expect("some cut of a valid polygon has a triangulation");
-    let degenerate = super::t_junctions(polygon, &best.triangles);
+    let degenerate = super::t_junctions(polygon, &best.triangles, super::Junctions::Rings);
     debug_assert_eq!(
         degenerate.len(),
         best.dummies,

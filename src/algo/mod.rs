@@ -1,8 +1,8 @@
 //! Triangulation algorithms. Each returns a plain [`Triangulation`]; writers consume it.
 //!
-//! - [`ear`]: the plain triangulation into n + 2w - 2 nondegenerate triangles (`--algorithm ear`),
-//!   by [`monotone`] pieces; ear clipping for small pieces.
-//! - [`monotone`]: O(n log n) triangulation by monotone pieces, safe with flat vertices.
+//! - [`plain`]: the plain triangulation into n + 2w - 2 nondegenerate triangles (`--algorithm
+//!   ear`): monotone pieces in O(n log n), ear clipping for small polygons, touching rings
+//!   through copies moved into their sectors.
 //! - [`minitri`]: the exact minimum by Chen & Chang's MINITRI.
 //! - [`asano`]: the exact minimum by the dynamic program of Asano, Asano & Pinter.
 //! - [`asano_holes`]: the same for polygons with 1 or 2 holes, by cutting each hole open.
@@ -14,18 +14,15 @@
 pub mod asano;
 pub mod asano_holes;
 pub mod chords;
-pub mod ear;
 pub(crate) mod mesh;
 pub mod minitri;
-pub mod monotone;
 pub(crate) mod number_hash;
-pub(crate) mod perturbed;
+pub mod plain;
 pub mod pseudo;
 pub mod pseudo_hull;
 pub mod walks;
 
 use crate::geom::kernel::Coord;
-use std::cmp::Ordering;
 use std::fmt;
 
 /// Which algorithm made (or should make) a triangulation.
@@ -264,145 +261,86 @@ impl HullCounts {
     }
 }
 
+/// Which vertices [`t_junctions`] looks at, and which copy it names at a touch point.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum Junctions<'a> {
+    /// Rings that do not touch: every vertex, each alone at its point.
+    Rings,
+    /// Boundary walks of touching rings ([`walks`]): only these stored vertices, and of the
+    /// copies at one point the one whose closed angle holds the triangle (one per point).
+    Walks(&'a [usize]),
+}
+
 /// The degenerate triangles a set of triangles uses: for every vertex lying strictly inside a
 /// triangle side, the triple (its neighbour towards one end of the side, it, its neighbour
 /// towards the other end), neighbours taken among the side's end points and the vertices on it.
+/// On walks ([`Junctions::Walks`]) the vertex is the copy whose closed angle holds the triangle
+/// (its two ends and its apex), one per point.
 ///
 /// Every such vertex saves one triangle: the triangle corners cover its interior angle minus pi,
 /// so summing angles gives `triangles = n + 2w - 2 - (number of these vertices)`. The triples are
 /// minimally degenerate (nothing lies between their ends) and pairwise independent, since they
 /// all occur in one triangulation.
 ///
-/// Complexity: O(T n) (a scan of all vertices per side); for the O(n^3) DP that is negligible.
+/// Complexity: O(T c) for T triangles and c vertices looked at (a scan per side); for the
+/// O(n^3) DP that is negligible.
 pub(crate) fn t_junctions<P: Coord>(
     polygon: &crate::Polygon<P>,
     triangles: &[[usize; 3]],
+    among: Junctions<'_>,
 ) -> Vec<[usize; 3]> {
     use crate::geom::kernel::strictly_between;
     let mut out = Vec::new();
     for t in triangles {
         for k in 0..3 {
-            let (s, e) = (t[k], t[(k + 1) % 3]);
+            let (s, e, apex) = (t[k], t[(k + 1) % 3], t[(k + 2) % 3]);
             let (ps, pe) = (polygon.point(s), polygon.point(e));
-            let mut inside: Vec<usize> = (0..polygon.len())
-                .filter(|&v| strictly_between(ps, polygon.point(v), pe))
-                .collect();
+            let on_side = |&v: &usize| strictly_between(ps, polygon.point(v), pe);
+            let mut inside: Vec<usize> = match among {
+                Junctions::Rings => (0..polygon.len()).filter(on_side).collect(),
+                Junctions::Walks(candidates) => {
+                    let pa = polygon.point(apex);
+                    let holds = |v: usize, q: P| polygon.angle_holds(v, q);
+                    candidates
+                        .iter()
+                        .copied()
+                        .filter(|v| on_side(v) && holds(*v, ps) && holds(*v, pe) && holds(*v, pa))
+                        .collect()
+                }
+            };
             if inside.is_empty() {
                 continue;
             }
             inside.sort_by(|&u, &v| P::cmp_dist(ps, polygon.point(u), polygon.point(v)));
-            push_chain(&mut out, s, inside, e);
+            if let Junctions::Walks(_) = among {
+                inside.dedup_by_key(|v| polygon.point(*v)); // copies at one point
+            }
+            let chain: Vec<usize> = std::iter::once(s)
+                .chain(inside)
+                .chain(std::iter::once(e))
+                .collect();
+            out.extend(chain.windows(3).map(|w| [w[0], w[1], w[2]]));
         }
     }
     out
 }
 
-/// The degenerate triangles of a side from `s` to `e` with the vertices `inside` it, in order from
-/// `s`: one `[a, b, c]` per inside vertex `b`, with `a` and `c` its neighbours along the side.
-pub(crate) fn push_chain(out: &mut Vec<[usize; 3]>, s: usize, inside: Vec<usize>, e: usize) {
-    let chain: Vec<usize> = std::iter::once(s)
-        .chain(inside)
-        .chain(std::iter::once(e))
-        .collect();
-    out.extend(chain.windows(3).map(|w| [w[0], w[1], w[2]]));
-}
+/// Old names of [`plain`]'s entry points, kept only for files other changes own
+/// (`pseudo_hull.rs`, `minitri/ray_shooting.rs`'s tests): to be removed once they call
+/// [`plain::rings`] and [`plain::polygon`].
+pub(crate) use plain::polygon as plain_polygon_for_walking;
 
-/// A plain triangulation of one counter-clockwise simple polygon given as its cycle of points
-/// (flat vertices allowed): `len - 2` positive triangles as indices into `pts`. Ear clipping for
-/// small polygons, where it is quickest, monotone pieces (O(n log n)) otherwise.
+/// [`plain::rings`] of one cycle: an old name kept only for `pseudo_hull.rs` (owned by another
+/// change), to be removed once it calls [`plain::rings`].
 pub(crate) fn plain<P: Coord>(pts: &[P]) -> Vec<[usize; 3]> {
-    if pts.len() <= ear::CLIP_UP_TO {
-        ear::clip(pts)
-    } else {
-        monotone::triangulate_cycle(pts)
-    }
+    plain::rings(pts, &[0])
 }
 
-/// A plain triangulation of a polygon with holes given as rings of points one after another
-/// (`ring_starts` as in [`monotone::triangulate_rings`]: outer ring counter-clockwise first, holes
-/// clockwise; flat vertices allowed): `n + 2w - 2` positive triangles as indices into `pts`. Without
-/// holes this is [`plain`]; with holes, monotone pieces in O(n log n).
-///
-/// # Panics
-/// As [`monotone::triangulate_rings`], if `ring_starts` does not describe rings of at least 3
-/// points.
-pub(crate) fn plain_rings<P: Coord>(pts: &[P], ring_starts: &[usize]) -> Vec<[usize; 3]> {
-    if ring_starts.len() == 1 {
-        plain(pts)
-    } else {
-        monotone::triangulate_rings(pts, ring_starts)
-    }
-}
-
-/// A plain triangulation of a valid polygon, holes included: `n + 2w - 2` positive triangles as
-/// stored vertex indices ([`plain_rings`] on its rings).
-pub(crate) fn plain_polygon<P: Coord>(polygon: &crate::Polygon<P>) -> Vec<[usize; 3]> {
-    plain_rings(polygon.points(), polygon.ring_starts())
-}
-
-/// A plain triangulation of a valid polygon, as [`plain_polygon`], for walking
-/// ([`minitri::expansion`]): swept along x when the bounding box is more than twice as wide as
-/// tall, else along y as always.
-///
-/// The monotone pieces are swept bottom to top, so a long horizontal corridor is one wide piece
-/// whose walls, vertices at nearly the same heights, get joined by long fans; walks through
-/// such fans are slow, and flipping them towards Delaunay takes quadratically many flips (the
-/// `bars` benchmark: 10 million flips for 53,000 vertices). Sweeping along the corridor instead
-/// (the polygon turned a quarter-turn, `(x, y) -> (MAX_COORD - y, x)`: exact, orientation and
-/// grid kept, the stored indices unchanged) meets its walls' vertices alternately: short fans
-/// (40,000 flips there). A corridor crossing the sweep elsewhere in the same polygon is still
-/// slow, never wrong. A polygon about as wide as tall keeps the usual sweep, which needs no turned
-/// copy of its points (16 bytes per vertex at the peak).
-pub(crate) fn plain_polygon_for_walking<P: Coord>(polygon: &crate::Polygon<P>) -> Vec<[usize; 3]> {
-    if let Some(plain) = polygon.take_walking_plain() {
-        return plain; // the same triangles, made while the polygon was validated
-    }
-    if polygon.len() <= ear::CLIP_UP_TO {
-        return plain_polygon(polygon);
-    }
-    try_plain_polygon_for_walking(polygon)
-        .expect("monotone triangulation of a valid polygon: invariant broken")
-}
-
-/// [`plain_polygon_for_walking`] of a polygon of more than [`ear::CLIP_UP_TO`] vertices whose
-/// validation is still running: the same triangles if it turns out valid, and on any rings no
-/// panic and an end in the same time bound (`None` where they break the monotone sweep's
-/// contract; `None` for small polygons too).
-pub(crate) fn try_plain_polygon_for_walking<P: Coord>(
-    polygon: &crate::Polygon<P>,
-) -> Option<Vec<[usize; 3]>> {
-    if polygon.len() <= ear::CLIP_UP_TO {
-        return None;
-    }
-    match turned_for_walking(polygon) {
-        None => monotone::try_triangulate_rings(polygon.points(), polygon.ring_starts()),
-        Some(turned) => monotone::try_triangulate_rings(&turned, polygon.ring_starts()),
-    }
-}
-
-/// The points turned a quarter-turn when the bounding box is more than twice as wide as tall
-/// (see [`plain_polygon_for_walking`]), else `None`.
-pub(crate) fn turned_for_walking<P: Coord>(polygon: &crate::Polygon<P>) -> Option<Vec<P>> {
-    let pts = polygon.points();
-    // The points of least and greatest x, then y.
-    let mut ends = [pts[0]; 4];
-    for &p in pts {
-        for (k, end) in ends.iter_mut().enumerate() {
-            let order = if k < 2 {
-                P::cmp_x(p, *end)
-            } else {
-                P::cmp_y(p, *end)
-            };
-            if order == [Ordering::Less, Ordering::Greater][k % 2] {
-                *end = p;
-            }
-        }
-    }
-    let (width, height) = (
-        ends[1].offset_f64(ends[0])[0],
-        ends[3].offset_f64(ends[2])[1],
-    );
-    (width > 2.0 * height).then(|| pts.iter().map(|p| p.quarter_turn()).collect())
+/// The `ear` algorithm's old module path, [`plain::triangulate`]: kept only for `pseudo.rs`'s
+/// example (owned by another change), to be removed once it names [`plain`].
+#[doc(hidden)]
+pub mod ear {
+    pub use super::plain::triangulate;
 }
 
 /// A triangulation of a polygon with touching rings ([`walks`]).
@@ -451,7 +389,7 @@ pub(crate) fn touching<P: Coord>(
     let (triangles, degenerate) = match flattened {
         Some(found) => found,
         None => (
-            walks::plain(polygon).map_err(|e| TriangulateError::Touching {
+            plain::walks(polygon).map_err(|e| TriangulateError::Touching {
                 algorithm,
                 detail: e.to_string(),
             })?,

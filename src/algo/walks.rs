@@ -5,11 +5,11 @@
 //! hole walks clockwise, interior on the left of every edge; stored vertices at one point
 //! ("copies") have pairwise interior-disjoint angles (sectors) separated by wedges of positive
 //! angle outside the region; no two consecutive stored vertices share a point.
-//! Output guarantee: [`plain`] gives `n + 2w - 2` nondegenerate counter-clockwise triangles (n
-//! stored vertices, copies counted, w hole walks) covering the region, as stored indices, each
-//! corner the copy whose sector holds the triangle there; [`flattened`] the same with
-//! `n + 2w - 2 - d` triangles and `d` degenerate ones (T-junctions), never more than [`plain`];
-//! [`minimum`] the exact minimum of a
+//! Output guarantee: [`flattened`] gives `n + 2w - 2 - d` nondegenerate counter-clockwise
+//! triangles (n stored vertices, copies counted, w hole walks) and `d` degenerate ones
+//! (T-junctions) covering the region, as stored indices, each corner the copy whose sector holds
+//! the triangle there, never more than the plain triangulation of the walks
+//! (`crate::algo::plain::walks`, `n + 2w - 2`); [`minimum`] the exact minimum of a
 //! polygon whose rings all join the outer ring (one walk), by the DP of [`super::asano`] over the
 //! walk (`asano`'s method; `minitri` runs Chen & Chang's steps on the walks instead). Every decision is an exact orientation test.
 //!
@@ -17,10 +17,10 @@
 //! inside that copy's closed angle, crosses no edge properly, and passes each point it contains
 //! inside the closed angle of one copy there (so it stays in the closed region: away from
 //! vertices nothing but a proper crossing can take it out, at a vertex it stays in that copy's
-//! sector). [`plain`] is the monotone sweep of [`super::monotone`] on the walks with every copy
-//! moved symbolically into its sector (`algo/perturbed.rs`: the moved walks are simple rings
-//! with the same triangulations), checked by `tiles`; the ear clipper below remains only as
-//! its fallback, never taken in the tests.
+//! sector). The plain triangulation of the walks is the monotone sweep on the walks with every
+//! copy moved symbolically into its sector (`crate::algo::plain::walks`); the ear clipper of
+//! the bridged cycle below (`clipped_bridged`) remains only as its fallback, never taken in
+//! the tests.
 //!
 //! [`flattened`] joins each hole walk to the outer walk by a bridge (a chord from the hole's
 //! highest point, as earcut does; the walk then passes both ends twice) and clips ears: an ear
@@ -46,10 +46,9 @@
 //! an ear whose clipping makes a neighbour flat (a round of O(1) tests), any ear only when there
 //! is none. The degenerate triangles are read off the triangles (a scan of the dropped vertices
 //! per side); if they do not number exactly the dropped positions, or no ear is found, it returns
-//! `Err` and the caller takes [`plain`]: never a wrong answer.
+//! `Err` and the caller takes the plain triangulation: never a wrong answer.
 //!
-//! Complexity: O(n log n) for [`plain`] (the sweep, the sort finding the copies, the check);
-//! O(n^2) for [`flattened`] in practice (each ear test scans the remaining vertices; the greedy
+//! Complexity: O(n^2) for [`flattened`] in practice (each ear test scans the remaining vertices; the greedy
 //! order adds an O(n) round of O(1) tests per ear, the reading off O(T d)), O(n^3) worst case,
 //! cut short by its deadline; it runs the plain order too only up to [`BOTH_ORDERS_UP_TO`]
 //! positions. O(n^3) time and O(n^2) memory for [`minimum`] (chord table by the angular sweep
@@ -58,7 +57,7 @@
 
 use super::asano::solve_walk;
 use super::chords::ChordTable;
-use super::Stopped;
+use super::{t_junctions, Junctions, Stopped};
 use crate::geom::kernel::{cross, dot, in_closed_wedge, properly_cross, strictly_between, Coord};
 use crate::geom::polygon::Polygon;
 #[cfg(test)]
@@ -81,98 +80,27 @@ fn strictly_inside<P: Coord>(prev: P, w: P, next: P, t: P) -> bool {
         && !(cross(w, next, t) == 0 && dot(w, next, t) > 0)
 }
 
-/// A plain triangulation of a polygon with touching rings (see the module documentation).
+/// The ear clipper over the bridged cycle (see the module documentation): the fallback of the
+/// walks' plain triangulation (`crate::algo::plain::walks`) when its sweep fails its check
+/// (not seen in the tests).
 ///
 /// # Errors
 /// [`WalksError`] if no ear or bridge is found, which the theory excludes (a broken invariant,
 /// reported rather than a wrong answer).
-pub fn plain<P: Coord>(polygon: &Polygon<P>) -> Result<Vec<[usize; 3]>, WalksError> {
-    if let Some(triangles) = swept(polygon) {
-        return Ok(triangles);
-    }
-    // Not seen in the tests (see `swept`): the ear clipper of the bridged cycle.
+pub(crate) fn clipped_bridged<P: Coord>(polygon: &Polygon<P>) -> Result<Triangles, WalksError> {
     let cycle = bridged(polygon, None)?;
     clip(polygon, &cycle, false, false, None).map(|(triangles, _)| triangles)
 }
 
-/// The monotone sweep of [`super::monotone`] over the walks, the copies of touch points moved
-/// symbolically into their sectors (`algo/perturbed.rs`): O(N log N). `None` when the result
-/// fails [`tiles`] (the theory excludes it; checked so that a mistake costs time, not a wrong
-/// answer).
-pub(crate) fn swept<P: Coord>(polygon: &Polygon<P>) -> Option<Triangles> {
-    let turned = super::turned_for_walking(polygon);
-    let moved = super::perturbed::moved(polygon, turned.as_deref());
-    let triangles = super::monotone::try_triangulate_rings(&moved, polygon.ring_starts())?;
-    tiles(polygon, &triangles).then_some(triangles)
-}
-
-/// Whether `triangles` triangulate the walks: `N + 2w - 2` of them, each of positive area, and
-/// their boundary, as a chain of stored-index edges, exactly the walks (every walk edge once in
-/// its direction, every other edge as often in each direction). Then every point of the plane
-/// off the edges lies in as many triangles as the walks wind around it (a positive triangle
-/// counts once, and the count changes only across the chain's boundary): one inside the region,
-/// none outside; and around each copy the triangles turn from its next edge to its previous one
-/// through its own sector alone (their angles sum to the sectors'). O(T log T).
-fn tiles<P: Coord>(polygon: &Polygon<P>, triangles: &[[usize; 3]]) -> bool {
-    let n = polygon.len();
-    if triangles.len() + 2 != n + 2 * polygon.holes() {
-        return false;
-    }
-    let pt = |i: usize| polygon.point(i);
-    // The edges bucketed by their smaller end (a counting sort), each bucket then sorted: the
-    // buckets are as small as the vertices' degrees.
-    let mut start = vec![0usize; n + 1];
-    for t in triangles {
-        if t.iter().any(|&v| v >= n) || cross(pt(t[0]), pt(t[1]), pt(t[2])) <= 0 {
-            return false;
-        }
-        for k in 0..3 {
-            start[t[k].min(t[(k + 1) % 3]) + 1] += 1;
-        }
-    }
-    for v in 0..n {
-        start[v + 1] += start[v];
-    }
-    let mut fill = start.clone();
-    let mut edges: Vec<(usize, i32)> = vec![(0, 0); start[n]];
-    for t in triangles {
-        for k in 0..3 {
-            let (a, b) = (t[k], t[(k + 1) % 3]);
-            let (low, entry) = if a < b { (a, (b, 1)) } else { (b, (a, -1)) };
-            edges[fill[low]] = entry;
-            fill[low] += 1;
-        }
-    }
-    let mut walk_edges = 0;
-    for a in 0..n {
-        let bucket = &mut edges[start[a]..start[a + 1]];
-        bucket.sort_unstable_by_key(|&(b, _)| b);
-        for run in bucket.chunk_by(|x, y| x.0 == y.0) {
-            let b = run[0].0;
-            let net: i32 = run.iter().map(|e| e.1).sum();
-            let expected = if polygon.next(a) == b {
-                1
-            } else if polygon.next(b) == a {
-                -1
-            } else {
-                0
-            };
-            if net != expected {
-                return false;
-            }
-            walk_edges += usize::from(expected != 0);
-        }
-    }
-    walk_edges == n
-}
-
 /// A triangulation of a polygon with touching rings with degenerate triangles where the
 /// bridged cycle runs straight through a vertex (see the module documentation): the
-/// nondegenerate triangles and the degenerate ones, at most as many triangles as [`plain`].
+/// nondegenerate triangles and the degenerate ones, at most as many triangles as the plain
+/// triangulation (`crate::algo::plain::walks`).
 ///
 /// # Errors
-/// [`WalksError::TimeLimit`] past `deadline`; as [`plain`]; or when the degenerate triangles read off the result do not
-/// account for the triangles saved (a broken invariant; the caller falls back to [`plain`]).
+/// [`WalksError::TimeLimit`] past `deadline`; as `clipped_bridged`; or when the degenerate
+/// triangles read off the result do not account for the triangles saved (a broken invariant;
+/// the caller falls back to the plain triangulation).
 pub fn flattened<P: Coord>(
     polygon: &Polygon<P>,
     deadline: Option<Instant>,
@@ -201,7 +129,7 @@ fn flattened_clip<P: Coord>(
     let mut candidates: Vec<usize> = dropped.iter().map(|&k| cycle[k]).collect();
     candidates.sort_unstable();
     candidates.dedup();
-    let degenerate = junctions_among(polygon, &triangles, &candidates);
+    let degenerate = t_junctions(polygon, &triangles, Junctions::Walks(&candidates));
     if degenerate.len() != dropped.len() || triangles.len() + dropped.len() + 2 != cycle.len() {
         return Err(WalksError::Unaccounted {
             found: degenerate.len(),
@@ -500,59 +428,18 @@ pub fn minimum<P: Coord>(
             Stopped::Touching // not seen: a valid walk always has a triangulation
         });
     };
-    let degenerate = t_junctions(polygon, &walk.triangles);
+    let all: Vec<usize> = (0..n).collect();
+    let degenerate = t_junctions(polygon, &walk.triangles, Junctions::Walks(&all));
     if degenerate.len() != walk.dummies {
         return Err(Stopped::Touching); // not seen; the caller falls back
     }
     Ok((walk.triangles, degenerate))
 }
 
-/// The degenerate triangles a set of triangles of the walks uses: for each triangle side and
-/// each point strictly inside it, the copy there whose closed angle holds the triangle, with its
-/// neighbours along the side (as [`super::t_junctions`], one copy per point).
-pub(crate) fn t_junctions<P: Coord>(
-    polygon: &Polygon<P>,
-    triangles: &[[usize; 3]],
-) -> Vec<[usize; 3]> {
-    let all: Vec<usize> = (0..polygon.len()).collect();
-    junctions_among(polygon, triangles, &all)
-}
-
-/// [`t_junctions`] with only the stored vertices `candidates` considered: O(T c) for T triangles
-/// and c candidates.
-fn junctions_among<P: Coord>(
-    polygon: &Polygon<P>,
-    triangles: &[[usize; 3]],
-    candidates: &[usize],
-) -> Vec<[usize; 3]> {
-    let wedge = |v: usize, target: P| polygon.angle_holds(v, target);
-    let mut out = Vec::new();
-    for t in triangles {
-        for k in 0..3 {
-            let (s, e, apex) = (t[k], t[(k + 1) % 3], t[(k + 2) % 3]);
-            let (ps, pe, pa) = (polygon.point(s), polygon.point(e), polygon.point(apex));
-            let mut inside: Vec<usize> = candidates
-                .iter()
-                .copied()
-                .filter(|&v| {
-                    let q = polygon.point(v);
-                    strictly_between(ps, q, pe) && wedge(v, ps) && wedge(v, pe) && wedge(v, pa)
-                })
-                .collect();
-            if inside.is_empty() {
-                continue;
-            }
-            inside.sort_by(|&u, &v| P::cmp_dist(ps, polygon.point(u), polygon.point(v)));
-            inside.dedup_by_key(|v| polygon.point(*v));
-            super::push_chain(&mut out, s, inside, e);
-        }
-    }
-    out
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::algo::plain::perturbed::{swept, tiles};
     use crate::test_support::{raw, xorshift};
 
     /// Random touching polygons on the grid 0..=8: a square with a few vertices added, and 1 to
@@ -733,7 +620,7 @@ mod tests {
             checked += 1;
             let key = |m: &crate::algo::minitri::degenerate::Degenerate| (m.a, m.b, m.c);
             let mut swept = minimally_degenerate_by_sweep(&p);
-            let base = plain(&p).expect("plain");
+            let base = crate::algo::plain::walks(&p).expect("plain");
             let (mut walked, _, unexamined) = minimally_degenerate_over_until(&p, base, None);
             assert_eq!(unexamined, 0);
             swept.sort_by_key(key);

@@ -148,7 +148,7 @@ pub struct Polygon<P = Point> {
     /// is stored more than once); empty otherwise (all points distinct).
     copy: Vec<bool>,
     /// A plain triangulation for step 1's walks, made while the polygon was validated (large
-    /// polygons, [`crate::algo::plain_polygon_for_walking`]), until taken.
+    /// polygons, [`crate::algo::plain::polygon`]), until taken.
     walking_plain: TakeOnce<Vec<[usize; 3]>>,
 }
 
@@ -400,7 +400,7 @@ impl<P: Coord> Polygon<P> {
         // A large polygon is triangulated for step 1's walks on a second thread while it is
         // validated: the two sweeps take about as long each (0.9-1.0 s at 10^6 vertices). The
         // triangulation of rings not yet known valid never panics and always ends
-        // (`monotone::try_triangulate_rings`), and it is kept only if the polygon is valid and
+        // (`plain::try_polygon`), and it is kept only if the polygon is valid and
         // its rings do not touch (touching rings are relinked into walks, another polygon).
         // On one thread (`--jobs 1`) nothing would overlap: an invalid polygon would only be
         // triangulated for nothing.
@@ -409,7 +409,7 @@ impl<P: Coord> Polygon<P> {
         let (contacts, plain) = if overlap {
             rayon::join(
                 || validate::touching(&self),
-                || crate::algo::try_plain_polygon_for_walking(&self),
+                || crate::algo::plain::try_polygon(&self),
             )
         } else {
             (validate::touching(&self), None)

@@ -26,7 +26,7 @@
 //! still held, which `tests/property.rs` keeps watching.
 //!
 //! Complexity: a plain triangulation (O(n log n), swept along x when the bounding box is more
-//! than twice as wide as tall: `crate::algo::plain_polygon_for_walking`), at most `4 n` edge
+//! than twice as wide as tall: `crate::algo::plain::polygon`), at most `4 n` edge
 //! flips to fatten it, then work proportional to the triangles met inside each reflex vertex's
 //! double cone where both cones may still see a vertex, near-linear on typical polygons (on
 //! random star polygons about 40-50 triangle visits per vertex from 10^4 to 10^6 vertices; see
@@ -185,13 +185,13 @@ pub fn minimally_degenerate_and_mesh_until<P: Coord>(
     polygon: &Polygon<P>,
     deadline: Option<std::time::Instant>,
 ) -> (Vec<Degenerate>, Vec<[usize; 3]>, usize) {
-    let plain = crate::algo::plain_polygon_for_walking(polygon);
+    let plain = crate::algo::plain::polygon(polygon);
     minimally_degenerate_over_until(polygon, plain, deadline)
 }
 
 /// [`minimally_degenerate_and_mesh_until`] over a given plain triangulation `plain` of the
 /// polygon (counter-clockwise triangles of stored vertices covering it). For touching rings,
-/// the walks' plain triangulation ([`crate::algo::walks::plain`]): a copy of a touch point is a
+/// the walks' plain triangulation (`crate::algo::plain::walks`): a copy of a touch point is a
 /// vertex of its own with its own fan of triangles inside its sector, so the mesh is that of the
 /// polygon with each copy moved into its sector, and the expansion never passes through a
 /// vertex (it stops at the nearest one in each direction); the tests compare the result with
@@ -211,7 +211,7 @@ pub fn minimally_degenerate_with<P: Coord>(
     polygon: &Polygon<P>,
     policy: RayPolicy,
 ) -> Vec<Degenerate> {
-    let plain = crate::algo::plain_polygon_for_walking(polygon);
+    let plain = crate::algo::plain::polygon(polygon);
     minimally_degenerate_over_with(polygon, plain, None, policy).0
 }
 

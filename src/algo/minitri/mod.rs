@@ -31,7 +31,7 @@ pub mod ray_shooting;
 pub mod small;
 mod staircase;
 
-use super::{walks, Algorithm, Stopped, TriangulateError, Triangulation};
+use super::{Algorithm, Stopped, TriangulateError, Triangulation};
 use crate::geom::kernel::Coord;
 use crate::geom::polygon::Polygon;
 use std::time::{Duration, Instant};
@@ -133,7 +133,7 @@ pub fn triangulate_general<P: Coord>(
 
 /// Chen & Chang's steps on the boundary walks of touching rings (`crate::algo::walks`,
 /// `docs/touching.md`), a copy of a touch point being a vertex of its own. Step 1 by triangular
-/// expansion over the plain triangulation of the walks ([`walks::plain`];
+/// expansion over the plain triangulation of the walks (`crate::algo::plain::walks`;
 /// [`degenerate::minimally_degenerate_over_until`]: a copy has its own fan of triangles), which
 /// is also the one the chosen triangles are cut into ([`cut`]). On one walk (a weakly simple
 /// polygon, stored vertices in walk order), steps 2 and 3 as for a simple polygon, the walk
@@ -151,7 +151,7 @@ pub fn triangulate_walks<P: Coord>(
     polygon: &Polygon<P>,
     deadline: Option<Instant>,
 ) -> Result<Triangulation, TriangulateError> {
-    let plain = walks::plain(polygon).map_err(|e| TriangulateError::Touching {
+    let plain = crate::algo::plain::walks(polygon).map_err(|e| TriangulateError::Touching {
         algorithm: Algorithm::Minitri,
         detail: e.to_string(),
     })?;

@@ -17,12 +17,12 @@
 //! On its 180-degree side a chosen middle vertex `b` is straight (its neighbours in the piece
 //! are `a` and `c`, collinear with it): it is dropped from that piece, which then has the side
 //! `a c` with `b` inside it, the T-junction that saves a triangle. Input flat vertices that are
-//! not chosen middles stay, and the plain triangulation (`crate::algo::plain`) never makes a
+//! not chosen middles stay, and the plain triangulation (`crate::algo::plain::rings`) never makes a
 //! zero-area triangle at them. Each piece with `n_i` vertices gives `n_i - 2` triangles,
 //! `n - 2 - d` in all.
 //!
 //! Complexity: O(n + K log K) to sort the diagonals and walk the boundary, plus O(n_i log n_i)
-//! for each piece (`crate::algo::plain`).
+//! for each piece (`crate::algo::plain::rings`).
 
 use super::degenerate::Degenerate;
 use crate::algo::plain;
@@ -122,5 +122,9 @@ fn triangulate_piece<P: Coord>(
     }
     piece.clear();
     piece.extend(keep.iter().map(|&i| polygon.point(i)));
-    triangles.extend(plain(piece).into_iter().map(|t| t.map(|i| keep[i])));
+    triangles.extend(
+        plain::rings(piece, &[0])
+            .into_iter()
+            .map(|t| t.map(|i| keep[i])),
+    );
 }

@@ -392,7 +392,7 @@ fn expansion_matches_the_sweep_on_stars() {
 #[test]
 fn flipped_mesh_is_a_triangulation() {
     use super::expansion::Mesh;
-    use crate::algo::monotone;
+    use crate::algo::plain::monotone;
     let mut rnd = crate::test_support::xorshift(0x5eed_f11b_0000_0001u64);
     let mut polygons: Vec<Polygon> = Vec::new();
     for _ in 0..1500 {
@@ -412,7 +412,7 @@ fn flipped_mesh_is_a_triangulation() {
     let mut flipped = 0;
     for p in &polygons {
         for cap in [0, 1, 5, 4 * p.len(), 100 * p.len()] {
-            let mut mesh = Mesh::new(p, monotone::triangulate_cycle(p.points()));
+            let mut mesh = Mesh::new(p, monotone::triangulate_rings(p.points(), &[0]));
             flipped += mesh.flip_towards_delaunay(p, cap);
             mesh.check_invariants(p);
             assert_eq!(mesh.triangles().len(), p.len() - 2);
@@ -488,7 +488,7 @@ fn bars_ring(columns: usize, seed: u64, tall: bool) -> Vec<(i64, i64)> {
 #[test]
 fn wide_polygons_are_swept_along_their_length_and_found_alike() {
     // A wide polygon's walking mesh comes from the monotone sweep turned a quarter-turn
-    // (`plain_polygon_for_walking`); its tall twin's from the plain sweep. Both meshes must be
+    // (`plain::polygon`); its tall twin's from the plain sweep. Both meshes must be
     // triangulations, and the expansion over either must find what the sweep oracle finds.
     let mut counts = [0, 0];
     for seed in 1..=150u64 {
@@ -497,7 +497,7 @@ fn wide_polygons_are_swept_along_their_length_and_found_alike() {
         for tall in [false, true] {
             let ring = bars_ring(columns, seed, tall);
             let p = polygon(&[&ring]);
-            let problems = plain_problems(&p, crate::algo::plain_polygon_for_walking(&p));
+            let problems = plain_problems(&p, crate::algo::plain::polygon(&p));
             assert!(problems.is_empty(), "seed {seed} tall {tall}: {problems:?}");
             found[usize::from(tall)] = checked_against_the_sweep(&p, &ring).len();
         }
@@ -1089,7 +1089,7 @@ fn the_mesh_made_while_validating_is_the_mesh() {
         let p = pool.install(|| polygon(&rings));
         let made = p.take_walking_plain().expect("made while validating");
         assert!(p.take_walking_plain().is_none());
-        assert_eq!(crate::algo::plain_polygon_for_walking(&p), made);
+        assert_eq!(crate::algo::plain::polygon(&p), made);
         let fresh = polygon(&rings);
         let t = super::triangulate_within(&fresh, None).unwrap();
         assert!(crate::verify::check(&p, &t).valid);
@@ -1272,9 +1272,9 @@ fn over_the_walks_mesh_policies_agree<P: Coord>(p: &Polygon<P>, what: &str) {
     swept.sort_by_key(key);
     for policy in [RayPolicy::WalkOnly, RayPolicy::ShootOnly, RayPolicy::Hybrid] {
         let plain = if p.touches() > 0 {
-            crate::algo::walks::plain(p).unwrap()
+            crate::algo::plain::walks(p).unwrap()
         } else {
-            crate::algo::plain_polygon_for_walking(p)
+            crate::algo::plain::polygon(p)
         };
         let (mut found, _, unexamined) = minimally_degenerate_over_with(p, plain, None, policy);
         assert_eq!(unexamined, 0);

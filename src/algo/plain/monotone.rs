@@ -235,17 +235,6 @@ fn left<P: SweepPoint>(a: P, b: P, c: P) -> bool {
     P::orient(a, b, c) == Ordering::Greater
 }
 
-/// Triangulates one counter-clockwise simple polygon given as its cycle of points (flat vertices
-/// allowed, no two points equal): exactly `len - 2` counter-clockwise triangles of positive area,
-/// as indices into `pts` (none for fewer than 3 points). The case without holes of
-/// [`triangulate_rings`].
-pub(crate) fn triangulate_cycle<P: SweepPoint>(pts: &[P]) -> Vec<[usize; 3]> {
-    if pts.len() < 3 {
-        return Vec::new();
-    }
-    triangulate_rings(pts, &[0])
-}
-
 /// Triangulates a polygon with holes given as its rings of points one after another:
 /// `ring_starts[k]` is the index in `pts` of the first point of ring `k` (so `ring_starts[0] ==
 /// 0`), ring `k` runs up to `ring_starts[k + 1]` (the last ring up to `pts.len()`); ring 0 is the

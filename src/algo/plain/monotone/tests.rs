@@ -1,7 +1,7 @@
 use super::*;
 use crate::geom::kernel::Point;
 use crate::geom::polygon::Polygon;
-use crate::test_support::{polygon, raw, U_SHAPE};
+use crate::test_support::{polygon, raw, FLAT_SQUARE, U_SHAPE};
 use std::collections::HashSet;
 
 /// Checks a triangulation of the cycle `pts` completely and exactly: n - 2 triangles, each
@@ -12,7 +12,7 @@ use std::collections::HashSet;
 /// polygon once); and for small inputs, pairwise disjoint interiors by a separating-axis test.
 fn check_cycle(pts: &[Point]) -> Vec<[usize; 3]> {
     let n = pts.len();
-    let t = triangulate_cycle(pts);
+    let t = triangulate_rings(pts, &[0]);
     assert_eq!(t.len(), n - 2, "wrong count for {pts:?}");
     let mut area = 0i128;
     for &[a, b, c] in &t {
@@ -174,16 +174,7 @@ fn square_with_flat_vertices_on_every_side() {
         (0, 2),
         (0, 1),
     ]);
-    check(&[
-        (0, 0),
-        (1, 0),
-        (2, 0),
-        (2, 1),
-        (2, 2),
-        (1, 2),
-        (0, 2),
-        (0, 1),
-    ]);
+    check(&FLAT_SQUARE);
     // A diamond with flat vertices on every side.
     check(&[
         (2, 0),
@@ -562,7 +553,7 @@ fn large_random_star() {
     pts.dedup_by(|b, a| cross(o, key(a), key(b)) == 0 && dot(o, key(a), key(b)) > 0);
     let p = polygon(&[&pts]);
     let started = std::time::Instant::now();
-    let t = triangulate_cycle(p.points());
+    let t = triangulate_rings(p.points(), &[0]);
     let elapsed = started.elapsed();
     println!(
         "monotone: random star with {} vertices triangulated in {elapsed:?}",
@@ -657,13 +648,6 @@ fn check_holed_all_ways(rings: &[Vec<(i64, i64)>]) {
 /// An axis-parallel rectangle ring, counter-clockwise from its lower-left corner.
 fn rect(x0: i64, y0: i64, x1: i64, y1: i64) -> Vec<(i64, i64)> {
     vec![(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
-}
-
-#[test]
-fn the_cycle_entry_is_the_case_without_holes() {
-    let pts: Vec<Point> = U_SHAPE.iter().map(|&(x, y)| pt(x, y)).collect();
-    assert_eq!(triangulate_cycle(&pts), triangulate_rings(&pts, &[0]));
-    assert!(triangulate_cycle(&pts[..2]).is_empty());
 }
 
 #[test]

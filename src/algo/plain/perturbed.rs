@@ -40,9 +40,9 @@
 //! Only triples with two arguments at one point are perturbed; a triple of three distinct
 //! collinear points keeps its zero, as in the polygon: the sweep's proofs use such tests only on
 //! flat vertices and the stack algorithm's collinear waits, where the polygon's own answer keeps
-//! every triangle of positive area. The result is checked all the same by
-//! [`super::walks`] (every triangle positive, the triangles' boundary exactly the walks), so an
-//! error here could only cost time, never give a wrong triangulation.
+//! every triangle of positive area. The result is checked all the same by [`tiles`] (every
+//! triangle positive, the triangles' boundary exactly the walks), so an error here could only
+//! cost time, never give a wrong triangulation ([`super::walks`] then takes its fallback).
 
 use super::monotone::SweepPoint;
 use crate::geom::kernel::{cross, dot, Coord};
@@ -202,4 +202,75 @@ impl<P: Coord> SweepPoint for Moved<P> {
     fn same_side(w: Self, reference: Self, q: Self) -> bool {
         dot(w.at, reference.at, q.at) > 0
     }
+}
+
+/// The monotone sweep of [`super::monotone`] over the walks, the copies of touch points moved
+/// symbolically into their sectors ([`moved`]): O(N log N). `None` when the result fails
+/// [`tiles`] (the theory excludes it; checked so that a mistake costs time, not a wrong
+/// answer).
+pub(crate) fn swept<P: Coord>(polygon: &Polygon<P>) -> Option<Vec<[usize; 3]>> {
+    let turned = super::turned_for_walking(polygon);
+    let points = moved(polygon, turned.as_deref());
+    let triangles = super::monotone::try_triangulate_rings(&points, polygon.ring_starts())?;
+    tiles(polygon, &triangles).then_some(triangles)
+}
+
+/// Whether `triangles` triangulate the walks: `N + 2w - 2` of them, each of positive area, and
+/// their boundary, as a chain of stored-index edges, exactly the walks (every walk edge once in
+/// its direction, every other edge as often in each direction). Then every point of the plane
+/// off the edges lies in as many triangles as the walks wind around it (a positive triangle
+/// counts once, and the count changes only across the chain's boundary): one inside the region,
+/// none outside; and around each copy the triangles turn from its next edge to its previous one
+/// through its own sector alone (their angles sum to the sectors'). O(T log T).
+pub(crate) fn tiles<P: Coord>(polygon: &Polygon<P>, triangles: &[[usize; 3]]) -> bool {
+    let n = polygon.len();
+    if triangles.len() + 2 != n + 2 * polygon.holes() {
+        return false;
+    }
+    let pt = |i: usize| polygon.point(i);
+    // The edges bucketed by their smaller end (a counting sort), each bucket then sorted: the
+    // buckets are as small as the vertices' degrees.
+    let mut start = vec![0usize; n + 1];
+    for t in triangles {
+        if t.iter().any(|&v| v >= n) || cross(pt(t[0]), pt(t[1]), pt(t[2])) <= 0 {
+            return false;
+        }
+        for k in 0..3 {
+            start[t[k].min(t[(k + 1) % 3]) + 1] += 1;
+        }
+    }
+    for v in 0..n {
+        start[v + 1] += start[v];
+    }
+    let mut fill = start.clone();
+    let mut edges: Vec<(usize, i32)> = vec![(0, 0); start[n]];
+    for t in triangles {
+        for k in 0..3 {
+            let (a, b) = (t[k], t[(k + 1) % 3]);
+            let (low, entry) = if a < b { (a, (b, 1)) } else { (b, (a, -1)) };
+            edges[fill[low]] = entry;
+            fill[low] += 1;
+        }
+    }
+    let mut walk_edges = 0;
+    for a in 0..n {
+        let bucket = &mut edges[start[a]..start[a + 1]];
+        bucket.sort_unstable_by_key(|&(b, _)| b);
+        for run in bucket.chunk_by(|x, y| x.0 == y.0) {
+            let b = run[0].0;
+            let net: i32 = run.iter().map(|e| e.1).sum();
+            let expected = if polygon.next(a) == b {
+                1
+            } else if polygon.next(b) == a {
+                -1
+            } else {
+                0
+            };
+            if net != expected {
+                return false;
+            }
+            walk_edges += usize::from(expected != 0);
+        }
+    }
+    walk_edges == n
 }
