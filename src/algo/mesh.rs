@@ -40,16 +40,17 @@
 //!   outer sides keep their twins and flags;
 //!
 //! ```text
-//!            c                        c
-//!           / \                      /|\
-//!          /   \                    / | \
-//!         /  t  \                  /  |  \
-//!        a --h-> b      flip      a t | s b
-//!        b <-g-- a       =>        \  |  /
-//!         \  s  /                   \ | /
-//!          \   /                     \|/
-//!           \ /                       d
+//!            c                          c
+//!           / \                        /|\
+//!          /   \                      / | \
+//!         /  t  \                    /  |  \
+//!        a --h-> b        flip      a t | s b
+//!        a <-g-- b         =>        \  |  /
+//!         \  s  /                     \ | /
+//!          \   /                       \|/
+//!           \ /                         d
 //!            d
+//!   (the diagonal drawn as its two half-edges; t and s keep their numbers)
 //! ```
 //!
 //! - Lawson's flips towards the constrained Delaunay triangulation ([`Mesh::lawson`]): whether a
@@ -172,7 +173,7 @@ impl Mesh {
     }
 
     /// The mesh of a triangulation of `polygon` (holes allowed; a plain triangulation: n + 2w - 2
-    /// triangles, sides ring edges or proper diagonals), for walking: [`Mesh::out`] gives each
+    /// triangles, sides ring edges or proper diagonals), for walking: `Mesh::out` gives each
     /// vertex's boundary half-edge `v -> next(v)`.
     pub fn new<P: Coord>(polygon: &Polygon<P>, triangles: Vec<[usize; 3]>) -> Mesh {
         let mut mesh = Mesh::from_triangles(polygon.len(), &triangles);
@@ -250,7 +251,7 @@ impl Mesh {
     /// The previous half-edge of the same triangle.
     #[inline]
     pub(crate) fn prev_in_triangle(h: usize) -> usize {
-        if h % 3 == 0 {
+        if h.is_multiple_of(3) {
             h + 2
         } else {
             h - 1
@@ -420,10 +421,10 @@ impl Mesh {
         flips
     }
 
-    /// Fattens a walking mesh ([`Mesh::new`]) by [`Mesh::lawson`]'s flips (polygon edges are
-    /// never flipped), at most `max_flips`; returns the number of flips made. The result is
+    /// Fattens a walking mesh ([`Mesh::new`]) by Lawson's flips (`Mesh::lawson`; polygon edges
+    /// are never flipped), at most `max_flips`; returns the number of flips made. The result is
     /// again a triangulation of the polygon with positive triangles whose sides are edges or
-    /// proper diagonals, and [`Mesh::out`] again each vertex's boundary half-edge.
+    /// proper diagonals, and `Mesh::out` again each vertex's boundary half-edge.
     pub fn flip_towards_delaunay<P: Coord>(
         &mut self,
         polygon: &Polygon<P>,
@@ -772,9 +773,9 @@ impl<'a, P: Coord> Constrained<'a, P> {
 
     /// Sloan's insertion ("A fast algorithm for generating constrained Delaunay
     /// triangulations", Comput. Struct. 47 (1993) 441-450) on the diagonals `crossed` (in
-    /// order, as [`Constrained::flip_out`] left them): flip any crossed diagonal whose quadrilateral
-    /// is strictly convex (one always is), queueing the new one if it still crosses, until none
-    /// is left. O(k^2) at worst.
+    /// order, as [`Constrained::flip_out`] left them): flip any crossed diagonal whose
+    /// quadrilateral is strictly convex (one always is), queueing the new one if it still
+    /// crosses, until none is left. O(k^2) at worst.
     fn flip_across(
         &mut self,
         s: usize,

@@ -24,13 +24,14 @@
 //! cone's highest pending part is cut down to it. In general position almost no direction has a
 //! vertex on both sides, so most of the wide cone never needs walking.
 //!
-//! The walk runs over the plain triangulation made fatter by edge flips towards the constrained
-//! Delaunay triangulation ([`Mesh::flip_towards_delaunay`]): rays then cross far fewer triangles
-//! than the long slivers of a monotone triangulation.
+//! The walk runs over the plain triangulation as a half-edge [`Mesh`] (the one of `algo/mesh.rs`,
+//! each vertex's boundary half-edge starting its fan), made fatter by edge flips towards the
+//! constrained Delaunay triangulation ([`Mesh::flip_towards_delaunay`]): rays then cross far
+//! fewer triangles than the long slivers of a monotone triangulation.
 //!
 //! Every decision is an exact sign of a cross product of two [`Dir`]s; the only floating point
 //! (which diagonals to flip) affects the running time, never what is found.
-//! Complexity: O(n log n) to build the mesh, at most `max_flips` O(1) flips, then per vertex work
+//! Complexity: O(n) to build the mesh, at most `max_flips` O(1) flips, then per vertex work
 //! proportional to the triangles met by the parts of its cones still alive (an O(1) pruning test
 //! for each part taken from the stacks, none for the triangles a part crosses whole, see
 //! [`double_cone`]): O(n) per vertex, so O(n^2) in the worst case, but far less
