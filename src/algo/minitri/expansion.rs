@@ -277,7 +277,9 @@ pub fn double_cone<'w, P: Coord>(
             (None, Some(_)) => 1,
             (Some(s), Some(t)) => usize::from(s.1.hi.cross(t.1.hi.reversed()) > 0),
         };
-        let (step, mut cone) = stacks[side].pop().expect("the chosen cone has a part");
+        let Some((step, mut cone)) = stacks[side].pop() else {
+            break; // not reached: the chosen cone has a part
+        };
         // A direction matters only if its opposite may still be found in the other cone: in a
         // part on the other stack, or at a vertex found there.
         let other = 1 - side;
