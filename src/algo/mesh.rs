@@ -113,22 +113,22 @@ pub struct Mesh {
 /// contract) stays alone.
 fn twin_halves(vertices: usize, tri: &[[u32; 3]]) -> Vec<u32> {
     let halves = 3 * tri.len();
-    let ends = |h: usize| {
-        let t = tri[h / 3];
-        let (u, w) = (t[h % 3], t[(h + 1) % 3]);
-        (u.min(w) as usize, u.max(w))
+    // The sides of each triangle as (lower end, higher end), by half-edge number.
+    let sides = || {
+        tri.iter().flat_map(|&[a, b, c]| {
+            [(a, b), (b, c), (c, a)].map(|(u, w)| (u.min(w) as usize, u.max(w)))
+        })
     };
     let mut start = vec![0u32; vertices + 1];
-    for h in 0..halves {
-        start[ends(h).0 + 1] += 1;
+    for (v, _) in sides() {
+        start[v + 1] += 1;
     }
     for v in 0..vertices {
         start[v + 1] += start[v];
     }
     let mut bucket: Vec<(u32, u32)> = vec![(0, 0); halves];
     let mut fill = start.clone();
-    for h in 0..halves {
-        let (v, w) = ends(h);
+    for (h, (v, w)) in sides().enumerate() {
         bucket[fill[v] as usize] = (w, h as u32);
         fill[v] += 1;
     }
@@ -279,8 +279,10 @@ impl Mesh {
     /// Unlinks the twins of the sides `u v` for which `wall(u, v)` holds (in either direction).
     pub(crate) fn separate(&mut self, wall: impl Fn(usize, usize) -> bool) {
         for h in 0..self.twin.len() {
-            if self.twin[h] != NONE && wall(self.tail(h), self.head(h)) {
+            let g = self.twin[h];
+            if g != NONE && (h as u32) < g && wall(self.tail(h), self.head(h)) {
                 self.twin[h] = NONE;
+                self.twin[g as usize] = NONE;
             }
         }
     }
