@@ -1,9 +1,8 @@
-//! A triangulation under edits, with some edges **fixed**: triangles with neighbour links, the
-//! other edges plain diagonals that may be flipped. Shared by `--algorithm pseudo-hull`
-//! ([`crate::algo::pseudo_hull`]: the convex hull triangulated; the polygon's edges, the hull
-//! edges and each shortest path added so far fixed; faces walked across diagonals) and by
-//! MINITRI with holes ([`crate::algo::minitri::cut`]: the sides of the chosen degenerate
-//! triangles made edges of a plain triangulation of the polygon).
+//! The half-edge mesh of a triangulation, one type for every algorithm that walks or edits
+//! triangles: step 1 of MINITRI walks it ([`crate::algo::minitri::expansion`],
+//! [`crate::algo::minitri::ray_shooting`]), steps 4-5 cut sides into it
+//! ([`crate::algo::minitri::cut`]), and the pseudotriangulations merge its faces
+//! ([`crate::algo::pseudo`]) or insert shortest paths into it ([`crate::algo::pseudo_hull`]).
 //!
 //! Input contract: counter-clockwise nondegenerate triangles with disjoint interiors, meeting
 //! edge to edge, whose union is a region in which every vertex has one fan of triangles (all
@@ -11,85 +10,462 @@
 //! vertex). An edge with a triangle on one side only is on the region's boundary and is never
 //! crossed.
 //!
-//! A half-edge is edge `k` of triangle `t`, from its vertex `k` to its vertex `k + 1`, with `t`
-//! on its left. The faces of a pseudotriangulation are the unions of triangles joined across
-//! diagonals; [`Mesh::next_boundary`] walks a face's boundary (face on the left), turning
-//! clockwise around each vertex through the face's triangles, and reports the diagonals crossed.
+//! # Numbering
 //!
-//! Segment insertion ([`Mesh::insert`]): the k diagonals the segment crosses are found by walking
-//! along it, then flipped until the segment is an edge. First every flip that leaves one
-//! crossing fewer is made, a diagonal being tested again only when a neighbour along the segment
-//! was flipped: O(k) tests and at most k flips. That usually suffices (in MINITRI's cut step on
-//! 2 * 10^5 random polygons with up to 12 holes, for all but 0.5% of the segments crossing a
-//! diagonal), but not always: every flippable crossed diagonal can have its two apexes on
-//! opposite sides of the segment (see the tests). Sloan's queue (1993) then finishes, flipping
-//! any crossed diagonal whose quadrilateral is strictly convex: O(k^2) at worst. Removing the
-//! crossed triangles and triangulating the two sides again would be about as fast but is wrong
-//! in general: the triangles crossed on one side can go round a hole and touch at a vertex,
-//! which no triangulator of simple polygons accepts (seen in pseudo-hull's property tests, and
-//! in MINITRI's cut step before it used this mesh). Every decision is an exact orientation
-//! test; a segment that would pass through a vertex or cross a fixed or boundary edge, or flips
-//! that get stuck, are refused ([`Broken`]), never drawn.
-//! [`Mesh::fatten`] flips diagonals towards the Delaunay triangulation with the kernel's
-//! floating-point in-circle heuristic, which only steers speed (the allowed flips are decided
-//! exactly).
+//! Triangle `t` is stored as its three corners `[a, b, c]`, counter-clockwise. Its half-edges
+//! are `3 t`, `3 t + 1`, `3 t + 2`: half-edge `3 t + k` runs from corner `k` (its tail) to
+//! corner `k + 1` (its head) with `t` on its left, and corner `k + 2` is its apex.
 //!
-//! Complexity: O(m log m) to build for m triangles (half-edges sorted to link twins); a
-//! half-edge found by its ends in expected O(1) (hash map); an insertion started in O(degree)
-//! at its first vertex, O(k) to walk it, then the flips above.
+//! ```text
+//!                 c                 next(3t) = 3t + 1, next(3t + 2) = 3t
+//!                / \                prev(3t) = 3t + 2
+//!       3t + 2  /   \  3t + 1       twin(h): the same side from head to tail in the
+//!              /  t  \                       triangle on its right (none on the boundary)
+//!             a ----- b
+//!               3t + 0
+//! ```
+//!
+//! # Operations
+//!
+//! [`Mesh`] holds the triangles, the twin of every half-edge, a half-edge leaving each vertex
+//! and two flags per half-edge (fixed, and done: a face already reported):
+//! - building: twins matched by their two ends in O(n + m) (one counting sort by the lower end,
+//!   then one pass per bucket); [`Mesh::separate`] unlinks the twins of given edges;
+//! - reading: [`Mesh::tail`], [`Mesh::head`], [`Mesh::apex`], [`Mesh::twin_of`], the rotation
+//!   round a vertex ([`Mesh::fan`]), the walk along a face of triangles joined across
+//!   unfixed edges ([`Mesh::next_boundary`], [`Mesh::prev_boundary`]); all O(1) per step;
+//! - [`Mesh::flip`], O(1), keeping the numbering: the triangles `t = (a b c)` and
+//!   `s = (b a d)` on the diagonal `h = a -> b` (twin `g = b -> a`) become `t = (c a d)` and
+//!   `s = (d b c)`, joined by `d -> c` (half-edge `3 t + 2`) and `c -> d` (`3 s + 2`); the four
+//!   outer sides keep their twins and flags;
+//!
+//! ```text
+//!            c                          c
+//!           / \                        /|\
+//!          /   \                      / | \
+//!         /  t  \                    /  |  \
+//!        a --h-> b        flip      a t | s b
+//!        a <-g-- b         =>        \  |  /
+//!         \  s  /                     \ | /
+//!          \   /                       \|/
+//!           \ /                         d
+//!            d
+//!   (the diagonal drawn as its two half-edges; t and s keep their numbers)
+//! ```
+//!
+//! - Lawson's flips towards the constrained Delaunay triangulation ([`Mesh::lawson`]): whether a
+//!   flip is ALLOWED is exact (an unfixed diagonal whose quadrilateral is strictly convex, so the
+//!   result is again a triangulation of the region with the same fixed edges); whether it is
+//!   DESIRABLE is the kernel's floating-point [`incircle_approx`], a heuristic that never
+//!   decides a fact of the answer (hence a bound on the flips, should rounding make them
+//!   cycle). Fatter triangles only make walks shorter.
+//!
+//! [`Constrained`] adds what editing by segments needs: the points, every half-edge found by
+//! its two ends (a hash map, expected O(1)), and segment insertion ([`Constrained::insert`]):
+//! the k diagonals the segment crosses are found by walking along it, then flipped until the
+//! segment is an edge, which is then fixed. First every flip that leaves one crossing fewer is
+//! made, a diagonal being tested again only when a neighbour along the segment was flipped: O(k)
+//! tests and at most k flips. That usually suffices (in MINITRI's cut step on 2 * 10^5 random
+//! polygons with up to 12 holes, for all but 0.5% of the segments crossing a diagonal), but not
+//! always: every flippable crossed diagonal can have its two apexes on opposite sides of the
+//! segment (see the tests). Sloan's queue (1993) then finishes, flipping any crossed diagonal
+//! whose quadrilateral is strictly convex: O(k^2) at worst. Removing the crossed triangles and
+//! triangulating the two sides again would be about as fast but is wrong in general: the
+//! triangles crossed on one side can go round a hole and touch at a vertex, which no
+//! triangulator of simple polygons accepts (seen in pseudo-hull's property tests, and in
+//! MINITRI's cut step before it used this mesh). Every decision is an exact orientation test; a
+//! segment that would pass through a vertex or cross a fixed or boundary edge, or flips that get
+//! stuck, are refused ([`Broken`]), never drawn.
+//!
+//! Complexity: O(n + m) to build for n vertices and m triangles (and O(m) expected to index the
+//! half-edges of a [`Constrained`] mesh); an insertion started in O(degree) at its first
+//! vertex, O(k) to walk it, then the flips above.
 
 use crate::algo::number_hash::NumberMap;
-use crate::geom::kernel::Coord;
-use crate::geom::kernel::{cross, dot, incircle_approx, Point};
+use crate::geom::kernel::{cross, dot, incircle_approx, Coord, Point};
+use crate::geom::polygon::Polygon;
 use std::collections::VecDeque;
+use std::time::Instant;
 
+/// No half-edge: the twin of a boundary half-edge, the half-edge leaving a vertex of no triangle.
 const NONE: u32 = u32::MAX;
 
-/// The neighbour links of a triangulation: for every half-edge `3 t + k` (side `k` of triangle
-/// `t`, from its corner `k` to its corner `k + 1`; `corner(t, k)` gives the vertex, below
-/// `vertices`), the half-edge of the other triangle on the same side, or `u32::MAX` where there
-/// is none (the boundary). Shared with MINITRI's walking mesh (`minitri::expansion`).
-///
-/// The two half-edges of a side are found in the bucket of its lower end: half-edges bucketed
-/// by that end (a counting sort), each bucket, a vertex's few sides, then sorted by the other
-/// end. O(n) for bounded degrees, O(n log n) at worst.
-pub(crate) fn twin_halves(
-    vertices: usize,
-    triangles: usize,
-    corner: impl Fn(usize, usize) -> usize,
-) -> Vec<u32> {
-    let halves = 3 * triangles;
-    let ends = |h: usize| {
-        let (u, w) = (corner(h / 3, h % 3), corner(h / 3, (h + 1) % 3));
-        (u.min(w), u.max(w) as u32)
+/// Flag bits per triangle: bit `k` edge `k` fixed, bit `3 + k` the face on the left of edge `k`
+/// finished (a pseudotriangle already reported).
+const FIXED: u8 = 1;
+const DONE: u8 = 8;
+
+/// A triangulation with twin links (see the module docs for the numbering and the operations).
+pub struct Mesh {
+    /// The corners of each triangle, counter-clockwise.
+    tri: Vec<[u32; 3]>,
+    /// The twin of each half-edge, [`NONE`] on the region's boundary.
+    twin: Vec<u32>,
+    /// A half-edge leaving each vertex ([`NONE`] if it is in no triangle).
+    out: Vec<u32>,
+    /// [`FIXED`] and [`DONE`] bits of the half-edges, per triangle.
+    flags: Vec<u8>,
+}
+
+/// The twin of every half-edge of `tri` (vertices below `vertices`), or [`NONE`]: half-edges
+/// bucketed by their lower end (a counting sort), then in each bucket the first half-edge to
+/// the other end waits for the second. O(n + m); a third half-edge on one side (outside the
+/// contract) stays alone.
+fn twin_halves(vertices: usize, tri: &[[u32; 3]]) -> Vec<u32> {
+    let halves = 3 * tri.len();
+    // The sides of each triangle as (lower end, higher end), by half-edge number.
+    let sides = || {
+        tri.iter().flat_map(|&[a, b, c]| {
+            [(a, b), (b, c), (c, a)].map(|(u, w)| (u.min(w) as usize, u.max(w)))
+        })
     };
     let mut start = vec![0u32; vertices + 1];
-    for h in 0..halves {
-        start[ends(h).0 + 1] += 1;
+    for (v, _) in sides() {
+        start[v + 1] += 1;
     }
     for v in 0..vertices {
         start[v + 1] += start[v];
     }
     let mut bucket: Vec<(u32, u32)> = vec![(0, 0); halves];
     let mut fill = start.clone();
-    for h in 0..halves {
-        let (v, w) = ends(h);
+    for (h, (v, w)) in sides().enumerate() {
         bucket[fill[v] as usize] = (w, h as u32);
         fill[v] += 1;
     }
     drop(fill);
     let mut twin = vec![NONE; halves];
+    let mut waiting = vec![NONE; vertices];
     for v in 0..vertices {
-        let group = &mut bucket[start[v] as usize..start[v + 1] as usize];
-        group.sort_unstable();
-        for pair in group.windows(2) {
-            if pair[0].0 == pair[1].0 {
-                twin[pair[0].1 as usize] = pair[1].1;
-                twin[pair[1].1 as usize] = pair[0].1;
+        let group = &bucket[start[v] as usize..start[v + 1] as usize];
+        for &(w, h) in group {
+            let slot = &mut waiting[w as usize];
+            if *slot == NONE {
+                *slot = h;
+            } else {
+                twin[h as usize] = *slot;
+                twin[*slot as usize] = h;
+                *slot = NONE;
             }
+        }
+        for &(w, _) in group {
+            waiting[w as usize] = NONE;
         }
     }
     twin
+}
+
+impl Mesh {
+    /// The mesh of `triangles` (corners below `vertices`, as the module's input contract says).
+    pub(crate) fn from_triangles(vertices: usize, triangles: &[[usize; 3]]) -> Mesh {
+        let tri: Vec<[u32; 3]> = triangles.iter().map(|t| t.map(|v| v as u32)).collect();
+        let twin = twin_halves(vertices, &tri);
+        let mut out = vec![NONE; vertices];
+        for (h, &v) in tri.iter().flatten().enumerate() {
+            out[v as usize] = h as u32;
+        }
+        let flags = vec![0; tri.len()];
+        Mesh {
+            tri,
+            twin,
+            out,
+            flags,
+        }
+    }
+
+    /// The mesh of a triangulation of `polygon` (holes allowed; a plain triangulation: n + 2w - 2
+    /// triangles, sides ring edges or proper diagonals), for walking: `Mesh::out` gives each
+    /// vertex's boundary half-edge `v -> next(v)`.
+    pub fn new<P: Coord>(polygon: &Polygon<P>, triangles: Vec<[usize; 3]>) -> Mesh {
+        let mut mesh = Mesh::from_triangles(polygon.len(), &triangles);
+        mesh.out_on_boundary(polygon);
+        mesh
+    }
+
+    /// Sets [`Mesh::out`] of each vertex to its boundary half-edge.
+    fn out_on_boundary<P: Coord>(&mut self, polygon: &Polygon<P>) {
+        for h in 0..self.twin.len() {
+            if self.twin[h] == NONE {
+                let v = self.tail(h);
+                debug_assert_eq!(self.head(h), polygon.next(v), "a boundary side is an edge");
+                self.out[v] = h as u32;
+            }
+        }
+        debug_assert!(
+            !self.out.contains(&NONE),
+            "every polygon edge is a triangle side"
+        );
+    }
+
+    /// The number of triangles.
+    pub fn triangle_count(&self) -> usize {
+        self.tri.len()
+    }
+
+    /// The triangles, counter-clockwise, as indices into the points.
+    pub fn triangles(&self) -> impl Iterator<Item = [usize; 3]> + '_ {
+        self.tri.iter().map(|t| t.map(|v| v as usize))
+    }
+
+    /// The triangles, giving up the links.
+    pub fn into_triangles(self) -> Vec<[usize; 3]> {
+        self.triangles().collect()
+    }
+
+    /// The vertex a half-edge starts from.
+    #[inline]
+    pub(crate) fn tail(&self, h: usize) -> usize {
+        self.tri[h / 3][h % 3] as usize
+    }
+
+    /// The vertex a half-edge ends at.
+    #[inline]
+    pub(crate) fn head(&self, h: usize) -> usize {
+        self.tri[h / 3][(h + 1) % 3] as usize
+    }
+
+    /// The vertex of a half-edge's triangle opposite it.
+    #[inline]
+    pub(crate) fn apex(&self, h: usize) -> usize {
+        self.tri[h / 3][(h + 2) % 3] as usize
+    }
+
+    /// The same side from the triangle on its right (`None` on the region's boundary).
+    #[inline]
+    pub(crate) fn twin_of(&self, h: usize) -> Option<usize> {
+        match self.twin[h] {
+            NONE => None,
+            g => Some(g as usize),
+        }
+    }
+
+    /// The next half-edge of the same triangle (counter-clockwise).
+    #[inline]
+    pub(crate) fn next_in_triangle(h: usize) -> usize {
+        if h % 3 == 2 {
+            h - 2
+        } else {
+            h + 1
+        }
+    }
+
+    /// The previous half-edge of the same triangle.
+    #[inline]
+    pub(crate) fn prev_in_triangle(h: usize) -> usize {
+        if h.is_multiple_of(3) {
+            h + 2
+        } else {
+            h - 1
+        }
+    }
+
+    /// A half-edge leaving `v` ([`Mesh::new`]: its boundary half-edge), if `v` is in a triangle.
+    #[inline]
+    pub(crate) fn out(&self, v: usize) -> Option<usize> {
+        match self.out[v] {
+            NONE => None,
+            h => Some(h as usize),
+        }
+    }
+
+    /// The half-edges leaving the tail of `h`, counter-clockwise from `h` (each the twin of the
+    /// previous one's triangle's incoming side), until the boundary or back at `h`.
+    pub(crate) fn fan(&self, h: usize) -> impl Iterator<Item = usize> + '_ {
+        std::iter::successors(Some(h), move |&g| {
+            self.twin_of(Self::prev_in_triangle(g))
+                .filter(|&next| next != h)
+        })
+    }
+
+    /// Unlinks the twins of the sides `u v` for which `wall(u, v)` holds (in either direction).
+    pub(crate) fn separate(&mut self, wall: impl Fn(usize, usize) -> bool) {
+        for h in 0..self.twin.len() {
+            let g = self.twin[h];
+            if g != NONE && (h as u32) < g && wall(self.tail(h), self.head(h)) {
+                self.twin[h] = NONE;
+                self.twin[g as usize] = NONE;
+            }
+        }
+    }
+
+    /// Whether the side of `h` is fixed.
+    pub(crate) fn is_fixed(&self, h: usize) -> bool {
+        self.flags[h / 3] & (FIXED << (h % 3)) != 0
+    }
+
+    /// Whether the face on the left of `h` is marked finished.
+    pub(crate) fn is_done(&self, h: usize) -> bool {
+        self.flags[h / 3] & (DONE << (h % 3)) != 0
+    }
+
+    fn set_done(&mut self, h: usize) {
+        self.flags[h / 3] |= DONE << (h % 3);
+    }
+
+    /// Makes the side of `h` fixed (both half-edges); false if it was already.
+    fn fix(&mut self, h: usize) -> bool {
+        if self.is_fixed(h) {
+            return false;
+        }
+        self.flags[h / 3] |= FIXED << (h % 3);
+        if let Some(g) = self.twin_of(h) {
+            self.flags[g / 3] |= FIXED << (g % 3);
+        }
+        true
+    }
+
+    /// The next fixed half-edge along the boundary of the face on the left of the fixed
+    /// half-edge `h` (turning clockwise round its head); the diagonals crossed on the way are
+    /// passed to `crossed` as `(right, left)` = (the head of `h`, the diagonal's other end).
+    pub(crate) fn next_boundary(&self, h: usize, mut crossed: impl FnMut(usize, usize)) -> usize {
+        let mut g = Self::next_in_triangle(h);
+        while !self.is_fixed(g) {
+            crossed(self.tail(g), self.head(g));
+            // A diagonal always has a triangle on both sides.
+            g = match self.twin_of(g) {
+                Some(t) => Self::next_in_triangle(t),
+                None => return g,
+            };
+        }
+        g
+    }
+
+    /// The fixed half-edge before `h` along the boundary of the face on its left.
+    pub(crate) fn prev_boundary(&self, h: usize) -> usize {
+        let mut g = Self::prev_in_triangle(h);
+        while !self.is_fixed(g) {
+            g = match self.twin_of(g) {
+                Some(t) => Self::prev_in_triangle(t),
+                None => return g,
+            };
+        }
+        g
+    }
+
+    /// Flips the diagonal of `h` (see the module docs' drawing); `h` must have a twin.
+    pub(crate) fn flip(&mut self, h: usize) {
+        let Some(g) = self.twin_of(h) else {
+            debug_assert!(false, "a boundary side is never flipped");
+            return;
+        };
+        let (t, s) = (h / 3, g / 3);
+        let (a, b, c, d) = (self.tail(h), self.head(h), self.apex(h), self.apex(g));
+        // The outer sides c -> a, a -> d, d -> b, b -> c: twins and flags.
+        let side = |x: usize| {
+            let bits = (self.flags[x / 3] >> (x % 3)) & (FIXED | DONE);
+            (self.twin[x], bits)
+        };
+        let ca = side(Self::prev_in_triangle(h));
+        let ad = side(Self::next_in_triangle(g));
+        let db = side(Self::prev_in_triangle(g));
+        let bc = side(Self::next_in_triangle(h));
+        self.tri[t] = [c, a, d].map(|v| v as u32);
+        self.tri[s] = [d, b, c].map(|v| v as u32);
+        let links = [
+            (3 * t, ca.0),
+            (3 * t + 1, ad.0),
+            (3 * t + 2, (3 * s + 2) as u32),
+            (3 * s, db.0),
+            (3 * s + 1, bc.0),
+            (3 * s + 2, (3 * t + 2) as u32),
+        ];
+        for (x, y) in links {
+            self.twin[x] = y;
+            if y != NONE {
+                self.twin[y as usize] = x as u32;
+            }
+        }
+        self.flags[t] = ca.1 | (ad.1 << 1);
+        self.flags[s] = db.1 | (bc.1 << 1);
+        self.out[c] = (3 * t) as u32;
+        self.out[a] = (3 * t + 1) as u32;
+        self.out[d] = (3 * t + 2) as u32;
+        self.out[b] = (3 * s + 1) as u32;
+    }
+
+    /// Lawson's flips of the diagonals on `stack` (the top first) towards the constrained
+    /// Delaunay triangulation, re-queueing the four outer sides of each flip (see the module
+    /// docs), at most `max_flips` of them; `stop(count)`, asked before each of the `count`
+    /// half-edges taken, ends them early. Returns the number of flips.
+    pub(crate) fn lawson<P: Coord>(
+        &mut self,
+        pts: &[P],
+        mut stack: Vec<u32>,
+        max_flips: usize,
+        mut stop: impl FnMut(usize) -> bool,
+    ) -> usize {
+        let mut flips = 0;
+        let mut count = 0;
+        while let Some(h) = stack.pop() {
+            count += 1;
+            if flips == max_flips || stop(count) {
+                break;
+            }
+            let h = h as usize;
+            if self.is_fixed(h) {
+                continue;
+            }
+            let Some(g) = self.twin_of(h) else {
+                continue; // a boundary side (or an entry made stale by earlier flips)
+            };
+            let (a, b, c, d) = (self.tail(h), self.head(h), self.apex(h), self.apex(g));
+            let [pa, pb, pc, pd] = [a, b, c, d].map(|v| pts[v]);
+            if cross(pc, pa, pd) <= 0 || cross(pd, pb, pc) <= 0 {
+                continue; // not strictly convex: the flip is not allowed
+            }
+            if incircle_approx(pa, pb, pc, pd) <= 0.0 {
+                continue; // not (as far as floating point tells) an improvement
+            }
+            self.flip(h);
+            flips += 1;
+            let (t, s) = (h / 3, g / 3);
+            stack.extend([3 * t, 3 * t + 1, 3 * s, 3 * s + 1].map(|x| x as u32));
+        }
+        flips
+    }
+
+    /// Fattens a walking mesh ([`Mesh::new`]) by Lawson's flips (`Mesh::lawson`; polygon edges
+    /// are never flipped), at most `max_flips`; returns the number of flips made. The result is
+    /// again a triangulation of the polygon with positive triangles whose sides are edges or
+    /// proper diagonals, and `Mesh::out` again each vertex's boundary half-edge.
+    pub fn flip_towards_delaunay<P: Coord>(
+        &mut self,
+        polygon: &Polygon<P>,
+        max_flips: usize,
+    ) -> usize {
+        let stack: Vec<u32> = (0..self.twin.len() as u32)
+            .filter(|&h| self.twin[h as usize] != NONE && h < self.twin[h as usize])
+            .collect();
+        let flips = self.lawson(polygon.points(), stack, max_flips, |_| false);
+        self.out_on_boundary(polygon);
+        flips
+    }
+
+    /// Whether the twins are mutual and join the same two vertices in opposite directions.
+    #[cfg(test)]
+    pub(crate) fn consistent(&self) -> Result<(), String> {
+        for h in 0..self.twin.len() {
+            let Some(g) = self.twin_of(h) else { continue };
+            if self.twin[g] as usize != h
+                || (self.tail(g), self.head(g)) != (self.head(h), self.tail(h))
+            {
+                return Err(format!("{h}: bad twin {g}"));
+            }
+        }
+        Ok(())
+    }
+
+    /// Panics unless the links are consistent and [`Mesh::out`] holds each vertex's boundary
+    /// edge `v -> next(v)` (a walking mesh of `polygon`).
+    #[cfg(test)]
+    pub fn check_invariants<P: Coord>(&self, polygon: &Polygon<P>) {
+        assert_eq!(self.twin.len(), 3 * self.tri.len());
+        self.consistent().unwrap();
+        for v in 0..polygon.len() {
+            let h = self.out(v).expect("a boundary half-edge");
+            assert_eq!((self.tail(h), self.head(h)), (v, polygon.next(v)));
+            assert_eq!(self.twin_of(h), None);
+        }
+    }
 }
 
 /// An inconsistency a caller's construction must not meet: a segment through a vertex or across a
@@ -97,104 +473,71 @@ pub(crate) fn twin_halves(
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) struct Broken;
 
-/// Edge `k` of triangle `t` (its vertex `k` to its vertex `k + 1`, the triangle on its left).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) struct Half {
-    t: u32,
-    k: u8,
-}
-
-impl Half {
-    fn next(self) -> Half {
-        Half {
-            t: self.t,
-            k: (self.k + 1) % 3,
-        }
-    }
-
-    fn prev(self) -> Half {
-        Half {
-            t: self.t,
-            k: (self.k + 2) % 3,
-        }
-    }
-}
-
 fn key(from: usize, to: usize) -> u64 {
     ((from as u64) << 32) | to as u64
 }
 
-type Halves = NumberMap<u64, Half>;
+/// Flips (or walk steps) between two readings of the clock against [`Constrained::deadline`].
+const CHECK_EVERY: usize = 1024;
 
-/// Flag bits per triangle: bit `k` edge `k` fixed, bit `3 + k` the face on the left of edge `k`
-/// finished (a pseudotriangle already reported).
-const DONE: u8 = 8;
-
-pub(crate) struct Mesh<'a, P: Coord = Point> {
+/// A [`Mesh`] edited by segments: with its points and every half-edge found by its ends (see
+/// the module docs). Reads go to the mesh (`Deref`); edits through here keep the index.
+pub(crate) struct Constrained<'a, P: Coord = Point> {
     pts: &'a [P],
-    tv: Vec<[u32; 3]>,
-    tn: Vec<[u32; 3]>,
-    flags: Vec<u8>,
-    /// A live triangle at each vertex.
-    vt: Vec<u32>,
+    mesh: Mesh,
     /// Every half-edge by its ends (`from << 32 | to`).
-    halves: Halves,
+    halves: NumberMap<u64, u32>,
     /// The number of fixed edges.
     pub(crate) fixed_edges: usize,
-    /// When set: past this instant, [`Mesh::insert`] and [`Mesh::fatten`] give up ([`Broken`]
-    /// from `insert`, with [`Mesh::expired`] set), checked every [`CHECK_EVERY`] flips.
-    pub(crate) deadline: Option<std::time::Instant>,
-    /// Whether a walk or flip sequence gave up at [`Mesh::deadline`].
+    /// When set: past this instant, [`Constrained::insert`] and [`Constrained::fatten`] give up
+    /// ([`Broken`] from `insert`, with [`Constrained::expired`] set), checked every
+    /// [`CHECK_EVERY`] flips.
+    pub(crate) deadline: Option<Instant>,
+    /// Whether a walk or flip sequence gave up at [`Constrained::deadline`].
     pub(crate) expired: bool,
 }
 
-/// Flips (or walk steps) between two readings of the clock against [`Mesh::deadline`].
-const CHECK_EVERY: usize = 1024;
+impl<P: Coord> std::ops::Deref for Constrained<'_, P> {
+    type Target = Mesh;
 
-impl<'a, P: Coord> Mesh<'a, P> {
+    fn deref(&self) -> &Mesh {
+        &self.mesh
+    }
+}
+
+/// Whether `deadline` has passed (then `expired` is set too); reads the clock only when `count`
+/// is a multiple of [`CHECK_EVERY`].
+fn past(deadline: Option<Instant>, expired: &mut bool, count: usize) -> bool {
+    if !*expired && count.is_multiple_of(CHECK_EVERY) {
+        if let Some(deadline) = deadline {
+            *expired = Instant::now() >= deadline;
+        }
+    }
+    *expired
+}
+
+impl<'a, P: Coord> Constrained<'a, P> {
     /// The mesh of `triangles` (indices into `pts`, as the module's input contract says), with
     /// the undirected edges `fixed` fixed (each an edge of some triangle).
     pub(crate) fn new(pts: &'a [P], triangles: &[[usize; 3]], fixed: &[(usize, usize)]) -> Self {
-        let m = triangles.len();
-        let mut mesh = Mesh {
+        let mesh = Mesh::from_triangles(pts.len(), triangles);
+        let mut edited = Constrained {
             pts,
-            tv: triangles.iter().map(|t| t.map(|v| v as u32)).collect(),
-            tn: vec![[NONE; 3]; m],
-            flags: vec![0; m],
-            vt: vec![NONE; pts.len()],
-            halves: Halves::with_capacity_and_hasher(3 * m, Default::default()),
+            halves: NumberMap::with_capacity_and_hasher(3 * mesh.tri.len(), Default::default()),
+            mesh,
             fixed_edges: 0,
             deadline: None,
             expired: false,
         };
-        for t in 0..m as u32 {
-            mesh.index(t);
-        }
-        let twins = twin_halves(pts.len(), m, |t, k| mesh.tv[t][k] as usize);
-        for (h, &g) in twins.iter().enumerate() {
-            if g != NONE {
-                mesh.tn[h / 3][h % 3] = g / 3;
-            }
-        }
-        for (t, tri) in mesh.tv.iter().enumerate() {
-            for &v in tri {
-                mesh.vt[v as usize] = t as u32;
-            }
+        for t in 0..edited.mesh.tri.len() {
+            edited.index(t);
         }
         for &(a, b) in fixed {
-            if let Some(h) = mesh.half_from(a, b) {
-                mesh.fix(h);
+            if let Some(h) = edited.half_from(a, b) {
+                edited.fix(h);
             }
         }
-        mesh
-    }
-
-    pub(crate) fn origin(&self, h: Half) -> usize {
-        self.tv[h.t as usize][h.k as usize] as usize
-    }
-
-    pub(crate) fn dest(&self, h: Half) -> usize {
-        self.tv[h.t as usize][(h.k as usize + 1) % 3] as usize
+        edited
     }
 
     pub(crate) fn point(&self, v: usize) -> P {
@@ -205,78 +548,9 @@ impl<'a, P: Coord> Mesh<'a, P> {
         self.pts
     }
 
-    /// The triangles, counter-clockwise, as indices into the points.
-    pub(crate) fn triangles(&self) -> impl Iterator<Item = [usize; 3]> + '_ {
-        self.tv.iter().map(|t| t.map(|v| v as usize))
-    }
-
-    /// The same edge the other way, in the triangle on its right (none on the region's boundary).
-    fn twin(&self, h: Half) -> Option<Half> {
-        let t = self.tn[h.t as usize][h.k as usize];
-        if t == NONE {
-            return None;
-        }
-        let from = self.tv[h.t as usize][(h.k as usize + 1) % 3];
-        let k = self.tv[t as usize].iter().position(|&v| v == from)?;
-        Some(Half { t, k: k as u8 })
-    }
-
-    pub(crate) fn is_fixed(&self, h: Half) -> bool {
-        self.flags[h.t as usize] & (1 << h.k) != 0
-    }
-
-    pub(crate) fn is_done(&self, h: Half) -> bool {
-        self.flags[h.t as usize] & (DONE << h.k) != 0
-    }
-
-    pub(crate) fn set_done(&mut self, h: Half) {
-        self.flags[h.t as usize] |= DONE << h.k;
-    }
-
-    /// Makes the edge of `h` fixed (both sides).
-    fn fix(&mut self, h: Half) {
-        if self.is_fixed(h) {
-            return;
-        }
-        self.fixed_edges += 1;
-        self.flags[h.t as usize] |= 1 << h.k;
-        if let Some(g) = self.twin(h) {
-            self.flags[g.t as usize] |= 1 << g.k;
-        }
-    }
-
-    /// The half-edges leaving `u`, in rotation order (counter-clockwise, starting after a
-    /// boundary edge if `u` is on the region's boundary).
-    fn around(&self, u: usize) -> Vec<Half> {
-        let t = self.vt[u];
-        let Some(k) = self.tv[t as usize].iter().position(|&v| v as usize == u) else {
-            return Vec::new();
-        };
-        let start = Half { t, k: k as u8 };
-        // Clockwise to the first half-edge (or all the way round).
-        let mut first = start;
-        while let Some(g) = self.twin(first) {
-            let cw = g.next();
-            if cw == start {
-                break;
-            }
-            first = cw;
-        }
-        let mut out = vec![first];
-        let mut h = first;
-        while let Some(g) = self.twin(h.prev()) {
-            if g == first {
-                break;
-            }
-            out.push(g);
-            h = g;
-        }
-        out
-    }
-
     /// The half-edge `u -> v`, if it is an edge with a triangle on its left.
-    pub(crate) fn half_from(&self, u: usize, v: usize) -> Option<Half> {
-        self.halves.get(&key(u, v)).copied()
+    pub(crate) fn half_from(&self, u: usize, v: usize) -> Option<usize> {
+        self.halves.get(&key(u, v)).map(|&h| h as usize)
     }
 
     /// Whether `u v` is a fixed edge.
@@ -286,63 +560,85 @@ impl<'a, P: Coord> Mesh<'a, P> {
             .is_some_and(|h| self.is_fixed(h))
     }
 
+    /// Marks the face on the left of `h` finished.
+    pub(crate) fn set_done(&mut self, h: usize) {
+        self.mesh.set_done(h);
+    }
+
+    /// Makes the edge of `h` fixed (both sides).
+    fn fix(&mut self, h: usize) {
+        if self.mesh.fix(h) {
+            self.fixed_edges += 1;
+        }
+    }
+
     /// Lists the half-edges of triangle `t` by their ends.
-    fn index(&mut self, t: u32) {
-        for k in 0..3u8 {
-            let h = Half { t, k };
-            self.halves.insert(key(self.origin(h), self.dest(h)), h);
+    fn index(&mut self, t: usize) {
+        for h in 3 * t..3 * t + 3 {
+            let k = key(self.tail(h), self.head(h));
+            self.halves.insert(k, h as u32);
         }
     }
 
-    fn unindex(&mut self, t: u32) {
-        for k in 0..3u8 {
-            let h = Half { t, k };
-            self.halves.remove(&key(self.origin(h), self.dest(h)));
+    fn unindex(&mut self, t: usize) {
+        for h in 3 * t..3 * t + 3 {
+            let k = key(self.tail(h), self.head(h));
+            self.halves.remove(&k);
         }
     }
 
-    /// The next fixed half-edge along the boundary of the face on the left of the fixed
-    /// half-edge `h` (turning clockwise round its head); the diagonals crossed on the way are
-    /// passed to `crossed` as `(right, left)` = (the head of `h`, the diagonal's other end).
-    pub(crate) fn next_boundary(&self, h: Half, mut crossed: impl FnMut(usize, usize)) -> Half {
-        let mut g = h.next();
-        while !self.is_fixed(g) {
-            crossed(self.origin(g), self.dest(g));
-            // A diagonal always has a triangle on both sides.
-            g = match self.twin(g) {
-                Some(t) => t.next(),
-                None => return g,
-            };
-        }
-        g
+    /// [`Mesh::flip`], keeping the index.
+    fn flip(&mut self, h: usize, g: usize) {
+        let (t, s) = (h / 3, g / 3);
+        self.unindex(t);
+        self.unindex(s);
+        self.mesh.flip(h);
+        self.index(t);
+        self.index(s);
     }
 
-    /// The fixed half-edge before `h` along the boundary of the face on its left.
-    pub(crate) fn prev_boundary(&self, h: Half) -> Half {
-        let mut g = h.prev();
-        while !self.is_fixed(g) {
-            g = match self.twin(g) {
-                Some(t) => t.prev(),
-                None => return g,
-            };
-        }
-        g
-    }
-
-    /// Whether [`Mesh::deadline`] has passed (then [`Mesh::expired`] is set too); reads the clock
-    /// only when `count` is a multiple of [`CHECK_EVERY`].
-    pub(crate) fn past_deadline(&mut self, count: usize) -> bool {
-        if !self.expired && count.is_multiple_of(CHECK_EVERY) {
-            if let Some(deadline) = self.deadline {
-                self.expired = std::time::Instant::now() >= deadline;
+    /// The half-edges leaving `u`, in rotation order (counter-clockwise, starting after a
+    /// boundary edge if `u` is on the region's boundary).
+    fn around(&self, u: usize) -> Vec<usize> {
+        let Some(start) = self.out(u) else {
+            return Vec::new();
+        };
+        // Clockwise to the first half-edge (or all the way round).
+        let mut first = start;
+        while let Some(g) = self.twin_of(first) {
+            let cw = Mesh::next_in_triangle(g);
+            if cw == start {
+                break;
             }
+            first = cw;
         }
-        self.expired
+        self.fan(first).collect()
+    }
+
+    /// Whether [`Constrained::deadline`] has passed (then [`Constrained::expired`] is set too);
+    /// reads the clock only when `count` is a multiple of [`CHECK_EVERY`].
+    pub(crate) fn past_deadline(&mut self, count: usize) -> bool {
+        past(self.deadline, &mut self.expired, count)
+    }
+
+    /// Fattens the triangles by [`Mesh::lawson`]'s flips, at most `max_flips`, which only makes
+    /// walks shorter. Stops at [`Constrained::deadline`] too.
+    pub(crate) fn fatten(&mut self, max_flips: usize) {
+        let stack: Vec<u32> = (0..self.mesh.twin.len() as u32).collect();
+        let (deadline, expired) = (self.deadline, &mut self.expired);
+        self.mesh.lawson(self.pts, stack, max_flips, |count| {
+            past(deadline, expired, count)
+        });
+        self.halves.clear();
+        for t in 0..self.mesh.tri.len() {
+            self.index(t);
+        }
     }
 
     /// Makes segment `s e` a fixed edge: fixes it if it is an edge, inserts it otherwise.
     /// Refused if it passes through a vertex or crosses a fixed edge.
-    /// Refused too once [`Mesh::deadline`] has passed during its flips ([`Mesh::expired`]).
+    /// Refused too once [`Constrained::deadline`] has passed during its flips
+    /// ([`Constrained::expired`]).
     pub(crate) fn insert(&mut self, s: usize, e: usize) -> Result<(), Broken> {
         let Some(crossed) = self.crossed_by(s, e)? else {
             return Ok(());
@@ -365,13 +661,13 @@ impl<'a, P: Coord> Mesh<'a, P> {
         }
         let mut start = None;
         for h in self.around(s) {
-            let (q, r) = (self.dest(h), self.dest(h.next()));
+            let (q, r) = (self.head(h), self.apex(h));
             if q == e {
                 self.fix(h);
                 return Ok(None);
             }
             if r == e {
-                self.fix(h.prev());
+                self.fix(Mesh::prev_in_triangle(h));
                 return Ok(None);
             }
             let (pq, pr) = (self.point(q), self.point(r));
@@ -385,22 +681,22 @@ impl<'a, P: Coord> Mesh<'a, P> {
         let h = start.ok_or(Broken)?;
         // Walk along s -> e.
         let mut crossed: Vec<(usize, usize)> = Vec::new();
-        let mut crossing = h.next();
+        let mut crossing = Mesh::next_in_triangle(h);
         loop {
             if self.is_fixed(crossing) {
                 return Err(Broken);
             }
-            crossed.push((self.origin(crossing), self.dest(crossing)));
-            let g = self.twin(crossing).ok_or(Broken)?;
-            let z = self.dest(g.next());
+            crossed.push((self.tail(crossing), self.head(crossing)));
+            let g = self.twin_of(crossing).ok_or(Broken)?;
+            let z = self.apex(g);
             if z == e {
                 return Ok(Some(crossed));
             }
             let side = cross(ps, pe, self.point(z));
             if side > 0 {
-                crossing = g.next(); // from the right end to z
+                crossing = Mesh::next_in_triangle(g); // from the right end to z
             } else if side < 0 {
-                crossing = g.prev(); // from z to the left end
+                crossing = Mesh::prev_in_triangle(g); // from z to the left end
             } else {
                 return Err(Broken);
             }
@@ -413,10 +709,10 @@ impl<'a, P: Coord> Mesh<'a, P> {
         &self,
         a: usize,
         b: usize,
-    ) -> Result<(Half, Half, usize, usize, bool), Broken> {
+    ) -> Result<(usize, usize, usize, usize, bool), Broken> {
         let h = self.half_from(a, b).ok_or(Broken)?;
-        let g = self.twin(h).ok_or(Broken)?;
-        let (c, d) = (self.dest(h.next()), self.dest(g.next()));
+        let g = self.twin_of(h).ok_or(Broken)?;
+        let (c, d) = (self.apex(h), self.apex(g));
         let (pc, pd) = (self.point(c), self.point(d));
         let (sa, sb) = (cross(pc, pd, self.point(a)), cross(pc, pd, self.point(b)));
         Ok((h, g, c, d, sa != 0 && sb != 0 && (sa > 0) != (sb > 0)))
@@ -427,7 +723,7 @@ impl<'a, P: Coord> Mesh<'a, P> {
     /// quadrilateral is strictly convex and whose two apexes are `s` or `e` or on one side of
     /// the segment; returns those left, in order. Usually none is left; but a segment can cross
     /// diagonals none of which can go this way (each flippable one has its apexes on opposite
-    /// sides of the segment; see the tests), and then [`Mesh::flip_across`] takes over.
+    /// sides of the segment; see the tests), and then [`Constrained::flip_across`] takes over.
     ///
     /// A flip changes the quadrilaterals of the diagonal's two neighbours in the list only, so
     /// only those are tested again: O(k) tests and at most k flips in all.
@@ -479,9 +775,9 @@ impl<'a, P: Coord> Mesh<'a, P> {
 
     /// Sloan's insertion ("A fast algorithm for generating constrained Delaunay
     /// triangulations", Comput. Struct. 47 (1993) 441-450) on the diagonals `crossed` (in
-    /// order, as [`Mesh::flip_out`] left them): flip any crossed diagonal whose quadrilateral
-    /// is strictly convex (one always is), queueing the new one if it still crosses, until none
-    /// is left. O(k^2) at worst.
+    /// order, as [`Constrained::flip_out`] left them): flip any crossed diagonal whose
+    /// quadrilateral is strictly convex (one always is), queueing the new one if it still
+    /// crosses, until none is left. O(k^2) at worst.
     fn flip_across(
         &mut self,
         s: usize,
@@ -518,113 +814,6 @@ impl<'a, P: Coord> Mesh<'a, P> {
         }
         Ok(())
     }
-
-    /// Fattens the triangles, which only makes walks shorter: Lawson's flips of diagonals
-    /// towards the constrained Delaunay triangulation, at most `max_flips`. Whether a flip is ALLOWED is exact (the
-    /// quadrilateral strictly convex, so the result is again a triangulation with the same
-    /// fixed edges); whether it is DESIRABLE is [`incircle_approx`], a heuristic that never
-    /// decides a fact of the answer (hence the bound on the flips, should rounding make them
-    /// cycle). Stops at [`Mesh::deadline`] too.
-    pub(crate) fn fatten(&mut self, max_flips: usize) {
-        let mut stack: Vec<Half> = (0..self.tv.len() as u32)
-            .flat_map(|t| (0..3u8).map(move |k| Half { t, k }))
-            .collect();
-        let mut flips = 0;
-        let mut count = 0;
-        while let Some(h) = stack.pop() {
-            count += 1;
-            if flips == max_flips || self.past_deadline(count) {
-                break;
-            }
-            if self.is_fixed(h) {
-                continue;
-            }
-            let Some(g) = self.twin(h) else { continue };
-            let (a, b) = (self.origin(h), self.dest(h));
-            let (c, d) = (self.dest(h.next()), self.dest(g.next()));
-            let [pa, pb, pc, pd] = [a, b, c, d].map(|v| self.point(v));
-            if cross(pc, pa, pd) <= 0 || cross(pd, pb, pc) <= 0 {
-                continue;
-            }
-            if incircle_approx(pa, pb, pc, pd) <= 0.0 {
-                continue;
-            }
-            self.flip(h, g);
-            flips += 1;
-            let (t1, t2) = (h.t, g.t);
-            stack.extend([(t1, 0), (t1, 1), (t2, 0), (t2, 1)].map(|(t, k)| Half { t, k }));
-        }
-    }
-
-    /// Flips the diagonal of `h` (`a -> b`, triangle `a b c`) and its twin `g` (`b a d`) to
-    /// `c d`: the triangles become `c a d` and `d b c`.
-    fn flip(&mut self, h: Half, g: Half) {
-        let (t1, t2) = (h.t, g.t);
-        let (a, b) = (self.origin(h), self.dest(h));
-        let (c, d) = (self.dest(h.next()), self.dest(g.next()));
-        // The outer edges: (neighbour, fixed) of c -> a, a -> d, d -> b, b -> c.
-        let side = |mesh: &Self, x: Half| {
-            (
-                mesh.tn[x.t as usize][x.k as usize],
-                mesh.is_fixed(x),
-                mesh.is_done(x),
-            )
-        };
-        let ca = side(self, h.prev());
-        let ad = side(self, g.next());
-        let db = side(self, g.prev());
-        let bc = side(self, h.next());
-        self.unindex(t1);
-        self.unindex(t2);
-        self.tv[t1 as usize] = [c as u32, a as u32, d as u32];
-        self.tv[t2 as usize] = [d as u32, b as u32, c as u32];
-        self.index(t1);
-        self.index(t2);
-        self.tn[t1 as usize] = [ca.0, ad.0, t2];
-        self.tn[t2 as usize] = [db.0, bc.0, t1];
-        let bits =
-            |x: (u32, bool, bool), k: u8| (u8::from(x.1) << k) | ((u8::from(x.2) * DONE) << k);
-        self.flags[t1 as usize] = bits(ca, 0) | bits(ad, 1);
-        self.flags[t2 as usize] = bits(db, 0) | bits(bc, 1);
-        // The neighbours across a -> d and b -> c changed triangle.
-        for (n, (u, v), to) in [(ad.0, (d, a), t1), (bc.0, (c, b), t2)] {
-            if n != NONE {
-                let tri = self.tv[n as usize];
-                for k in 0..3 {
-                    if tri[k] as usize == u && tri[(k + 1) % 3] as usize == v {
-                        self.tn[n as usize][k] = to;
-                    }
-                }
-            }
-        }
-        for v in [a, c, d] {
-            self.vt[v] = t1;
-        }
-        self.vt[b] = t2;
-    }
-
-    #[cfg(test)]
-    pub(crate) fn consistent(&self) -> Result<(), String> {
-        for t in 0..self.tv.len() as u32 {
-            for k in 0..3u8 {
-                let h = Half { t, k };
-                let n = self.tn[t as usize][k as usize];
-                if n == NONE {
-                    continue;
-                }
-                let Some(g) = self.twin(h) else {
-                    return Err(format!("{t}/{k} no twin"));
-                };
-                if self.dest(g) != self.origin(h) || self.tn[g.t as usize][g.k as usize] != t {
-                    return Err(format!(
-                        "{t}/{k} bad twin {:?} {:?}",
-                        self.tv[t as usize], self.tv[n as usize]
-                    ));
-                }
-            }
-        }
-        Ok(())
-    }
 }
 
 #[cfg(test)]
@@ -635,9 +824,9 @@ mod tests {
 
     /// The mesh of [`pinched_round_a_hole`], the ends of its pinched chord and the diagonals
     /// the chord crosses.
-    fn pinched(poly: &Polygon) -> (Mesh<'_>, usize, usize, Vec<(usize, usize)>) {
+    fn pinched(poly: &Polygon) -> (Constrained<'_>, usize, usize, Vec<(usize, usize)>) {
         let (_, base) = pinched_round_a_hole();
-        let mut mesh = Mesh::new(poly.points(), &base, &[]);
+        let mut mesh = Constrained::new(poly.points(), &base, &[]);
         let (s, e) = (vertex_at(poly, (-20, 0)), vertex_at(poly, (20, 0)));
         let crossed = mesh.crossed_by(s, e).unwrap().expect("not an edge yet");
         (mesh, s, e, crossed)
@@ -645,7 +834,7 @@ mod tests {
 
     /// The segment `s e` is a fixed edge, the links are consistent, and the triangles are
     /// still a triangulation of the polygon (the independent checker).
-    fn inserted(poly: &Polygon, mesh: &Mesh, s: usize, e: usize) {
+    fn inserted(poly: &Polygon, mesh: &Constrained, s: usize, e: usize) {
         assert!(mesh.is_fixed_edge(s, e));
         mesh.consistent().unwrap();
         let triangles: Vec<[usize; 3]> = mesh.triangles().collect();
@@ -702,7 +891,7 @@ mod tests {
             .iter()
             .map(|t| t.map(at))
             .collect();
-        let mut mesh = Mesh::new(poly.points(), &base, &[]);
+        let mut mesh = Constrained::new(poly.points(), &base, &[]);
         let crossed = mesh.crossed_by(at(s), at(e)).unwrap().unwrap();
         let expected = [(at(r1), at(l1)), (at(r1), at(l2)), (at(r2), at(l2))];
         assert_eq!(crossed, expected);
@@ -718,10 +907,10 @@ mod tests {
         let (poly, base) = pinched_round_a_hole();
         let at = |x| vertex_at(&poly, x);
         // From (-20, 0) to (40, 0): through the vertex (20, 0).
-        let mut mesh = Mesh::new(poly.points(), &base, &[]);
+        let mut mesh = Constrained::new(poly.points(), &base, &[]);
         assert_eq!(mesh.insert(at((-20, 0)), at((40, 0))), Err(Broken));
         // Across the fixed diagonal (-10, -10)-(0, 10).
-        let mut mesh = Mesh::new(poly.points(), &base, &[(at((-10, -10)), at((0, 10)))]);
+        let mut mesh = Constrained::new(poly.points(), &base, &[(at((-10, -10)), at((0, 10)))]);
         assert_eq!(mesh.insert(at((-20, 0)), at((20, 0))), Err(Broken));
     }
 }

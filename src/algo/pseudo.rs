@@ -37,9 +37,11 @@
 //! encloses, which three corners cannot allow (the right turns of a pseudotriangle total less
 //! than pi). [`crate::verify::pseudo::check`] checks all of it independently.
 //!
-//! Complexity: O(n) after the triangulation (Theorem 5): linear-time twin matching (two counting
-//! sorts), one work list, one face scan. With the triangulation, O(n log n) in all.
+//! Complexity: O(n) after the triangulation (Theorem 5): linear-time twin matching (the half-edge
+//! mesh of `algo/mesh.rs`), one work list, one face scan. With the triangulation, O(n log n) in
+//! all.
 
+use super::mesh::Mesh;
 use super::{Pseudotriangle, Pseudotriangulation};
 use crate::geom::kernel::cross;
 use crate::geom::kernel::Coord;
@@ -71,66 +73,51 @@ const NONE: usize = usize::MAX;
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn minimal<P: Coord>(polygon: &Polygon<P>, triangles: &[[usize; 3]]) -> Pseudotriangulation {
-    let mut mesh = Mesh::new(polygon, triangles);
-    mesh.remove_edges();
-    mesh.remove_triangles();
-    mesh.faces()
+    let mut greedy = Greedy::new(polygon, triangles);
+    greedy.remove_edges();
+    greedy.remove_triangles();
+    greedy.faces()
 }
 
-/// The faces as half-edges: half-edge `3k + i` of triangle `k` runs from its corner `i` to corner
-/// `i + 1`, with its face on the left; `next`/`prev` walk a face counter-clockwise.
-struct Mesh<'a, P: Coord> {
+/// The faces of the greedy over the triangulation's [`Mesh`] (polygon edges unlinked from their
+/// twins, so that no face crosses them): each face a cycle of half-edges, `next`/`prev` walking
+/// it counter-clockwise (at first the triangles, [`Mesh::next_in_triangle`]), merged as edges
+/// are removed.
+struct Greedy<'a, P: Coord> {
     points: &'a [P],
-    origin: Vec<usize>,
+    mesh: Mesh,
     next: Vec<usize>,
     prev: Vec<usize>,
-    /// The opposite half-edge, or [`NONE`] on a polygon edge.
-    twin: Vec<usize>,
     removed: Vec<bool>,
 }
 
-impl<'a, P: Coord> Mesh<'a, P> {
-    fn new(polygon: &'a Polygon<P>, triangles: &[[usize; 3]]) -> Mesh<'a, P> {
+impl<'a, P: Coord> Greedy<'a, P> {
+    fn new(polygon: &'a Polygon<P>, triangles: &[[usize; 3]]) -> Greedy<'a, P> {
         let h = 3 * triangles.len();
-        let origin: Vec<usize> = triangles.iter().flatten().copied().collect();
-        let next: Vec<usize> = (0..h).map(|e| e - e % 3 + (e + 1) % 3).collect();
-        let prev: Vec<usize> = (0..h).map(|e| e - e % 3 + (e + 2) % 3).collect();
-        let dest = |e: usize| origin[next[e]];
-        // Diagonals, sorted by (smaller end, larger end) with two stable counting sorts: the two
-        // half-edges of one diagonal end up side by side.
-        let n = polygon.len();
+        let mut mesh = Mesh::from_triangles(polygon.len(), triangles);
         // A polygon edge in either direction: a triangulation of the convex hull (the fallback
         // of `pseudo-hull`) has both sides of a polygon edge inside the hull.
-        let diagonal: Vec<usize> = (0..h)
-            .filter(|&e| polygon.next(origin[e]) != dest(e) && polygon.next(dest(e)) != origin[e])
-            .collect();
-        let larger = counting_sort(diagonal, n, |e| origin[e].max(dest(e)));
-        let sorted = counting_sort(larger, n, |e| origin[e].min(dest(e)));
-        let mut twin = vec![NONE; h];
-        // Pairs side by side; a hull edge (of a hull triangulation) stands alone.
-        let ends = |e: usize| (origin[e].min(dest(e)), origin[e].max(dest(e)));
-        let mut i = 0;
-        while i < sorted.len() {
-            if i + 1 < sorted.len() && ends(sorted[i]) == ends(sorted[i + 1]) {
-                twin[sorted[i]] = sorted[i + 1];
-                twin[sorted[i + 1]] = sorted[i];
-                i += 2;
-            } else {
-                i += 1;
-            }
-        }
-        Mesh {
+        mesh.separate(|u, w| polygon.next(u) == w || polygon.next(w) == u);
+        Greedy {
             points: polygon.points(),
-            origin,
-            next,
-            prev,
-            twin,
+            mesh,
+            next: (0..h).map(Mesh::next_in_triangle).collect(),
+            prev: (0..h).map(Mesh::prev_in_triangle).collect(),
             removed: vec![false; h],
         }
     }
 
+    /// The opposite half-edge, or [`NONE`] on a polygon edge.
+    fn twin(&self, e: usize) -> usize {
+        self.mesh.twin_of(e).unwrap_or(NONE)
+    }
+
+    fn origin(&self, e: usize) -> usize {
+        self.mesh.tail(e)
+    }
+
     fn dest(&self, e: usize) -> usize {
-        self.origin[self.next[e]]
+        self.mesh.head(e)
     }
 
     /// Whether the turn `u -> a -> w` leaves an angle below pi on its left (a corner there).
@@ -148,30 +135,30 @@ impl<'a, P: Coord> Mesh<'a, P> {
 
     /// Lemma 4(a) for the diagonal of half-edge `e` (`a -> b`).
     fn edge_removable(&self, e: usize) -> bool {
-        let t = self.twin[e];
+        let t = self.twin(e);
         if t == NONE || self.removed[e] || self.next[e] == t || self.next[t] == e {
             return false;
         }
-        let (a, b) = (self.origin[e], self.origin[t]);
+        let (a, b) = (self.origin(e), self.origin(t));
         // At a: u -> a -> b in e's face, b -> a -> w in t's face, merged u -> a -> w.
-        let u = self.origin[self.prev[e]];
+        let u = self.origin(self.prev[e]);
         let w = self.dest(self.next[t]);
         // At b: x -> b -> a in t's face, a -> b -> y in e's face, merged x -> b -> y.
-        let x = self.origin[self.prev[t]];
+        let x = self.origin(self.prev[t]);
         let y = self.dest(self.next[e]);
         self.loses_both(u, a, w, b, b) || self.loses_both(x, b, y, a, a)
     }
 
     /// Step 1: removes removable edges until none is left.
     fn remove_edges(&mut self) {
-        let mut work: Vec<usize> = (0..self.twin.len())
-            .filter(|&e| self.twin[e] != NONE && e < self.twin[e])
+        let mut work: Vec<usize> = (0..self.next.len())
+            .filter(|&e| self.twin(e) != NONE && e < self.twin(e))
             .collect();
         while let Some(e) = work.pop() {
             if !self.edge_removable(e) {
                 continue;
             }
-            let t = self.twin[e];
+            let t = self.twin(e);
             let (pe, ne, pt, nt) = (self.prev[e], self.next[e], self.prev[t], self.next[t]);
             self.link(pe, nt);
             self.link(pt, ne);
@@ -188,19 +175,19 @@ impl<'a, P: Coord> Mesh<'a, P> {
 
     /// Lemma 4(b) for the triangular face of `sides` (each `sides[i]` from corner i to i + 1).
     fn triangle_removable(&self, sides: [usize; 3]) -> bool {
-        if sides.iter().any(|&s| self.twin[s] == NONE) {
+        if sides.iter().any(|&s| self.twin(s) == NONE) {
             return false;
         }
         (0..3).all(|i| {
             let (incoming, outgoing) = (sides[(i + 2) % 3], sides[i]);
-            let a = self.origin[outgoing];
+            let a = self.origin(outgoing);
             // The face across `incoming` (c -> a) has a -> c, after u -> a.
-            let across_in = self.twin[incoming];
-            let u = self.origin[self.prev[across_in]];
+            let across_in = self.twin(incoming);
+            let u = self.origin(self.prev[across_in]);
             let c = self.dest(across_in);
             // The face across `outgoing` (a -> b) has b -> a, before a -> w.
-            let across_out = self.twin[outgoing];
-            let b = self.origin[across_out];
+            let across_out = self.twin(outgoing);
+            let b = self.origin(across_out);
             let w = self.dest(self.next[across_out]);
             self.loses_both(u, a, w, c, b)
         })
@@ -222,8 +209,8 @@ impl<'a, P: Coord> Mesh<'a, P> {
                 .map(|i| {
                     let (incoming, outgoing) = (sides[(i + 2) % 3], sides[i]);
                     (
-                        self.prev[self.twin[incoming]],
-                        self.next[self.twin[outgoing]],
+                        self.prev[self.twin(incoming)],
+                        self.next[self.twin(outgoing)],
                     )
                 })
                 .collect();
@@ -232,7 +219,8 @@ impl<'a, P: Coord> Mesh<'a, P> {
             }
             for s in sides {
                 self.removed[s] = true;
-                self.removed[self.twin[s]] = true;
+                let t = self.twin(s);
+                self.removed[t] = true;
             }
         }
     }
@@ -246,7 +234,7 @@ impl<'a, P: Coord> Mesh<'a, P> {
             if self.removed[start] {
                 continue;
             }
-            if self.twin[start] == NONE || start < self.twin[start] {
+            if self.twin(start) == NONE || start < self.twin(start) {
                 edges += 1;
             }
             if seen[start] {
@@ -256,7 +244,7 @@ impl<'a, P: Coord> Mesh<'a, P> {
             let mut e = start;
             loop {
                 seen[e] = true;
-                cycle.push(self.origin[e]);
+                cycle.push(self.origin(e));
                 e = self.next[e];
                 if e == start {
                     break;
@@ -271,24 +259,6 @@ impl<'a, P: Coord> Mesh<'a, P> {
             stopped: None,
         }
     }
-}
-
-/// `items` stably sorted by `key` (below `range`), in O(items + range).
-fn counting_sort(items: Vec<usize>, range: usize, key: impl Fn(usize) -> usize) -> Vec<usize> {
-    let mut start = vec![0usize; range + 1];
-    for &e in &items {
-        start[key(e) + 1] += 1;
-    }
-    for k in 0..range {
-        start[k + 1] += start[k];
-    }
-    let mut out = vec![0; items.len()];
-    for &e in &items {
-        let k = key(e);
-        out[start[k]] = e;
-        start[k] += 1;
-    }
-    out
 }
 
 #[cfg(test)]

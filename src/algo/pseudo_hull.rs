@@ -85,7 +85,7 @@
 
 mod funnel;
 
-use super::mesh::{Broken, Half, Mesh};
+use super::mesh::{Broken, Constrained};
 use super::TriangulateError;
 use super::{plain, plain_polygon_for_walking, HullCounts, Pseudotriangle, Pseudotriangulation};
 use crate::geom::kernel::Coord;
@@ -269,8 +269,8 @@ fn setup<'a, P: Coord>(
     triangles: &[[usize; 3]],
     fixed: &[(usize, usize)],
     deadline: Option<Instant>,
-) -> (Mesh<'a, P>, usize) {
-    let mut mesh = Mesh::new(polygon.points(), triangles, fixed);
+) -> (Constrained<'a, P>, usize) {
+    let mut mesh = Constrained::new(polygon.points(), triangles, fixed);
     mesh.deadline = deadline;
     mesh.fatten(10 * triangles.len());
     #[cfg(test)]
@@ -281,21 +281,21 @@ fn setup<'a, P: Coord>(
 
 /// Whether the boundary turns at a corner (an angle below pi in the face on the left) between
 /// `into` and `out`, two consecutive fixed half-edges of a face boundary.
-fn corner<P: Coord>(mesh: &Mesh<P>, into: Half, out: Half) -> bool {
+fn corner<P: Coord>(mesh: &Constrained<P>, into: usize, out: usize) -> bool {
     let p = |v: usize| mesh.point(v);
-    cross(p(mesh.origin(out)), p(mesh.dest(out)), p(mesh.origin(into))) > 0
+    cross(p(mesh.tail(out)), p(mesh.head(out)), p(mesh.tail(into))) > 0
 }
 
 /// One step of Theorem 6's proof on the face on the left of the fixed half-edge `h` (an edge of
 /// its outer boundary B): corners x1, x2, x3, the taut string S, R cut off and reported.
 fn step<P: Coord>(
-    mesh: &mut Mesh<P>,
-    h: Half,
+    mesh: &mut Constrained<P>,
+    h: usize,
     guard: usize,
     faces: &mut Vec<Vec<usize>>,
     work: &mut Vec<(usize, usize)>,
 ) -> Result<(), Broken> {
-    let next = |mesh: &Mesh<P>, g: Half| mesh.next_boundary(g, |_, _| {});
+    let next = |mesh: &Constrained<P>, g: usize| mesh.next_boundary(g, |_, _| {});
     // x2: the first corner from h on.
     let mut into = h;
     let mut out = next(mesh, into);
@@ -351,7 +351,7 @@ fn step<P: Coord>(
             return Err(Broken);
         }
     }
-    let (x1, x3) = (mesh.origin(first), mesh.dest(last));
+    let (x1, x3) = (mesh.tail(first), mesh.head(last));
     let path = funnel::shortest_path(mesh.points(), x1, &portals, x3)?;
     let new_edges: Vec<(usize, usize)> = path
         .windows(2)
@@ -380,13 +380,17 @@ fn step<P: Coord>(
 
 /// Walks the face on the left of `h`, marks it finished and returns its cycle, checked to be a
 /// pseudotriangle: distinct vertices, exactly three corners.
-fn finish<P: Coord>(mesh: &mut Mesh<P>, h: Half, guard: usize) -> Result<Vec<usize>, Broken> {
+fn finish<P: Coord>(
+    mesh: &mut Constrained<P>,
+    h: usize,
+    guard: usize,
+) -> Result<Vec<usize>, Broken> {
     let mut cycle = Vec::new();
     let mut corners = 0;
     let mut g = h;
     loop {
         mesh.set_done(g);
-        cycle.push(mesh.origin(g));
+        cycle.push(mesh.tail(g));
         let after = mesh.next_boundary(g, |_, _| {});
         corners += usize::from(corner(mesh, g, after));
         g = after;

@@ -39,7 +39,7 @@
 //! triangles and triangulated both sides again.
 
 use super::degenerate::Degenerate;
-use crate::algo::mesh::Mesh;
+use crate::algo::mesh::Constrained;
 use crate::algo::{plain, TriangulateError};
 use crate::geom::kernel::cross;
 use crate::geom::kernel::Coord;
@@ -149,7 +149,7 @@ pub fn triangulate_with_cuts<P: Coord>(
         vertex: polygon.id(m.b),
         point: polygon.format_vertex(m.b),
     };
-    let mut mesh = Mesh::new(polygon.points(), &base, &[]);
+    let mut mesh = Constrained::new(polygon.points(), &base, &[]);
     drop(base);
     for m in chosen {
         mesh.insert(m.a, m.b)

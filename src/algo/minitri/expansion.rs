@@ -24,13 +24,14 @@
 //! cone's highest pending part is cut down to it. In general position almost no direction has a
 //! vertex on both sides, so most of the wide cone never needs walking.
 //!
-//! The walk runs over the plain triangulation made fatter by edge flips towards the constrained
-//! Delaunay triangulation ([`Mesh::flip_towards_delaunay`]): rays then cross far fewer triangles
-//! than the long slivers of a monotone triangulation.
+//! The walk runs over the plain triangulation as a half-edge [`Mesh`] (the one of `algo/mesh.rs`,
+//! each vertex's boundary half-edge starting its fan), made fatter by edge flips towards the
+//! constrained Delaunay triangulation ([`Mesh::flip_towards_delaunay`]): rays then cross far
+//! fewer triangles than the long slivers of a monotone triangulation.
 //!
 //! Every decision is an exact sign of a cross product of two [`Dir`]s; the only floating point
 //! (which diagonals to flip) affects the running time, never what is found.
-//! Complexity: O(n log n) to build the mesh, at most `max_flips` O(1) flips, then per vertex work
+//! Complexity: O(n) to build the mesh, at most `max_flips` O(1) flips, then per vertex work
 //! proportional to the triangles met by the parts of its cones still alive (an O(1) pruning test
 //! for each part taken from the stacks, none for the triangles a part crosses whole, see
 //! [`double_cone`]): O(n) per vertex, so O(n^2) in the worst case, but far less
@@ -41,9 +42,9 @@
 //! swept along the corridor (`crate::algo::plain_polygon_for_walking`).
 
 use super::ray_shooting::{Lazy, RAY_WALK};
-use crate::algo::mesh::twin_halves;
+pub use crate::algo::mesh::Mesh;
 use crate::geom::kernel::Coord;
-use crate::geom::kernel::{cross, incircle_approx, Dir};
+use crate::geom::kernel::Dir;
 use crate::geom::polygon::Polygon;
 
 /// A cone of directions from `lo` counter-clockwise to `hi` (narrower than a half-turn); a bound
@@ -92,195 +93,6 @@ impl<P: Coord> Cone<P> {
     fn holds_given(self, d: Dir<P>, right: i128) -> bool {
         let left = d.cross(self.hi);
         (right > 0 || (right == 0 && self.lo_in)) && (left > 0 || (left == 0 && self.hi_in))
-    }
-}
-
-/// A triangulation of a polygon without holes with neighbours, for walking.
-///
-/// Invariants: `triangles` are counter-clockwise with positive area, disjoint interiors, covering
-/// the polygon, every side a polygon edge or a proper diagonal. Half-edge `3 t + k` is the side
-/// `triangles[t][k] -> triangles[t][(k + 1) % 3]`; `twin` maps it to the same side seen from the
-/// neighbouring triangle (`NONE` exactly on the polygon boundary).
-pub struct Mesh {
-    triangles: Vec<[usize; 3]>,
-    twin: Vec<u32>,
-    /// For each vertex `v`, the half-edge `v -> next(v)` (a boundary side).
-    first: Vec<u32>,
-}
-
-const NONE: u32 = u32::MAX;
-
-impl Mesh {
-    /// Builds the neighbour structure of counter-clockwise `triangles` of a polygon, holes allowed
-    /// (a plain triangulation: n + 2w - 2 triangles, sides ring edges or proper diagonals; the
-    /// walks stop at every ring edge alike).
-    ///
-    /// # Panics
-    /// If the triangles do not share their sides as a triangulation of `polygon` does.
-    pub fn new<P: Coord>(polygon: &Polygon<P>, triangles: Vec<[usize; 3]>) -> Mesh {
-        let twin = twin_halves(polygon.len(), triangles.len(), |t, k| triangles[t][k]);
-        let mut mesh = Mesh {
-            triangles,
-            twin,
-            first: Vec::new(),
-        };
-        mesh.find_boundary(polygon);
-        mesh
-    }
-
-    /// Sets `first` from the boundary half-edges.
-    fn find_boundary<P: Coord>(&mut self, polygon: &Polygon<P>) {
-        self.first = vec![NONE; polygon.len()];
-        for (h, &g) in self.twin.iter().enumerate() {
-            if g == NONE {
-                let v = self.tail(h);
-                assert_eq!(self.head(h), polygon.next(v), "a boundary side is an edge");
-                self.first[v] = h as u32;
-            }
-        }
-        assert!(
-            !self.first.contains(&NONE),
-            "every polygon edge is a triangle side"
-        );
-    }
-
-    /// Panics unless the neighbour structure is consistent: twins are mutual and join the same
-    /// two vertices in opposite directions, and `first` holds each vertex's boundary edge.
-    #[cfg(test)]
-    pub fn check_invariants<P: Coord>(&self, polygon: &Polygon<P>) {
-        assert_eq!(self.twin.len(), 3 * self.triangles.len());
-        for (h, &g) in self.twin.iter().enumerate() {
-            if g != NONE {
-                let g = g as usize;
-                assert_eq!(self.twin[g] as usize, h, "twins are mutual");
-                assert_eq!((self.tail(g), self.head(g)), (self.head(h), self.tail(h)));
-            }
-        }
-        for (v, &h) in self.first.iter().enumerate() {
-            let h = h as usize;
-            assert_eq!((self.tail(h), self.head(h)), (v, polygon.next(v)));
-            assert_eq!(self.twin[h], NONE);
-        }
-    }
-
-    /// The triangles (counter-clockwise, as stored vertex indices).
-    pub fn triangles(&self) -> &[[usize; 3]] {
-        &self.triangles
-    }
-
-    /// The triangles, giving up the neighbour structure.
-    pub fn into_triangles(self) -> Vec<[usize; 3]> {
-        self.triangles
-    }
-
-    /// The vertex a half-edge starts from.
-    #[inline]
-    pub(super) fn tail(&self, h: usize) -> usize {
-        self.triangles[h / 3][h % 3]
-    }
-
-    /// The vertex a half-edge ends at.
-    #[inline]
-    pub(super) fn head(&self, h: usize) -> usize {
-        self.triangles[h / 3][(h + 1) % 3]
-    }
-
-    /// The vertex of a half-edge's triangle opposite it.
-    #[inline]
-    pub(super) fn apex(&self, h: usize) -> usize {
-        self.triangles[h / 3][(h + 2) % 3]
-    }
-
-    /// The same side seen from the neighbouring triangle (`None` on the polygon boundary).
-    #[inline]
-    pub(super) fn twin_of(&self, h: usize) -> Option<usize> {
-        match self.twin[h] {
-            NONE => None,
-            g => Some(g as usize),
-        }
-    }
-
-    /// The next half-edge of the same triangle (counter-clockwise).
-    #[inline]
-    pub(super) fn next_in_triangle(h: usize) -> usize {
-        if h % 3 == 2 {
-            h - 2
-        } else {
-            h + 1
-        }
-    }
-
-    /// Fattens the triangles for walking, by Lawson's edge flips towards the constrained Delaunay
-    /// triangulation (polygon edges are never flipped); returns the number of flips made.
-    ///
-    /// A flip replaces the diagonal `a b` of triangles `a b c` and `b a d` by `c d`. Whether it is
-    /// ALLOWED is decided exactly: only when the quadrilateral `a d b c` is strictly convex
-    /// (`c a d` and `d b c` counter-clockwise, exact [`cross`] signs), so the result is again a
-    /// triangulation of the polygon with positive triangles whose sides are edges or proper
-    /// diagonals (the new diagonal runs inside the open quadrilateral, which holds no vertex).
-    /// Whether it is DESIRABLE (`d` inside the circle through `a b c`) is decided in floating
-    /// point ([`incircle_approx`]): a wrong answer only makes the triangles a little less fat,
-    /// hence walking a little slower, and never changes what the walk finds, which is correct
-    /// over any triangulation. Since inexact answers could make flips cycle, at most `max_flips`
-    /// are made.
-    pub fn flip_towards_delaunay<P: Coord>(
-        &mut self,
-        polygon: &Polygon<P>,
-        max_flips: usize,
-    ) -> usize {
-        let p = |v: usize| polygon.point(v);
-        let mut stack: Vec<u32> = (0..self.twin.len() as u32)
-            .filter(|&h| self.twin[h as usize] != NONE && h < self.twin[h as usize])
-            .collect();
-        let mut flips = 0;
-        while let Some(h) = stack.pop() {
-            if flips == max_flips {
-                break;
-            }
-            let h = h as usize;
-            let g = self.twin[h];
-            if g == NONE {
-                continue; // an entry made stale by earlier flips, now a boundary side
-            }
-            let g = g as usize;
-            let (a, b, c, d) = (self.tail(h), self.head(h), self.apex(h), self.apex(g));
-            if cross(p(c), p(a), p(d)) <= 0 || cross(p(d), p(b), p(c)) <= 0 {
-                continue; // not strictly convex: the flip is not allowed
-            }
-            if incircle_approx(p(a), p(b), p(c), p(d)) <= 0.0 {
-                continue; // not (as far as floating point tells) an improvement
-            }
-            let (t, s) = (h / 3, g / 3);
-            let twin = |x: usize| self.twin[x];
-            let (e_bc, e_ca) = (
-                twin(Self::next_in_triangle(h)),
-                twin(Self::next_in_triangle(Self::next_in_triangle(h))),
-            );
-            let (e_ad, e_db) = (
-                twin(Self::next_in_triangle(g)),
-                twin(Self::next_in_triangle(Self::next_in_triangle(g))),
-            );
-            self.triangles[t] = [c, a, d];
-            self.triangles[s] = [d, b, c];
-            let links = [
-                (3 * t, e_ca),
-                (3 * t + 1, e_ad),
-                (3 * t + 2, (3 * s + 2) as u32),
-                (3 * s, e_db),
-                (3 * s + 1, e_bc),
-                (3 * s + 2, (3 * t + 2) as u32),
-            ];
-            for (x, y) in links {
-                self.twin[x] = y;
-                if y != NONE {
-                    self.twin[y as usize] = x as u32;
-                }
-            }
-            stack.extend([3 * t, 3 * t + 1, 3 * s, 3 * s + 1].map(|x| x as u32));
-            flips += 1;
-        }
-        self.find_boundary(polygon);
-        flips
     }
 }
 
@@ -386,17 +198,12 @@ pub fn double_cone<'w, P: Coord>(
     // angle, more than a half-turn), and the far side of each of its triangles.
     fan.clear();
     far_sides.clear();
-    let mut h = mesh.first[b] as usize;
     fan.push((to_next, polygon.next(b)));
-    loop {
+    // From the boundary half-edge b -> next(b), across each side w -> b to b -> w.
+    for h in mesh.out(b).into_iter().flat_map(|h| mesh.fan(h)) {
         let w = mesh.apex(h);
         fan.push((dir(w), w));
         far_sides.push(Mesh::next_in_triangle(h));
-        // Across the side w -> b; its twin is b -> w in the next triangle of the fan.
-        match mesh.twin[Mesh::next_in_triangle(Mesh::next_in_triangle(h))] {
-            NONE => break,
-            g => h = g as usize,
-        }
     }
     for (side, cone) in cones.iter().enumerate() {
         found[side].clear();
@@ -470,7 +277,9 @@ pub fn double_cone<'w, P: Coord>(
             (None, Some(_)) => 1,
             (Some(s), Some(t)) => usize::from(s.1.hi.cross(t.1.hi.reversed()) > 0),
         };
-        let (step, mut cone) = stacks[side].pop().expect("the chosen cone has a part");
+        let Some((step, mut cone)) = stacks[side].pop() else {
+            break; // not reached: the chosen cone has a part
+        };
         // A direction matters only if its opposite may still be found in the other cone: in a
         // part on the other stack, or at a vertex found there.
         let other = 1 - side;
@@ -579,9 +388,9 @@ pub fn double_cone<'w, P: Coord>(
             } else {
                 k_ux // through u -> x
             };
-            match mesh.twin[through] {
-                NONE => break, // the part ends at a polygon edge
-                next => g = next as usize,
+            match mesh.twin_of(through) {
+                None => break, // the part ends at a polygon edge
+                Some(next) => g = next,
             }
         }
     }
@@ -738,8 +547,9 @@ fn found_in<P: Coord>(seen: &[Sighting<P>], range: Cone<P>) -> bool {
 /// Pushes the part of a cone that leaves a triangle through its half-edge `k`, unless that is a
 /// polygon edge or the part is empty.
 fn enter<P: Coord>(stack: &mut Vec<(Step, Cone<P>)>, mesh: &Mesh, k: usize, part: Cone<P>) {
-    let next = mesh.twin[k];
-    if next != NONE && part.lo.cross(part.hi) > 0 {
-        stack.push((Step::Enter(next as usize), part));
+    if let Some(next) = mesh.twin_of(k) {
+        if part.lo.cross(part.hi) > 0 {
+            stack.push((Step::Enter(next), part));
+        }
     }
 }

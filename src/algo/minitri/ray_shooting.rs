@@ -144,7 +144,7 @@ impl Shooter {
     /// Preprocesses the triangulation: heavy paths of the dual tree, hull trees along them.
     /// O(n log n) time and memory.
     pub fn new<P: Coord>(polygon: &Polygon<P>, mesh: &Mesh) -> Shooter {
-        let triangles = mesh.triangles().len();
+        let triangles = mesh.triangle_count();
         // The dual tree (a spanning tree of the dual graph with holes): parents and a preorder,
         // iteratively.
         let mut parent = vec![u32::MAX; triangles];
@@ -554,7 +554,7 @@ mod tests {
             let mut mesh = Mesh::new(&p, crate::algo::plain_polygon_for_walking(&p));
             mesh.flip_towards_delaunay(&p, 4 * p.len());
             let shooter = Shooter::new(&p, &mesh);
-            for t in 0..mesh.triangles().len() {
+            for t in 0..mesh.triangle_count() {
                 for k in 0..3 {
                     // From the corner b of triangle t across its far side g, into the
                     // neighbour through g's twin.

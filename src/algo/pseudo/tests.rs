@@ -68,7 +68,7 @@ fn lemma_3a_a_central_triangle_goes_as_a_whole() {
     // add up to more than pi (Lemma 3 case (a), Lemma 4(b)).
     let p = polygon(&[&[(0, 0), (6, 2), (12, 0), (8, 4), (6, 10), (4, 4)]]);
     let triangles = [[0, 1, 5], [1, 2, 3], [5, 3, 4], [1, 3, 5]];
-    let mut only_edges = super::Mesh::new(&p, &triangles);
+    let mut only_edges = super::Greedy::new(&p, &triangles);
     only_edges.remove_edges();
     assert_eq!(
         only_edges.faces().faces.len(),
@@ -134,8 +134,8 @@ fn polygon_edges_stay_and_holes_are_no_faces() {
 #[test]
 fn twins_are_matched_by_their_two_ends() {
     let p = polygon(&[&[(0, 0), (4, 0), (4, 4), (0, 4)]]);
-    let mesh = super::Mesh::new(&p, &[[0, 1, 2], [0, 2, 3]]);
+    let greedy = super::Greedy::new(&p, &[[0, 1, 2], [0, 2, 3]]);
     // Half-edge 1 is 1 -> 2 (a polygon edge); 2 is 2 -> 0 and 3 is 0 -> 2.
-    assert_eq!(mesh.twin[1], super::NONE);
-    assert_eq!((mesh.twin[2], mesh.twin[3]), (3, 2));
+    assert_eq!(greedy.twin(1), super::NONE);
+    assert_eq!((greedy.twin(2), greedy.twin(3)), (3, 2));
 }

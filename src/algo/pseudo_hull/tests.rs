@@ -119,7 +119,7 @@ fn first_step(p: &Polygon) -> (Vec<Vec<usize>>, Vec<usize>) {
     let mut rest = Vec::new();
     let mut g = start;
     loop {
-        rest.push(mesh.origin(g));
+        rest.push(mesh.tail(g));
         g = mesh.next_boundary(g, |_, _| {});
         if g == start {
             break;
