@@ -325,24 +325,6 @@ pub(crate) fn t_junctions<P: Coord>(
     out
 }
 
-/// Old names of [`plain`]'s entry points, kept only for files other changes own
-/// (`pseudo_hull.rs`, `minitri/ray_shooting.rs`'s tests): to be removed once they call
-/// [`plain::rings`] and [`plain::polygon`].
-pub(crate) use plain::polygon as plain_polygon_for_walking;
-
-/// [`plain::rings`] of one cycle: an old name kept only for `pseudo_hull.rs` (owned by another
-/// change), to be removed once it calls [`plain::rings`].
-pub(crate) fn plain<P: Coord>(pts: &[P]) -> Vec<[usize; 3]> {
-    plain::rings(pts, &[0])
-}
-
-/// The `ear` algorithm's old module path, [`plain::triangulate`]: kept only for `pseudo.rs`'s
-/// example (owned by another change), to be removed once it names [`plain`].
-#[doc(hidden)]
-pub mod ear {
-    pub use super::plain::triangulate;
-}
-
 /// A triangulation of a polygon with touching rings ([`walks`]).
 ///
 /// For `minitri`: Chen & Chang's steps on the walks ([`minitri::triangulate_walks`]): on one

@@ -10,7 +10,7 @@
 //!
 //! # Overview
 //!
-//! 0. The start: the plain triangulation of [`crate::algo::ear`] (monotone pieces, O(n log n)),
+//! 0. The start: the plain triangulation of [`crate::algo::plain::triangulate`] (monotone pieces, O(n log n)),
 //!    n + 2w - 2 nondegenerate triangles with no vertex inside a side. Why not MINITRI's minimum
 //!    triangulation: its degenerate triangles are T-junctions (a vertex inside a triangle side),
 //!    so it is no triangulation of the vertex set in the paper's sense (Section 2: a maximal
@@ -52,7 +52,7 @@ const NONE: usize = usize::MAX;
 
 /// A minimal pseudotriangulation of `polygon` contained in `triangles` (a triangulation of it by
 /// nondegenerate counter-clockwise triangles with no vertex inside a side, such as
-/// [`crate::algo::ear::triangulate`] gives), by the greedy of Section 5.
+/// [`crate::algo::plain::triangulate`] gives), by the greedy of Section 5.
 ///
 /// `triangles` may instead triangulate the convex hull of the vertices, every polygon edge an
 /// edge (what `pseudo-hull` falls back to at its deadline): the result is then a minimal
@@ -61,13 +61,13 @@ const NONE: usize = usize::MAX;
 ///
 /// # Examples
 /// ```
-/// use minitri::{algo::{ear, pseudo}, Decimal, Polygon, RawPolygon};
+/// use minitri::{algo::{plain, pseudo}, Decimal, Polygon, RawPolygon};
 /// let ring: Result<Vec<[Decimal; 2]>, minitri::NumberError> = [(0, 0), (4, 0), (4, 4), (0, 4)]
 ///     .iter()
 ///     .map(|&(x, y)| Ok([Decimal::parse(&x.to_string())?, Decimal::parse(&y.to_string())?]))
 ///     .collect();
 /// let (polygon, _warnings) = Polygon::from_raw(&RawPolygon { rings: vec![ring?], ..Default::default() })?;
-/// let start = ear::triangulate(&polygon)?;
+/// let start = plain::triangulate(&polygon)?;
 /// let p = pseudo::minimal(&polygon, &start.triangles);
 /// assert_eq!(p.faces.len(), 2); // a square has four corners: one diagonal must stay
 /// # Ok::<(), Box<dyn std::error::Error>>(())

@@ -24,7 +24,7 @@
 //!    last pseudotriangle.
 //!
 //! How S is found: the hull is triangulated once (the polygon with its holes by
-//! `algo::plain_polygon_for_walking`, which takes the triangulation made while a large polygon
+//! `algo::plain::polygon`, which takes the triangulation made while a large polygon
 //! was validated if nothing took it before; each hole and pocket by `algo::plain`; O(n log n)),
 //! with the edges of L and of the hull marked fixed (`algo/mesh.rs`), and its triangles
 //! fattened by Lawson flips (a heuristic for speed only: fat triangles make short sleeves). Walking along A1 just
@@ -87,7 +87,7 @@ mod funnel;
 
 use super::mesh::{Broken, Constrained};
 use super::TriangulateError;
-use super::{plain, plain_polygon_for_walking, HullCounts, Pseudotriangle, Pseudotriangulation};
+use super::{plain, HullCounts, Pseudotriangle, Pseudotriangulation};
 use crate::geom::kernel::Coord;
 use crate::geom::kernel::{cmp_angle, cross};
 use crate::geom::polygon::Polygon;
@@ -231,13 +231,17 @@ fn hull_triangles<P: Coord>(
 ) -> (Vec<[usize; 3]>, Vec<(usize, usize)>, Vec<(usize, usize)>) {
     let n = polygon.len();
     let points = polygon.points();
-    let mut triangles = plain_polygon_for_walking(polygon);
+    let mut triangles = plain::polygon(polygon);
     let mut fixed: Vec<(usize, usize)> = (0..n).map(|i| (i, polygon.next(i))).collect();
     // Where to start: a half-edge of each first face's outer boundary, the face on its left.
     let mut work: Vec<(usize, usize)> = vec![(0, polygon.next(0))];
     let add_cycle = |cycle: &[usize], triangles: &mut Vec<[usize; 3]>| {
         let pts: Vec<P> = cycle.iter().map(|&v| points[v]).collect();
-        triangles.extend(plain(&pts).into_iter().map(|t| t.map(|i| cycle[i])));
+        triangles.extend(
+            plain::rings(&pts, &[0])
+                .into_iter()
+                .map(|t| t.map(|i| cycle[i])),
+        );
     };
     for r in 1..polygon.ring_starts().len() {
         let mut hole: Vec<usize> = polygon.ring_range(r).collect();

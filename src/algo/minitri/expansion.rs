@@ -39,7 +39,7 @@
 //! after the flips: about 37 states per vertex at 10^4 vertices, 42 at 10^5, 48 at 10^6 (before the
 //! flips and the pairing of the cones: 210 at 10^4, 560 at 10^5); on the `bars` family (a corridor
 //! the length of the polygon, Theta(n^2) visible pairs), about 10 states per vertex on the mesh
-//! swept along the corridor (`crate::algo::plain_polygon_for_walking`).
+//! swept along the corridor (`crate::algo::plain::polygon`).
 
 use super::ray_shooting::{Lazy, RAY_WALK};
 pub use crate::algo::mesh::Mesh;

@@ -1,7 +1,7 @@
 //! Hand-made cases of Lemmas 3 and 4, each with a triangulation chosen on purpose.
 
 use super::minimal;
-use crate::algo::{ear, Algorithm, Pseudotriangulation};
+use crate::algo::{plain, Algorithm, Pseudotriangulation};
 use crate::test_support::polygon;
 use crate::verify::pseudo::check;
 use crate::Polygon;
@@ -119,7 +119,7 @@ fn polygon_edges_stay_and_holes_are_no_faces() {
         &[(0, 0), (10, 0), (10, 10), (0, 10)],
         &[(3, 3), (3, 6), (7, 6), (7, 3)],
     ]);
-    let start = ear::triangulate(&p).expect("plain triangulation");
+    let start = plain::triangulate(&p).expect("plain triangulation");
     let result = minimal(&p, &start.triangles);
     assert_valid(&p, &result);
     assert!(

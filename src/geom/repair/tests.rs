@@ -498,7 +498,7 @@ fn check_region(rings: Vec<Vec<(i64, i64)>>, cells: &BTreeSet<(i64, i64)>) -> (u
             Ok((polygon, _)) => {
                 let polygon = polygon.fast().expect("on the grid");
                 let t = crate::algo::minitri::triangulate_within(polygon, None)
-                    .or_else(|_| crate::algo::ear::triangulate(polygon))
+                    .or_else(|_| crate::algo::plain::triangulate(polygon))
                     .expect("triangulated");
                 let check = crate::verify::check(polygon, &t);
                 assert!(check.valid, "{rings:?}: {:?}", check.problems);
@@ -717,7 +717,7 @@ fn random_rings_on_a_small_grid_repair_without_panics_into_verified_pieces() {
             };
             let polygon = polygon.fast().expect("on the grid");
             let t = crate::algo::minitri::triangulate_within(polygon, None)
-                .or_else(|_| crate::algo::ear::triangulate(polygon))
+                .or_else(|_| crate::algo::plain::triangulate(polygon))
                 .expect("triangulated");
             let check = crate::verify::check(polygon, &t);
             assert!(check.valid, "{rings:?}: {:?}", check.problems);
