@@ -11,10 +11,11 @@ use crate::algo::{
 };
 use crate::feature::Identity;
 use crate::geom::kernel::Coord;
-use crate::geom::polygon::{AnyPolygon, Polygon, Warning};
+use crate::geom::polygon::{AnyPolygon, Polygon, Validation, Warning};
 use crate::geom::repair::{self, Repair};
 use crate::geom::validate::InvalidPolygon;
-use crate::io::read::{self, Format, ParseError, RawPolygon};
+use crate::io::read::{self, Format, ParseError};
+use crate::raw::RawPolygon;
 use crate::verify::{self, Check};
 use serde::Serialize;
 use std::fmt;
@@ -657,7 +658,7 @@ pub fn process_raw(
         }];
     }
     if options.repair {
-        let repaired = repair::repair_raw(&raw);
+        let repaired = repair::repair_raw_validated(&raw, &PlainBeside);
         drop(raw);
         let pieces = match repaired {
             Err(e) => {
@@ -706,7 +707,7 @@ pub fn process_raw(
             .collect();
     }
     let mut outcome = outcome;
-    let validated = AnyPolygon::from_raw_all_errors(&raw);
+    let validated = AnyPolygon::from_raw_validated(&raw, &PlainBeside);
     drop(raw);
     match validated {
         Err(errors) => outcome.result = Err(Error::Invalid(errors)),
@@ -717,4 +718,34 @@ pub fn process_raw(
         }
     }
     vec![outcome]
+}
+
+/// From this many vertices on, a polygon is triangulated for step 1 beside its validation
+/// ([`PlainBeside`]); below, the second thread would not pay for itself.
+const TRIANGULATE_WHILE_VALIDATING: usize = 8192;
+
+/// Validation with the plain triangulation for step 1's walks run beside the sweep, on another
+/// rayon thread, for a large polygon: the two sweeps take about as long each. The triangulation
+/// of rings not yet known valid never panics and always ends
+/// ([`crate::algo::try_plain_polygon_for_walking`]), and it is kept only if the polygon is valid
+/// and its rings do not touch (touching rings are relinked into walks, another polygon). On one
+/// thread (`--jobs 1`) nothing would overlap: an invalid polygon would only be triangulated for
+/// nothing, so the sweep runs alone.
+pub(crate) struct PlainBeside;
+
+impl Validation for PlainBeside {
+    fn validated<P: Coord>(&self, polygon: Polygon<P>) -> Result<Polygon<P>, Vec<InvalidPolygon>> {
+        if polygon.len() < TRIANGULATE_WHILE_VALIDATING || rayon::current_num_threads() <= 1 {
+            return polygon.validated();
+        }
+        let (contacts, plain) = rayon::join(
+            || polygon.sweep(),
+            || crate::algo::try_plain_polygon_for_walking(&polygon),
+        );
+        let contacts = contacts?;
+        if contacts.any() {
+            return polygon.settled(contacts);
+        }
+        Ok(polygon.with_walking_plain(plain))
+    }
 }

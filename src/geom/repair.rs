@@ -37,9 +37,11 @@
 //! holes into s > 1 outer rings O(h n).
 
 use super::kernel::{cmp_angle_from, cross, line_through, on_segment, Area, Coord, Point};
-use super::polygon::{dropped, to_grid, wide_points, AnyPolygon, Grid, Polygon, Ring, Warning};
+use super::polygon::{
+    dropped, to_grid, wide_points, AnyPolygon, Grid, Polygon, Ring, SweepOnly, Validation, Warning,
+};
 use super::validate::{folds_back, vertices_on_edges, InvalidPolygon};
-use crate::io::read::RawPolygon;
+use crate::raw::RawPolygon;
 use serde::Serialize;
 use std::collections::HashMap;
 use std::fmt;
@@ -122,6 +124,14 @@ pub struct Pieces {
 /// What cannot be repaired into anything: an outer ring of fewer than 3 distinct points or of
 /// zero area.
 pub fn repair_raw(raw: &RawPolygon) -> Result<Pieces, InvalidPolygon> {
+    repair_raw_validated(raw, &SweepOnly)
+}
+
+/// [`repair_raw`], each piece validated by `how`.
+pub(crate) fn repair_raw_validated(
+    raw: &RawPolygon,
+    how: &impl Validation,
+) -> Result<Pieces, InvalidPolygon> {
     if raw.rings.is_empty() {
         return Err(InvalidPolygon::TooFewVertices {
             ring: Ring::Outer,
@@ -129,9 +139,9 @@ pub fn repair_raw(raw: &RawPolygon) -> Result<Pieces, InvalidPolygon> {
         });
     }
     match to_grid(raw) {
-        Ok((points, grid)) => repair_points(raw, points, grid),
+        Ok((points, grid)) => repair_points(raw, points, grid, how),
         Err(InvalidPolygon::CoordinatesTooLarge { .. }) => {
-            repair_points(raw, wide_points(raw), Grid::identity())
+            repair_points(raw, wide_points(raw), Grid::identity(), how)
         }
         Err(e) => Err(e),
     }
@@ -142,6 +152,7 @@ fn repair_points<P: Coord>(
     raw: &RawPolygon,
     points: Vec<P>,
     grid: Grid,
+    how: &impl Validation,
 ) -> Result<Pieces, InvalidPolygon>
 where
     AnyPolygon: From<Polygon<P>>,
@@ -166,7 +177,7 @@ where
         .map(|rings| {
             let (polygon, warnings) =
                 Polygon::from_grid_rings(rings, grid, input_vertices).map_err(|e| vec![e])?;
-            Ok((AnyPolygon::from(polygon.validated()?), warnings))
+            Ok((AnyPolygon::from(how.validated(polygon)?), warnings))
         })
         .collect();
     Ok(Pieces {
