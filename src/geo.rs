@@ -28,7 +28,7 @@ use crate::algo::Triangulation;
 use crate::geom::decimal::{Decimal, NumberError};
 use crate::geom::polygon::{AnyPolygon, Polygon, Ring, Warning};
 use crate::io::read::ParseError;
-use crate::pipeline::Error;
+use crate::outcome::Error;
 use crate::pipeline::PlainBeside;
 use crate::raw::RawPolygon;
 use geo_types::{Coord, CoordNum, LineString, MultiPolygon, Triangle};

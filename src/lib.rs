@@ -101,6 +101,7 @@ pub mod feature;
 pub mod geo;
 pub mod geom;
 pub mod io;
+mod outcome;
 pub mod pipeline;
 mod raw;
 #[cfg(test)]

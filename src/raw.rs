@@ -1,11 +1,13 @@
-//! The polygon as read, below both the readers (`io::read`, which make it) and the geometry
-//! (`geom`, which validates it): rings of exact decimals, and the Z and M values of its vertices.
+//! What reading yields, below both the readers (`io::read`, which make it) and the geometry
+//! (`geom`, which validates it): a [`RawPolygon`] (rings of exact decimals, the Z and M values
+//! of its vertices), or a [`ParseError`] naming where the input is wrong.
 //!
 //! Contract: each ring WITHOUT its repeated closing vertex, outer ring first, holes in input
 //! order, so that the vertex numbering of `docs/cli.md` is the order of the vertices over the
 //! rings; nothing else is cleaned (duplicates, winding and validity are `geom`'s business).
 
 use crate::geom::decimal::Decimal;
+use std::fmt;
 
 /// A polygon as read: rings of exact coordinates, outer ring first.
 #[derive(Clone, Debug, PartialEq, Eq, Default)]
@@ -132,6 +134,49 @@ impl Ordinates {
             Some(Some(z)) => format!(", {z}"),
             Some(None) => ", null".to_string(),
             None => String::new(),
+        }
+    }
+}
+
+/// A position in the input text, both 1-based.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Location {
+    /// Line number, from 1.
+    pub line: usize,
+    /// Column in characters, from 1.
+    pub column: usize,
+}
+
+impl fmt::Display for Location {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "line {}, column {}", self.line, self.column)
+    }
+}
+
+/// Why an input could not be read. `Display`: `line 3, column 14: expected ')' but found 'x'`.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("{}{message}", location.map(|l| format!("{l}: ")).unwrap_or_default())]
+pub struct ParseError {
+    /// Where the problem is, when the format allows saying so.
+    pub location: Option<Location>,
+    /// What is wrong, in words a user can act on (lowercase, no trailing period).
+    pub message: String,
+}
+
+impl ParseError {
+    /// An error at a known position.
+    pub fn at(location: Location, message: impl Into<String>) -> ParseError {
+        ParseError {
+            location: Some(location),
+            message: message.into(),
+        }
+    }
+
+    /// An error without position.
+    pub fn new(message: impl Into<String>) -> ParseError {
+        ParseError {
+            location: None,
+            message: message.into(),
         }
     }
 }

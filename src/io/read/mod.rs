@@ -19,7 +19,6 @@
 //! Complexity: linear in the input size.
 
 use crate::geom::decimal::Decimal;
-use std::fmt;
 use std::path::Path;
 
 pub mod csv;
@@ -32,7 +31,7 @@ pub mod vertices;
 pub mod wkb;
 pub mod wkt;
 
-pub use crate::raw::{Dims, Ordinate, Ordinates, RawPolygon};
+pub use crate::raw::{Dims, Location, Ordinate, Ordinates, ParseError, RawPolygon};
 
 /// An input format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -47,49 +46,6 @@ pub enum Format {
     Wkb,
     /// CSV with a `WKT` geometry column, as `--to csv` writes it ([`csv`]).
     Csv,
-}
-
-/// A position in the input text, both 1-based.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Location {
-    /// Line number, from 1.
-    pub line: usize,
-    /// Column in characters, from 1.
-    pub column: usize,
-}
-
-impl fmt::Display for Location {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "line {}, column {}", self.line, self.column)
-    }
-}
-
-/// Why an input could not be read. `Display`: `line 3, column 14: expected ')' but found 'x'`.
-#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-#[error("{}{message}", location.map(|l| format!("{l}: ")).unwrap_or_default())]
-pub struct ParseError {
-    /// Where the problem is, when the format allows saying so.
-    pub location: Option<Location>,
-    /// What is wrong, in words a user can act on (lowercase, no trailing period).
-    pub message: String,
-}
-
-impl ParseError {
-    /// An error at a known position.
-    pub fn at(location: Location, message: impl Into<String>) -> ParseError {
-        ParseError {
-            location: Some(location),
-            message: message.into(),
-        }
-    }
-
-    /// An error without position.
-    pub fn new(message: impl Into<String>) -> ParseError {
-        ParseError {
-            location: None,
-            message: message.into(),
-        }
-    }
 }
 
 /// The 1-based line and column of byte offset `offset` in `text`.

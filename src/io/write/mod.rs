@@ -13,7 +13,7 @@ pub mod json;
 pub mod svg;
 pub mod wkt;
 
-use crate::pipeline::Outcome;
+use crate::outcome::Outcome;
 use std::io::{self, Write};
 
 /// An output format.
