@@ -226,17 +226,14 @@ fn first_meaningful(text: &str) -> Option<&str> {
         .find(|l| !l.is_empty() && !l.starts_with('#'))
 }
 
-/// The file extensions of the input formats (lowercase), the one list that both the readers
-/// ([`by_extension`]) and the walk of a directory use: a file found in a directory is read when
-/// its name ends in one of these, or in one of these and `.gz` (gzip, [`gzip`]).
-pub const EXTENSIONS: &[&str] = &[
-    "wkt", "geojson", "json", "geojsonl", "geojsons", "ndjson", "jsonl", "txt", "xy", "vertices",
-    "wkb",
-];
+/// The file extensions of the input formats (lowercase), from the one table of extensions of
+/// the readers and writers: a file found in a directory is read when its name ends in one of
+/// these, or in one of these and `.gz` (gzip, [`gzip`]).
+pub const EXTENSIONS: &[&str] = &crate::io::extension::INPUT;
 
 /// Of [`EXTENSIONS`], those of GeoJSON Lines (read line by line, whatever their content looks
 /// like); the GeoJSON Lines writer's extensions are the same.
-pub const LINES_EXTENSIONS: &[&str] = &["geojsonl", "geojsons", "ndjson", "jsonl"];
+pub const LINES_EXTENSIONS: &[&str] = &crate::io::extension::LINES;
 
 /// The format a file extension stands for, if any (one of [`EXTENSIONS`], any case).
 ///
@@ -249,21 +246,14 @@ pub const LINES_EXTENSIONS: &[&str] = &["geojsonl", "geojsons", "ndjson", "jsonl
 /// assert_eq!(by_extension(Some("gz")), None);
 /// ```
 pub fn by_extension(extension: Option<&str>) -> Option<Format> {
-    let extension = extension?.to_ascii_lowercase();
-    if !EXTENSIONS.contains(&extension.as_str()) {
-        return None;
-    }
-    Some(match extension.as_str() {
-        "wkt" => Format::Wkt,
-        "txt" | "xy" | "vertices" => Format::Vertices,
-        "wkb" => Format::Wkb,
-        _ => Format::GeoJson,
-    })
+    crate::io::extension::find(extension?)?.read
 }
 
 /// Is `extension` one of GeoJSON Lines' ([`LINES_EXTENSIONS`], any case)?
 pub fn lines_by_extension(extension: Option<&str>) -> bool {
-    extension.is_some_and(|e| LINES_EXTENSIONS.contains(&e.to_ascii_lowercase().as_str()))
+    extension
+        .and_then(crate::io::extension::find)
+        .is_some_and(|e| e.lines)
 }
 
 /// The extension that decides a file's format: its last one, or for a gzip-compressed name
