@@ -19,6 +19,7 @@
 //! Complexity: linear in the input size.
 
 use crate::geom::decimal::Decimal;
+use std::io::{BufRead, BufReader, Read};
 use std::path::Path;
 
 pub mod csv;
@@ -217,6 +218,90 @@ pub fn foreign(start: &[u8]) -> Option<ParseError> {
         "not a format minitri reads ({name}); convert it first, e.g. to GeoJSON with \
          `ogr2ogr -f GeoJSON out.geojson INPUT`"
     )))
+}
+
+/// An input opened ([`open`]): how its polygons are to be read, decided on its name, its first
+/// bytes (after gzip decompression) and the format asked for.
+pub(crate) enum Opened {
+    /// Read whole (WKB, WKT, a vertex list, CSV): every part in input order, with its SRID.
+    Parts(wkb::PartsAndSrids),
+    /// GeoJSON Lines, to be read line by line from this reader.
+    Lines(BufReader<Box<dyn Read>>),
+    /// GeoJSON, to be streamed feature by feature from this reader.
+    GeoJson(BufReader<Box<dyn Read>>),
+    /// GeoJSON found by its content once read whole, to be streamed from this text.
+    GeoJsonText(String),
+}
+
+/// The one place an input is opened: `reader` decompressed when gzip (by its magic bytes), a
+/// format minitri does not read named ([`foreign`]), the format taken from `from`, else decided
+/// by the name's extension (`path`, `None` for standard input) and the first bytes ([`sniff`]),
+/// else on the whole text ([`detect`]); then read whole (at most `limit` bytes, decompressed
+/// ones for gzip; at most `max_vertices` vertices a polygon) or left to be read line by line or
+/// streamed (GeoJSON).
+///
+/// # Errors
+/// [`limits::NotRead`]: the reader failed, or the input is not one minitri reads (binary
+/// data, a foreign format, too large, unreadable as its format).
+pub(crate) fn open(
+    reader: Box<dyn Read>,
+    path: Option<&Path>,
+    from: Option<Format>,
+    limit: u64,
+    max_vertices: usize,
+) -> Result<Opened, limits::NotRead> {
+    use limits::NotRead;
+    let mut reader = BufReader::with_capacity(1 << 16, reader);
+    // `a.geojson.gz`: the extension before `.gz` decides.
+    let extension = path.and_then(extension_of);
+    let mut gzip = false;
+    let start = loop {
+        let start = reader.fill_buf().map_err(NotRead::Io)?;
+        // gzip by its magic bytes: decompressed as it is read, then judged like any input.
+        if gzip || !gzip::is_gzip(start) {
+            break start;
+        }
+        gzip = true;
+        reader = BufReader::with_capacity(1 << 16, Box::new(gzip::decompress(reader)));
+    };
+    if let Some(error) = foreign(start) {
+        return Err(NotRead::Parse(error));
+    }
+    let format = from.or_else(|| sniff(extension, start));
+    // Read chunk by chunk, at most `limit` bytes (decompressed ones, for gzip).
+    let size = path
+        .filter(|_| !gzip)
+        .and_then(|path| std::fs::metadata(path).map(|m| m.len()).ok())
+        .unwrap_or(0);
+    let note = if gzip { " decompressed" } else { "" };
+    if format == Some(Format::Wkb) {
+        let bytes = limits::read_bytes(reader, limit, size, note)?;
+        return wkb::read_parts_srid_within(&bytes, max_vertices)
+            .map(Opened::Parts)
+            .map_err(NotRead::Parse);
+    }
+    if format == Some(Format::GeoJson) {
+        if lines_by_extension(extension) || geojson_stream::looks_line_delimited(start) {
+            return Ok(Opened::Lines(reader));
+        }
+        // Binary data is named as such, not as a JSON syntax error (judged on the start only).
+        if let Some(error) = not_text(start, false) {
+            return Err(NotRead::Parse(error));
+        }
+        return Ok(Opened::GeoJson(reader));
+    }
+    // Read chunk by chunk, stopping at the first byte that cannot be text (limits.rs).
+    let text = limits::read_text_noted(reader, limit, size, note)?;
+    let format = format.unwrap_or_else(|| detect(extension, &text));
+    let parts = match format {
+        Format::GeoJson => return Ok(Opened::GeoJsonText(text)),
+        Format::Wkt => wkt::read_parts_srid_within(&text, max_vertices),
+        _ => read_parts_within(format, &text, max_vertices).map(|parts| {
+            let srids = vec![None; parts.len()];
+            (parts, srids)
+        }),
+    };
+    parts.map(Opened::Parts).map_err(NotRead::Parse)
 }
 
 /// The first line of `text` that is neither blank nor a `#` comment, without leading blanks.
