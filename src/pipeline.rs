@@ -26,7 +26,9 @@ pub struct Options {
     pub dp_limit: usize,
     /// Also run every other exact algorithm that applies and check every output independently.
     pub verify: bool,
-    /// How long the exact search for a polygon with holes may run (`None`: no limit).
+    /// How long the exact method may run on one polygon (`None`: no limit): every stage of the
+    /// search with holes or touching rings, step 1 without holes, `pseudo-hull`'s construction;
+    /// past it the best found is reported, not optimal, with `stopped`.
     pub time_limit: Option<std::time::Duration>,
     /// Repair spikes, degenerate rings, self-touching rings, rings sharing edges and rings
     /// touching in a cycle before validating ([`crate::geom::repair`]); a polygon may then give several pieces.
@@ -96,7 +98,7 @@ fn in_words(bytes: f64) -> String {
 }
 
 /// Triangulates a valid polygon with one algorithm and the default [`Options`] (for the exact
-/// algorithms on polygons with holes: a search of at most 10 s, then the best found with
+/// algorithms: at most [`minitri::DEFAULT_TIME_LIMIT`] a polygon, then the best found with
 /// `optimal: false`; for `asano`: at most [`asano::DEFAULT_LIMIT`] vertices).
 ///
 /// # Errors
