@@ -38,8 +38,8 @@ fn main() -> ExitCode {
     }
 }
 
-/// The most worker threads `--jobs` starts (more only cost memory and start-up time: 10,000
-/// threads took 39 s to start on a square).
+/// The most worker threads `--jobs` starts (more only cost memory and start-up time;
+/// docs/benchmarks.md).
 const MAX_JOBS: usize = 256;
 
 /// A line on standard error, `minitri: ` first. A failure to write it (standard error closed,

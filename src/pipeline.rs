@@ -50,9 +50,8 @@ impl Default for Options {
 pub use crate::outcome::{AlgorithmCheck, Error, Outcome, Solved, Verification};
 
 /// Bytes a vertex reserved by [`reserve_for`]: less than any polygon was measured to need
-/// beyond its reading (about 90 bytes a vertex for a star of 10^6 vertices, about 200 since its
-/// validation and the triangulation for step 1 overlap, 130 for a maze;
-/// the reading itself takes 64 bytes a vertex, freed once the polygon is validated).
+/// beyond its reading (docs/benchmarks.md; the reading itself is freed once the polygon is
+/// validated).
 pub const RESERVED_PER_VERTEX: usize = 64;
 
 /// Polygons below this many vertices are not checked by [`reserve_for`] (the reservation would

@@ -38,8 +38,8 @@
 //! O(L)); and the place where the circle is cut into a line, if it falls in a pocket (each
 //! component is cut through the pockets of the fewest chain chords, inner ones first, then where
 //! its chords' spans sum to the least: `shortest_cut`). A chain that is still not a staircase
-//! has all its pieces listed (O(L^2) units; before both fixes a 3 x 1000-column snake's wall
-//! chains were, and step 3 took 11 s instead of 0.3 s).
+//! has all its pieces listed (O(L^2) units; before both fixes a snake's wall chains were:
+//! docs/benchmarks.md).
 //!
 //! The pieces that are units (those with an irregular end chord, and all pieces of a chain
 //! that is no staircase) are valued from the piece one chord shorter: only the gaps the new
@@ -79,10 +79,10 @@
 //!
 //! Exact reductions before the scans (a simplicial triangle, e.g. one of degree 0 or 1 in the
 //! dependency graph, is in some maximum independent set; a triangle whose closed neighbourhood
-//! contains a neighbour's is not needed) were measured and not kept: on bars most triangles
-//! depend on more than 20 others (each rung is crossed by the long 3b-chains along the
-//! corridor's walls), the rules remove about 5% of them and the crossing component stays whole;
-//! on maze the components are small already.
+//! contains a neighbour's is not needed) were measured and not kept: on bars each rung is crossed
+//! by the long 3b-chains along the corridor's walls, so the rules remove few triangles and the
+//! crossing component stays whole; on maze the components are small already
+//! (docs/benchmarks.md).
 
 // The 3b-chains moved to their own module; their old paths stay.
 pub use super::chains::{chains, is_3b_pair, Chains};

@@ -250,8 +250,8 @@ fn general_from<P: Coord>(
     })
 }
 
-/// The pairs the dependency graph may compare per try once the deadline has passed: about
-/// 10 ms of work.
+/// The pairs the dependency graph may compare per try once the deadline has passed: a small
+/// fixed amount of work (docs/benchmarks.md).
 pub const LATE_PAIRS: u64 = 1 << 20;
 
 /// The number of distinct middle vertices of `mdts`.
