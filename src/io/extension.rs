@@ -31,56 +31,26 @@ const fn entry(
     }
 }
 
+const GEOJSON: Option<Format> = Some(Format::GeoJson);
+const VERTICES: Option<Format> = Some(Format::Vertices);
+const GEOJSONL: Option<OutputFormat> = Some(OutputFormat::GeoJsonLines);
+const SVG: OutputFormat = OutputFormat::Svg(svg::Style { labels: false });
+
 /// Every extension minitri knows; an output format's own extension is its first row.
 pub(crate) const TABLE: &[Extension] = &[
     entry("wkt", Some(Format::Wkt), false, Some(OutputFormat::Wkt)),
-    entry(
-        "geojson",
-        Some(Format::GeoJson),
-        false,
-        Some(OutputFormat::GeoJson),
-    ),
-    entry(
-        "json",
-        Some(Format::GeoJson),
-        false,
-        Some(OutputFormat::Json),
-    ),
-    entry(
-        "geojsonl",
-        Some(Format::GeoJson),
-        true,
-        Some(OutputFormat::GeoJsonLines),
-    ),
-    entry(
-        "geojsons",
-        Some(Format::GeoJson),
-        true,
-        Some(OutputFormat::GeoJsonLines),
-    ),
-    entry(
-        "ndjson",
-        Some(Format::GeoJson),
-        true,
-        Some(OutputFormat::GeoJsonLines),
-    ),
-    entry(
-        "jsonl",
-        Some(Format::GeoJson),
-        true,
-        Some(OutputFormat::GeoJsonLines),
-    ),
-    entry("txt", Some(Format::Vertices), false, None),
-    entry("xy", Some(Format::Vertices), false, None),
-    entry("vertices", Some(Format::Vertices), false, None),
+    entry("geojson", GEOJSON, false, Some(OutputFormat::GeoJson)),
+    entry("json", GEOJSON, false, Some(OutputFormat::Json)),
+    entry("geojsonl", GEOJSON, true, GEOJSONL),
+    entry("geojsons", GEOJSON, true, GEOJSONL),
+    entry("ndjson", GEOJSON, true, GEOJSONL),
+    entry("jsonl", GEOJSON, true, GEOJSONL),
+    entry("txt", VERTICES, false, None),
+    entry("xy", VERTICES, false, None),
+    entry("vertices", VERTICES, false, None),
     entry("wkb", Some(Format::Wkb), false, None),
     entry("csv", None, false, Some(OutputFormat::Csv)),
-    entry(
-        "svg",
-        None,
-        false,
-        Some(OutputFormat::Svg(svg::Style { labels: false })),
-    ),
+    entry("svg", None, false, Some(SVG)),
 ];
 
 /// The row of `extension`, any case.
@@ -90,21 +60,10 @@ pub(crate) fn find(extension: &str) -> Option<&'static Extension> {
         .find(|e| e.name.eq_ignore_ascii_case(extension))
 }
 
-/// How many rows are input extensions (`lines`: of GeoJSON Lines only).
-const fn count(lines: bool) -> usize {
-    let (mut k, mut i) = (0, 0);
-    while i < TABLE.len() {
-        if TABLE[i].read.is_some() && (TABLE[i].lines || !lines) {
-            k += 1;
-        }
-        i += 1;
-    }
-    k
-}
-
-/// The names of the input extensions (`lines`: of GeoJSON Lines only), in table order.
-const fn names<const N: usize>(lines: bool) -> [&'static str; N] {
-    let mut out = [""; N];
+/// The names of the input extensions (`lines`: of GeoJSON Lines only), in table order: the
+/// first `.1` of `.0`.
+const fn select(lines: bool) -> ([&'static str; TABLE.len()], usize) {
+    let mut out = [""; TABLE.len()];
     let (mut k, mut i) = (0, 0);
     while i < TABLE.len() {
         if TABLE[i].read.is_some() && (TABLE[i].lines || !lines) {
@@ -113,14 +72,17 @@ const fn names<const N: usize>(lines: bool) -> [&'static str; N] {
         }
         i += 1;
     }
-    out
+    (out, k)
 }
 
+const INPUT_NAMES: &([&str; TABLE.len()], usize) = &select(false);
+const LINES_NAMES: &([&str; TABLE.len()], usize) = &select(true);
+
 /// The input extensions, in table order.
-pub(crate) const INPUT: [&str; count(false)] = names(false);
+pub(crate) const INPUT: &[&str] = INPUT_NAMES.0.split_at(INPUT_NAMES.1).0;
 
 /// The GeoJSON Lines extensions, in table order.
-pub(crate) const LINES: [&str; count(true)] = names(true);
+pub(crate) const LINES: &[&str] = LINES_NAMES.0.split_at(LINES_NAMES.1).0;
 
 #[cfg(test)]
 mod tests {
@@ -139,5 +101,6 @@ mod tests {
         }
         assert_eq!(OutputFormat::GeoJsonTriangles.extension(), "geojson");
         assert_eq!(LINES, ["geojsonl", "geojsons", "ndjson", "jsonl"]);
+        assert_eq!(INPUT.len(), 11);
     }
 }

@@ -314,11 +314,11 @@ fn first_meaningful(text: &str) -> Option<&str> {
 /// The file extensions of the input formats (lowercase), from the one table of extensions of
 /// the readers and writers: a file found in a directory is read when its name ends in one of
 /// these, or in one of these and `.gz` (gzip, [`gzip`]).
-pub const EXTENSIONS: &[&str] = &crate::io::extension::INPUT;
+pub const EXTENSIONS: &[&str] = crate::io::extension::INPUT;
 
 /// Of [`EXTENSIONS`], those of GeoJSON Lines (read line by line, whatever their content looks
 /// like); the GeoJSON Lines writer's extensions are the same.
-pub const LINES_EXTENSIONS: &[&str] = &crate::io::extension::LINES;
+pub const LINES_EXTENSIONS: &[&str] = crate::io::extension::LINES;
 
 /// The format a file extension stands for, if any (one of [`EXTENSIONS`], any case).
 ///
