@@ -7,82 +7,27 @@
 //! on the circle yet are independent (relationship (iii)(b)); a 3b-chain is a path of such pairs,
 //! and any set of its members is independent.
 //!
-//! `MIS(i, j)` is the largest independent set among the chords with both endpoints in positions
-//! `i..=j`. Let `k j` be the chord ending at `j`. If `k` lies outside `i..j`, or the chord is not
-//! used, `MIS(i, j) = MIS(i, j - 1)`. If it is used, every chosen chord crossing it is a 3b-partner
-//! of it, and so on: the chosen chords connected to `k j` by crossings form a contiguous piece `S`
-//! of its 3b-chain, lying in `i..=j`; every other chosen chord lies in one of the gaps between
-//! consecutive endpoints of `S` (a chord spanning two gaps would cross a chord of `S`, since `S`
-//! is connected by crossings), and chords in different gaps cannot cross. So
-//! `MIS(i, j) = max(MIS(i, j - 1), max over S of |S| + sum of MIS(gap))`, which is exact
-//! (Theorem 6), with 3b-chains of any length.
+//! Input contract: the chords of the circle of [`super::circle`] (one per minimally degenerate
+//! triangle) and their 3b-chains ([`super::chains`]). Output guarantee: a maximum independent set,
+//! exactly: with `MIS(i, j)` the best among the chords inside positions `i..=j`, `MIS(i, j) =
+//! max(MIS(i, j - 1), max over S of |S| + sum of MIS(gap))`, `S` a contiguous piece of the 3b-chain
+//! of the chord ending at `j` and the gaps those between its endpoints (Theorem 6, with 3b-chains
+//! of any length).
 //!
-//! Computation: the paper fills the table `MIS(i, j)` (O(K^2) memory). Here the circle is first
-//! split into the connected components of its crossing graph (dependent chords cross, so the
-//! components are independent problems; a lone chord is always taken, and a component of at most 64
-//! chords is first searched over bit sets, [`super::small`], which gives up past a budget), and
-//! each component left is solved by weighted interval scheduling over "units" (a chord, or a
-//! contiguous piece of a 3b-chain) taken in order of span, in the manner of G. Valiente, "A new
-//! simple algorithm for the maximum-weight independent set problem on circle graphs", ISAAC 2003:
-//! each unit's value needs only the best sets in the gaps inside it, found by one scan each.
+//! Method: the crossing graph's components are solved apart (a component of at most 64 chords by a
+//! search over bit sets, [`super::small`]); each one left by weighted interval scheduling over units
+//! (a chord, or a contiguous piece of a 3b-chain) in order of span, as G. Valiente's algorithm for
+//! circle graphs (ISAAC 2003). The pieces of a 3b-chain that is a staircase on the circle are valued
+//! in the scans (`Staircase`), the other pieces from the piece one chord shorter
+//! (`Sub::list_units`); nested ranges are jumped by the levels of [`super::ladder`].
 //!
-//! 3b-chains in the plane are staircases on the circle: the chain's line cuts off one pocket of
-//! the polygon between consecutive chain vertices (on the non-180-degree side), so the boundary
-//! meets `v_0, v_1, .., v_{L+1}` in this order. Then a piece's value splits into a part for its
-//! first chord, a part for its last, and a sum over the chain between (see `Staircase`), and
-//! the scan finds the best piece ending at each chord with a running maximum. The shape is
-//! checked for each chain. Two things break it, both met on a "snake" of corridors with a vertex
-//! at every lattice point of the boundary (a raster outline): the chain's end chords, where its
-//! line leaves the pocketed wall and meets the boundary anywhere (so the staircase is the chain
-//! without up to two chords at each end, and the pieces with those chords are listed as units:
-//! O(L)); and the place where the circle is cut into a line, if it falls in a pocket (each
-//! component is cut through the pockets of the fewest chain chords, inner ones first, then where
-//! its chords' spans sum to the least: `shortest_cut`). A chain that is still not a staircase
-//! has all its pieces listed (O(L^2) units; before both fixes a snake's wall chains were:
-//! docs/benchmarks.md).
+//! Bound: O(K alpha(K)) for the components, then one scan per unit and staircase gap: O(sum of
+//! spans), near-linear when chords are local, O(K^2) when many long chords nest in one crossing
+//! component (the triangles across a long corridor), which the levels cut down. Memory O(K) plus
+//! the ranges asked for with their values and the levels' matrices (at most 24 x 24 each).
 //!
-//! The pieces that are units (those with an irregular end chord, and all pieces of a chain
-//! that is no staircase) are valued from the piece one chord shorter: only the gaps the new
-//! chord's endpoints split or make are asked for (`Sub::list_units`), O(1) ranges per piece
-//! instead of O(L).
-//!
-//! Complexity: O(K alpha(K)) for the components; then O(K) units and staircase gaps, each valued
-//! by one scan of its span (in endpoint positions of its component): O(sum of spans), which is
-//! Valiente's O(total chord length), near-linear when chords are local, O(K^2) when many long
-//! chords nest inside each other in one crossing component (the triangles across a long
-//! corridor: the "bars" and "snake" benchmarks of `docs/benchmarks.md`). That case is what
-//! [`super::ladder`] removes: a range asked for with few values read across its ends is a
-//! level, its scan a max-plus matrix built once, and every longer range jumps over it. On bars
-//! the positions scanned per position stay flat (50 to 64 from 100 to 1600 columns, against
-//! 150 to 2900 for plain scans); on the snake they grow about as the square root of the length
-//! (bundles of long diagonal chords cross every cut). Memory O(K) plus the ranges asked for
-//! with their values and the levels' matrices (at most 24 x 24 each, a level only where its
-//! own positions pay for a product).
-//! Output-sensitive circle-graph algorithms (Nash & Gregg 2010, O(K min(d, alpha))) do not help
-//! with the nested case (density and independence number both grow with K).
-//!
-//! The scans are the cost, so they read and write little: the units are indexed by end position
-//! in one flat array, sorted by start within a position (a scan of `a..=b` stops at the first
-//! unit starting before `a`), and a scan records only the best value before each position. Each
-//! range asked for is first tightened: first positions where no unit ending within it starts,
-//! and last positions where no unit starting within it ends, are dropped (the same units lie
-//! within, so the value is the same; a range with none is not scanned). All the ranges the jobs
-//! will ask for are listed first, by start: a scan of `a..=b` then also answers every listed
-//! range `a..=c` with `c < b` (everything inside it is inside `a..=b`, so valued already); a
-//! start is scanned again only for a longer range. Together these scan a fifth fewer positions
-//! on bars, and cut this step on the Hilbert fixture from 62 to 24 million instructions. The
-//! reconstruction scans the gaps of the chosen units again (jumping the levels inside) and
-//! walks back over those values: where the best grows at a position, a unit or staircase piece
-//! ending there gives the new value (for a piece, its first chord is found by summing back
-//! along the chain); a value inside a jumped level is found by scanning that level again from
-//! the values saved at the jump.
-//!
-//! Exact reductions before the scans (a simplicial triangle, e.g. one of degree 0 or 1 in the
-//! dependency graph, is in some maximum independent set; a triangle whose closed neighbourhood
-//! contains a neighbour's is not needed) were measured and not kept: on bars each rung is crossed
-//! by the long 3b-chains along the corridor's walls, so the rules remove few triangles and the
-//! crossing component stays whole; on maze the components are small already
-//! (docs/benchmarks.md).
+//! The reasoning in full, the staircase shape and where it breaks, the economies of the scans and
+//! what was tried and dropped: docs/algorithms.md, "Step 3 in detail".
 
 // The 3b-chains moved to their own module; their old paths stay.
 pub use super::chains::{chains, is_3b_pair, Chains};

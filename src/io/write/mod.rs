@@ -40,7 +40,7 @@ pub enum OutputFormat {
 impl OutputFormat {
     /// The format a file name's extension stands for (`None` for an unknown one): `json`,
     /// `geojson`, `geojsonl` (or `geojsons`, `ndjson`, `jsonl`), `wkt`, `csv`, `svg`; from the
-    /// one table of extensions ([`crate::io::extension`]).
+    /// one table of extensions (`io/extension.rs`).
     pub fn from_extension(extension: &str) -> Option<OutputFormat> {
         crate::io::extension::find(extension)?.write
     }
