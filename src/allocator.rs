@@ -1,12 +1,11 @@
 //! The command's memory allocator: small blocks from jemalloc, large ones from the system's.
 //!
-//! Why two: a batch of small polygons makes about 126 allocations per polygon (positions read,
-//! the steps' short lists), and glibc's `malloc` and `free` were about 12% of its time; jemalloc's
-//! per-thread caches take 12-15% off that batch (2.40 -> 2.11 s for 100,000 building-like
-//! polygons, one thread). But with jemalloc alone, polygons of 10^6 vertices ran 5-12% slower
-//! (the maze 1.06 -> 1.17 s): its large blocks are returned to the system and faulted in again
-//! (page faults 2.9% -> 5.4% of the time), and a `Vec` doubling to millions of elements is
-//! copied where glibc's `realloc` moves pages (`mremap`). So a block of [`LARGE`] bytes or more
+//! Why two: a batch of small polygons makes many small allocations per polygon (positions read,
+//! the steps' short lists), which jemalloc's per-thread caches serve faster than glibc's
+//! `malloc`. But with jemalloc alone, polygons of 10^6 vertices ran slower: its large blocks are
+//! returned to the system and faulted in again, and a `Vec` doubling to millions of elements is
+//! copied where glibc's `realloc` moves pages (`mremap`). The figures: docs/benchmarks.md
+//! ("Figures behind the code's constants and choices"). So a block of [`LARGE`] bytes or more
 //! comes from the system's allocator, anything smaller from jemalloc.
 //!
 //! Soundness: `dealloc` and `realloc` are given the block's layout, so the size the block was

@@ -27,8 +27,10 @@
 use crate::algo::Triangulation;
 use crate::geom::decimal::{Decimal, NumberError};
 use crate::geom::polygon::{AnyPolygon, Polygon, Ring, Warning};
-use crate::io::read::{ParseError, RawPolygon};
-use crate::pipeline::Error;
+use crate::io::read::ParseError;
+use crate::outcome::Error;
+use crate::pipeline::PlainBeside;
+use crate::raw::RawPolygon;
 use geo_types::{Coord, CoordNum, LineString, MultiPolygon, Triangle};
 
 /// A coordinate type taken exactly as a decimal (see the module documentation).
@@ -120,7 +122,7 @@ pub(crate) fn raw_polygon<T: ExactCoord>(
 /// Validates a polygon on the kernel its coordinates need (duplicate consecutive vertices are
 /// dropped silently).
 fn valid(raw: &RawPolygon) -> Result<AnyPolygon, Error> {
-    AnyPolygon::from_raw_all_errors(raw)
+    AnyPolygon::from_raw_validated(raw, &PlainBeside)
         .map(|(polygon, _warnings)| polygon)
         .map_err(Error::Invalid)
 }
@@ -146,7 +148,7 @@ fn valid(raw: &RawPolygon) -> Result<AnyPolygon, Error> {
 pub fn polygon_with_warnings<T: ExactCoord>(
     polygon: &geo_types::Polygon<T>,
 ) -> Result<(Polygon, Vec<Warning>), Error> {
-    Polygon::from_raw_all_errors(&raw(polygon, 0)?).map_err(Error::Invalid)
+    Polygon::from_raw_validated(&raw(polygon, 0)?, &PlainBeside).map_err(Error::Invalid)
 }
 
 impl<T: ExactCoord> TryFrom<&geo_types::Polygon<T>> for RawPolygon {
@@ -172,7 +174,7 @@ impl<T: ExactCoord> TryFrom<&geo_types::Polygon<T>> for Polygon {
     /// of an invalid polygon, or with [`crate::InvalidPolygon::CoordinatesTooLarge`] when its
     /// coordinates need the wide kernel: [`AnyPolygon`] takes every polygon.
     fn try_from(polygon: &geo_types::Polygon<T>) -> Result<Polygon, Error> {
-        Polygon::from_raw_all_errors(&raw(polygon, 0)?)
+        Polygon::from_raw_validated(&raw(polygon, 0)?, &PlainBeside)
             .map(|(polygon, _warnings)| polygon)
             .map_err(Error::Invalid)
     }

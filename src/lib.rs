@@ -101,7 +101,9 @@ pub mod feature;
 pub mod geo;
 pub mod geom;
 pub mod io;
+mod outcome;
 pub mod pipeline;
+mod raw;
 #[cfg(test)]
 pub(crate) mod test_support;
 pub mod verify;
@@ -114,7 +116,8 @@ pub use geom::kernel::{Coord, Point};
 pub use geom::polygon::{AnyPolygon, Polygon, Ring, Warning};
 pub use geom::validate::InvalidPolygon;
 pub use geom::wide::WidePoint;
-pub use io::read::{Format, ParseError, RawPolygon};
+pub use io::read::{Format, ParseError};
 pub use pipeline::{
     process, pseudotriangulate, solve, triangulate, triangulate_with, Error, Options, Outcome,
 };
+pub use raw::RawPolygon;

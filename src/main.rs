@@ -38,8 +38,8 @@ fn main() -> ExitCode {
     }
 }
 
-/// The most worker threads `--jobs` starts (more only cost memory and start-up time: 10,000
-/// threads took 39 s to start on a square).
+/// The most worker threads `--jobs` starts (more only cost memory and start-up time;
+/// docs/benchmarks.md).
 const MAX_JOBS: usize = 256;
 
 /// A line on standard error, `minitri: ` first. A failure to write it (standard error closed,
@@ -123,70 +123,12 @@ fn run() -> anyhow::Result<ExitCode> {
         return Ok(ExitCode::SUCCESS);
     }
     let mut config = flags.into_config();
-    // A file-size limit (`ulimit -f`) would kill the process with SIGXFSZ at the write that
-    // crosses it (status 153, no message, a temporary file left); ignored, that write fails
-    // with EFBIG instead: reported, exit status 1, the temporary file removed.
-    #[cfg(unix)]
-    // SAFETY: setting a signal's disposition to "ignore" runs no code of ours in a handler.
-    unsafe {
-        libc::signal(libc::SIGXFSZ, libc::SIG_IGN);
-    }
-    // SIGINT (Ctrl-C), SIGTERM, SIGHUP: remove the temporary files of outputs being written and
-    // stop, with exit status 130 for all three (the handler is not told which signal came; 130
-    // is what a shell reports for SIGINT); outputs already written stay, complete. Without the
-    // handler a temporary file could be left beside its target.
-    ctrlc::set_handler(|| {
-        say("interrupted");
-        minitri::batch::exit_removing_temporaries(130)
-    })
-    .context("cannot install the signal handler")?;
-    if let Some(jobs) = config.jobs.filter(|&j| j > MAX_JOBS) {
-        if !config.quiet {
-            say(&format!(
-                "--jobs {jobs}: using {MAX_JOBS} threads, the most minitri starts"
-            ));
-        }
-        config.jobs = Some(MAX_JOBS);
-    }
-    // Without --jobs, rayon reads its own variables: the same cap applies to them.
-    if config.jobs.is_none() {
-        for var in ["RAYON_NUM_THREADS", "RAYON_RS_NUM_CPUS"] {
-            let asked = std::env::var(var)
-                .ok()
-                .and_then(|v| v.trim().parse::<usize>().ok());
-            if let Some(threads) = asked.filter(|&n| n > MAX_JOBS) {
-                if !config.quiet {
-                    say(&format!(
-                        "{var}={threads}: using {MAX_JOBS} threads, the most minitri starts"
-                    ));
-                }
-                config.jobs = Some(MAX_JOBS);
-                break;
-            }
-            if asked.is_some() {
-                break; // rayon takes the first one set
-            }
-        }
-    }
+    install_handlers()?;
+    cap_jobs(&mut config);
     if let Some(code) = refuse_overwriting_inputs(&config.inputs, config.output.as_deref()) {
         return Ok(code);
     }
-    let closed = "standard output is closed: the result could not be written (give -o FILE)";
-    if config.output.is_none() && !stdout_is_open() {
-        anyhow::bail!(closed);
-    }
-    // `-o /dev/stdout` (or `/dev/fd/1`, `/proc/self/fd/1`) with standard output closed names the
-    // `/dev/null` put in its place at start: the result would be lost with exit status 0.
-    if config.output.as_deref().is_some_and(names_stdout) && !stdout_is_open() {
-        anyhow::bail!(closed);
-    }
-    if config.output.is_none() {
-        if let Some(why) = stdout_not_writable() {
-            anyhow::bail!(
-                "standard output is {why}: the result could not be written (give -o FILE)"
-            );
-        }
-    }
+    check_stdout(&config)?;
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(config.jobs.unwrap_or(0))
         .build()
@@ -195,32 +137,11 @@ fn run() -> anyhow::Result<ExitCode> {
         .output
         .as_deref()
         .filter(|out| is_tree(&config.inputs, out));
-    if let Some(out) = out_dir {
-        if config.inputs.iter().any(|p| p == Path::new("-")) {
-            say(&format!("standard input cannot be part of a batch written to a directory ({}); give its output file with -o, alone", out.display()));
-            return Ok(ExitCode::from(2));
-        }
-        if out.exists() && !out.is_dir() {
-            say(&format!(
-                "{} is not a directory: with a directory input or several inputs, -o names a directory",
-                out.display()
-            ));
-            return Ok(ExitCode::from(2));
-        }
+    if let Some(code) = out_dir.and_then(|out| refuse_tree(&config, out)) {
+        return Ok(code);
     }
     let (mut inputs, skipped) = discover_counting(&config.inputs, out_dir);
-    // Standard input closed, or open for writing only: Rust reads either as an empty input
-    // (EBADF taken for the end), which would say "empty input: no polygon found".
-    if let Some(why) = stdin_not_readable() {
-        for input in &mut inputs {
-            if input.as_ref().is_ok_and(|i| i.is_stdin()) {
-                *input = Err(minitri::batch::Unreadable {
-                    name: "-".into(),
-                    message: format!("standard input is {why}: nothing to read (name a file, or redirect one with <)"),
-                });
-            }
-        }
-    }
+    refuse_unreadable_stdin(&mut inputs);
     // Standard output being an input, named or found in a directory, also through `>>`, `1<>`
     // or standard input redirected from it: it would be written while read (`--to geojsonl
     // f.ndjson >> f.ndjson` grows without end). (`-o FILE` is compared above.)
@@ -246,24 +167,7 @@ fn run() -> anyhow::Result<ExitCode> {
     let progress = Progress::new(show_progress, inputs.len());
     let mut tally = match (out_dir, &config.output) {
         (Some(out), _) => {
-            let found: Vec<_> = inputs
-                .iter()
-                .filter_map(|i| i.as_ref().ok())
-                .cloned()
-                .collect();
-            let mut outputs = plan(&found, out, config.to.extension()).into_iter();
-            let jobs: Vec<TreeJob> = inputs
-                .into_iter()
-                .map(|input| {
-                    let output = match &input {
-                        Ok(_) => outputs
-                            .next()
-                            .unwrap_or_else(|| Err("no output planned".into())),
-                        Err(_) => Err(String::new()), // reported as unreadable
-                    };
-                    TreeJob { input, output }
-                })
-                .collect();
+            let jobs = tree_jobs(inputs, out, &config);
             pool.install(|| run_tree(&jobs, out, &settings, config.to, &progress))
         }
         (None, Some(path)) => {
@@ -276,24 +180,7 @@ fn run() -> anyhow::Result<ExitCode> {
                 })
                 .with_context(|| format!("cannot write {}", path.display()))?;
             progress.bar.finish_and_clear();
-            if file.is_direct() {
-                // A device or a pipe: written as it went, like standard output.
-                file.commit()
-                    .with_context(|| format!("cannot write {}", path.display()))?;
-            } else if report.tally.solved == 0 {
-                say(&format!(
-                    "nothing triangulated; {} not written",
-                    path.display()
-                ));
-            } else if !report.complete {
-                say(&format!(
-                    "an input could not be read to its end; {} not written",
-                    path.display()
-                ));
-            } else {
-                file.commit()
-                    .with_context(|| format!("cannot write {}", path.display()))?;
-            }
+            commit_document(file, &report, path)?;
             report.tally
         }
         (None, None) => {
@@ -314,6 +201,168 @@ fn run() -> anyhow::Result<ExitCode> {
         say(&tally.summary(started.elapsed()).to_string());
     }
     Ok(exit_code(&tally))
+}
+
+/// The signal dispositions of a run.
+///
+/// A file-size limit (`ulimit -f`) would kill the process with SIGXFSZ at the write that
+/// crosses it (status 153, no message, a temporary file left); ignored, that write fails with
+/// EFBIG instead: reported, exit status 1, the temporary file removed. SIGINT (Ctrl-C), SIGTERM,
+/// SIGHUP: remove the temporary files of outputs being written and stop, with exit status 130
+/// for all three (the handler is not told which signal came; 130 is what a shell reports for
+/// SIGINT); outputs already written stay, complete. Without the handler a temporary file could
+/// be left beside its target.
+fn install_handlers() -> anyhow::Result<()> {
+    #[cfg(unix)]
+    // SAFETY: setting a signal's disposition to "ignore" runs no code of ours in a handler.
+    unsafe {
+        libc::signal(libc::SIGXFSZ, libc::SIG_IGN);
+    }
+    ctrlc::set_handler(|| {
+        say("interrupted");
+        minitri::batch::exit_removing_temporaries(130)
+    })
+    .context("cannot install the signal handler")
+}
+
+/// `--jobs` capped at [`MAX_JOBS`], told (unless quiet); without `--jobs`, rayon reads its own
+/// variables: the same cap applies to them.
+fn cap_jobs(config: &mut args::Config) {
+    if let Some(jobs) = config.jobs.filter(|&j| j > MAX_JOBS) {
+        if !config.quiet {
+            say(&format!(
+                "--jobs {jobs}: using {MAX_JOBS} threads, the most minitri starts"
+            ));
+        }
+        config.jobs = Some(MAX_JOBS);
+    }
+    if config.jobs.is_none() {
+        for var in ["RAYON_NUM_THREADS", "RAYON_RS_NUM_CPUS"] {
+            let asked = std::env::var(var)
+                .ok()
+                .and_then(|v| v.trim().parse::<usize>().ok());
+            if let Some(threads) = asked.filter(|&n| n > MAX_JOBS) {
+                if !config.quiet {
+                    say(&format!(
+                        "{var}={threads}: using {MAX_JOBS} threads, the most minitri starts"
+                    ));
+                }
+                config.jobs = Some(MAX_JOBS);
+                break;
+            }
+            if asked.is_some() {
+                break; // rayon takes the first one set
+            }
+        }
+    }
+}
+
+/// An error when the result is for standard output and it cannot take it: closed, or not
+/// writable.
+fn check_stdout(config: &args::Config) -> anyhow::Result<()> {
+    let closed = "standard output is closed: the result could not be written (give -o FILE)";
+    if config.output.is_none() && !stdout_is_open() {
+        anyhow::bail!(closed);
+    }
+    // `-o /dev/stdout` (or `/dev/fd/1`, `/proc/self/fd/1`) with standard output closed names the
+    // `/dev/null` put in its place at start: the result would be lost with exit status 0.
+    if config.output.as_deref().is_some_and(names_stdout) && !stdout_is_open() {
+        anyhow::bail!(closed);
+    }
+    if config.output.is_none() {
+        if let Some(why) = stdout_not_writable() {
+            anyhow::bail!(
+                "standard output is {why}: the result could not be written (give -o FILE)"
+            );
+        }
+    }
+    Ok(())
+}
+
+/// Exit status 2 (with a message) when a batch cannot be written to the directory `out`:
+/// standard input among the inputs, or `out` a file.
+fn refuse_tree(config: &args::Config, out: &Path) -> Option<ExitCode> {
+    if config.inputs.iter().any(|p| p == Path::new("-")) {
+        say(&format!("standard input cannot be part of a batch written to a directory ({}); give its output file with -o, alone", out.display()));
+        return Some(ExitCode::from(2));
+    }
+    if out.exists() && !out.is_dir() {
+        say(&format!(
+            "{} is not a directory: with a directory input or several inputs, -o names a directory",
+            out.display()
+        ));
+        return Some(ExitCode::from(2));
+    }
+    None
+}
+
+/// Standard input closed, or open for writing only: Rust reads either as an empty input (EBADF
+/// taken for the end), which would say "empty input: no polygon found"; it is made an
+/// unreadable input saying why.
+fn refuse_unreadable_stdin(
+    inputs: &mut [Result<minitri::batch::Input, minitri::batch::Unreadable>],
+) {
+    if let Some(why) = stdin_not_readable() {
+        for input in inputs {
+            if input.as_ref().is_ok_and(|i| i.is_stdin()) {
+                *input = Err(minitri::batch::Unreadable {
+                    name: "-".into(),
+                    message: format!("standard input is {why}: nothing to read (name a file, or redirect one with <)"),
+                });
+            }
+        }
+    }
+}
+
+/// Each input with its output file below `out` (mirrored, [`plan`]).
+fn tree_jobs(
+    inputs: Vec<Result<minitri::batch::Input, minitri::batch::Unreadable>>,
+    out: &Path,
+    config: &args::Config,
+) -> Vec<TreeJob> {
+    let found: Vec<_> = inputs
+        .iter()
+        .filter_map(|i| i.as_ref().ok())
+        .cloned()
+        .collect();
+    let mut outputs = plan(&found, out, config.to.extension()).into_iter();
+    inputs
+        .into_iter()
+        .map(|input| {
+            let output = match &input {
+                Ok(_) => outputs
+                    .next()
+                    .unwrap_or_else(|| Err("no output planned".into())),
+                Err(_) => Err(String::new()), // reported as unreadable
+            };
+            TreeJob { input, output }
+        })
+        .collect()
+}
+
+/// The document written to `-o FILE` kept or not: a device or a pipe was written as it went,
+/// like standard output; a file is kept only when something was triangulated and every input
+/// read to its end.
+fn commit_document(
+    file: AtomicFile,
+    report: &minitri::batch::DocumentReport,
+    path: &Path,
+) -> anyhow::Result<()> {
+    if !file.is_direct() && report.tally.solved == 0 {
+        say(&format!(
+            "nothing triangulated; {} not written",
+            path.display()
+        ));
+    } else if !file.is_direct() && !report.complete {
+        say(&format!(
+            "an input could not be read to its end; {} not written",
+            path.display()
+        ));
+    } else {
+        file.commit()
+            .with_context(|| format!("cannot write {}", path.display()))?;
+    }
+    Ok(())
 }
 
 /// Exit status 2 (with a message) when the output would overwrite an input: `-o` naming an input

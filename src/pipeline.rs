@@ -9,15 +9,13 @@ use crate::algo::{
     asano, minitri, plain, pseudo, pseudo_hull, Algorithm, Pseudotriangulation, TriangulateError,
     Triangulation,
 };
-use crate::feature::Identity;
 use crate::geom::kernel::Coord;
-use crate::geom::polygon::{AnyPolygon, Polygon, Warning};
-use crate::geom::repair::{self, Repair};
+use crate::geom::polygon::{AnyPolygon, Polygon, Validation};
+use crate::geom::repair::{self};
 use crate::geom::validate::InvalidPolygon;
-use crate::io::read::{self, Format, ParseError, RawPolygon};
-use crate::verify::{self, Check};
-use serde::Serialize;
-use std::fmt;
+use crate::io::read::{self, Format};
+use crate::raw::RawPolygon;
+use crate::verify::{self};
 
 /// What to compute.
 #[derive(Clone, Debug)]
@@ -28,7 +26,9 @@ pub struct Options {
     pub dp_limit: usize,
     /// Also run every other exact algorithm that applies and check every output independently.
     pub verify: bool,
-    /// How long the exact search for a polygon with holes may run (`None`: no limit).
+    /// How long the exact method may run on one polygon (`None`: no limit): every stage of the
+    /// search with holes or touching rings, step 1 without holes, `pseudo-hull`'s construction;
+    /// past it the best found is reported, not optimal, with `stopped`.
     pub time_limit: Option<std::time::Duration>,
     /// Repair spikes, degenerate rings, self-touching rings, rings sharing edges and rings
     /// touching in a cycle before validating ([`crate::geom::repair`]); a polygon may then give several pieces.
@@ -47,40 +47,11 @@ impl Default for Options {
     }
 }
 
-/// Any error of the library, naming what is wrong.
-#[derive(Clone, Debug, thiserror::Error)]
-#[non_exhaustive]
-pub enum Error {
-    /// The input could not be read.
-    #[error(transparent)]
-    Parse(#[from] ParseError),
-    /// The polygon is not valid (all problems found).
-    #[error("{}", .0.iter().map(ToString::to_string).collect::<Vec<_>>().join("; "))]
-    Invalid(Vec<InvalidPolygon>),
-    /// The algorithm cannot triangulate this polygon.
-    #[error(transparent)]
-    Triangulate(#[from] TriangulateError),
-    /// The input could not be read from its file or stream.
-    #[error("cannot read: {0}")]
-    Read(String),
-    /// The input was not read, and why, in full (`cannot read: Permission denied`, `skipped: a
-    /// FIFO, not a regular file ...`): what a directory walk reports.
-    #[error("{0}")]
-    NotRead(String),
-    /// Even the least memory a polygon of this size needs could not be had ([`reserve_for`]).
-    #[error("not enough memory: {n} vertices need at least {memory} to be validated and triangulated, and a reservation of that much failed")]
-    OutOfMemory {
-        /// The polygon's number of vertices, as read.
-        n: usize,
-        /// The memory reserved, in words.
-        memory: String,
-    },
-}
+pub use crate::outcome::{AlgorithmCheck, Error, Outcome, Solved, Verification};
 
 /// Bytes a vertex reserved by [`reserve_for`]: less than any polygon was measured to need
-/// beyond its reading (about 90 bytes a vertex for a star of 10^6 vertices, about 200 since its
-/// validation and the triangulation for step 1 overlap, 130 for a maze;
-/// the reading itself takes 64 bytes a vertex, freed once the polygon is validated).
+/// beyond its reading (docs/benchmarks.md; the reading itself is freed once the polygon is
+/// validated).
 pub const RESERVED_PER_VERTEX: usize = 64;
 
 /// Polygons below this many vertices are not checked by [`reserve_for`] (the reservation would
@@ -125,189 +96,8 @@ fn in_words(bytes: f64) -> String {
     }
 }
 
-impl Error {
-    /// Each problem as its own message (an invalid polygon may have several).
-    pub fn messages(&self) -> Vec<String> {
-        match self {
-            Error::Invalid(errors) => errors.iter().map(ToString::to_string).collect(),
-            other => vec![other.to_string()],
-        }
-    }
-}
-
-/// The result of checking one polygon's triangulations (`--verify`).
-#[derive(Clone, Debug, Serialize)]
-pub struct Verification {
-    /// Every check passed and every exact algorithm gave the same count.
-    pub ok: bool,
-    /// One independent check per algorithm run (none for a pseudotriangulation).
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub checks: Vec<AlgorithmCheck>,
-    /// For `pseudo` and `pseudo-hull`: the independent check of the pseudotriangulation.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub pseudotriangulation: Option<Check>,
-    /// How the exact algorithms disagree, if they do.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub disagreement: Option<String>,
-    /// Exact algorithms that could not run on this polygon, and why.
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub skipped: Vec<String>,
-}
-
-/// One algorithm's output, checked.
-#[derive(Clone, Debug, Serialize)]
-pub struct AlgorithmCheck {
-    /// The algorithm.
-    pub algorithm: &'static str,
-    /// Its number of triangles.
-    pub triangle_count: usize,
-    /// Its number of degenerate triangles used.
-    pub degenerate_count: usize,
-    /// The independent checker's verdict.
-    #[serde(flatten)]
-    pub check: Check,
-    /// The output checked (for drawing it; not serialised).
-    #[serde(skip)]
-    pub triangulation: Triangulation,
-}
-
-/// A triangulated polygon.
-#[derive(Clone, Debug)]
-pub struct Solved {
-    /// The triangulation by the chosen algorithm; for `pseudo`, the plain triangulation it
-    /// started from; for `pseudo-hull`, the polygon's plain triangulation (not part of its
-    /// answer).
-    pub triangulation: Triangulation,
-    /// For `pseudo` and `pseudo-hull`: the answer.
-    pub pseudo: Option<Pseudotriangulation>,
-    /// The verification report, with `--verify`.
-    pub verification: Option<Verification>,
-}
-
-/// What happened to one polygon (or to an input that could not be read).
-#[derive(Clone, Debug)]
-pub struct Outcome {
-    /// The source name (`-` for standard input).
-    pub source: String,
-    /// The polygon's position in its source; `None` when the source could not be read.
-    pub index: Option<usize>,
-    /// With `--repair`, when the polygon was split into several: this piece's position among
-    /// them (from 0).
-    pub piece: Option<usize>,
-    /// How many outcomes the polygon gave: with `--repair`, the pieces it was split into; 1
-    /// otherwise. With [`Outcome::piece`], it tells the writers which piece is the polygon's
-    /// last (so that a feature's line or Feature is written as soon as it is complete).
-    pub pieces: usize,
-    /// The validated polygon, when it is valid (on the kernel chosen for it).
-    pub polygon: Option<AnyPolygon>,
-    /// The triangulation, or what went wrong.
-    pub result: Result<Solved, Error>,
-    /// What the tool changed in the input (dropped duplicate vertices). For a polygon split into
-    /// pieces by `--repair`, the warnings about the input polygon are its first piece's.
-    pub warnings: Vec<Warning>,
-    /// With `--repair`: what was repaired in the input polygon, listed once, with its first
-    /// piece (piece 0, or the only outcome); the later pieces of a polygon split in several
-    /// have an empty list (their repairs are piece 0's); `None` without `--repair`.
-    pub repaired: Option<Vec<Repair>>,
-    /// The input feature and part this outcome is (GeoJSON inputs; see [`crate::feature`]).
-    pub feature: Option<Identity>,
-    /// The SRID its input gave it (EWKT `SRID=4326;`, an EWKB header's), which `--to wkt`
-    /// writes back as EWKT and `--to geojson` as a `crs`.
-    pub srid: Option<u32>,
-    /// The Z and M values of the input polygon's vertices, by input vertex number, when its
-    /// positions had them: the writers give each output vertex its input vertex's values.
-    pub ordinates: Option<std::sync::Arc<crate::io::read::Ordinates>>,
-}
-
-impl Outcome {
-    /// The lines to show a user about this outcome, in order: each warning (unless `quiet`) as
-    /// `warning: source: polygon 2: ...`, then each error as `source: polygon 2: ...`.
-    pub fn messages(&self, quiet: bool) -> Vec<String> {
-        let mut lines = Vec::new();
-        if !quiet {
-            for warning in &self.warnings {
-                lines.push(format!("warning: {self}: {warning}"));
-            }
-            // Once for a polygon split into pieces, before its first piece's other messages,
-            // naming the polygon (or feature) as read, without the piece.
-            if self.piece.unwrap_or(0) == 0 {
-                let polygon = self.label(false);
-                for repair in self.repaired.iter().flatten() {
-                    lines.push(format!("warning: {polygon}: repaired: {repair}"));
-                }
-            }
-        }
-        for message in self.error_messages() {
-            lines.push(format!("{self}: {message}"));
-        }
-        lines
-    }
-
-    /// The messages of this outcome's error (none when it succeeded), one per problem. With
-    /// `--repair` (`repaired` is `Some`), a hint that `--repair` would mend the problem is
-    /// replaced by the fact that it did not: `...; --repair splits it there` becomes `...
-    /// (not mended by --repair)`.
-    pub fn error_messages(&self) -> Vec<String> {
-        let Err(e) = &self.result else {
-            return Vec::new();
-        };
-        let mut messages = e.messages();
-        if self.repaired.is_some() {
-            for message in &mut messages {
-                if let Some(at) = message.find("; --repair ") {
-                    message.truncate(at);
-                    message.push_str(" (not mended by --repair)");
-                }
-            }
-        }
-        messages
-    }
-
-    /// [`Outcome::error_messages`] joined by `; `, as one line (the JSON's `errors`).
-    pub fn error_message(&self) -> Option<String> {
-        self.result
-            .is_err()
-            .then(|| self.error_messages().join("; "))
-    }
-}
-
-impl fmt::Display for Outcome {
-    /// `source: polygon 2` (or `source: feature 3`, `source: feature 3, part 1` for a
-    /// GeoJSON feature, `source: line 4` for a line of GeoJSON Lines; ` piece 1` added for a
-    /// piece of a polygon split by `--repair`) as a prefix for messages about this outcome. A
-    /// failure to read names its feature or line in its own message.
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.label(true))
-    }
-}
-
-impl Outcome {
-    /// The name of [`Outcome`]'s `Display`, with or without ` piece k`.
-    fn label(&self, with_piece: bool) -> String {
-        let mut label = match (self.index, &self.feature) {
-            (Some(_), Some(id)) => {
-                // GeoJSON Lines: by line, as their reading errors are.
-                let mut label = match id.feature.line {
-                    Some(line) => format!("{}: line {line}", self.source),
-                    None => format!("{}: feature {}", self.source, id.feature.number),
-                };
-                if id.multipart() {
-                    label.push_str(&format!(", part {}", id.part));
-                }
-                label
-            }
-            (Some(i), None) => format!("{}: polygon {i}", self.source),
-            (None, _) => return self.source.clone(),
-        };
-        if let Some(k) = self.piece.filter(|_| with_piece) {
-            label.push_str(&format!(" piece {k}"));
-        }
-        label
-    }
-}
-
 /// Triangulates a valid polygon with one algorithm and the default [`Options`] (for the exact
-/// algorithms on polygons with holes: a search of at most 10 s, then the best found with
+/// algorithms: at most [`minitri::DEFAULT_TIME_LIMIT`] a polygon, then the best found with
 /// `optimal: false`; for `asano`: at most [`asano::DEFAULT_LIMIT`] vertices).
 ///
 /// # Errors
@@ -657,7 +447,7 @@ pub fn process_raw(
         }];
     }
     if options.repair {
-        let repaired = repair::repair_raw(&raw);
+        let repaired = repair::repair_raw_validated(&raw, &PlainBeside);
         drop(raw);
         let pieces = match repaired {
             Err(e) => {
@@ -706,7 +496,7 @@ pub fn process_raw(
             .collect();
     }
     let mut outcome = outcome;
-    let validated = AnyPolygon::from_raw_all_errors(&raw);
+    let validated = AnyPolygon::from_raw_validated(&raw, &PlainBeside);
     drop(raw);
     match validated {
         Err(errors) => outcome.result = Err(Error::Invalid(errors)),
@@ -717,4 +507,34 @@ pub fn process_raw(
         }
     }
     vec![outcome]
+}
+
+/// From this many vertices on, a polygon is triangulated for step 1 beside its validation
+/// ([`PlainBeside`]); below, the second thread would not pay for itself.
+const TRIANGULATE_WHILE_VALIDATING: usize = 8192;
+
+/// Validation with the plain triangulation for step 1's walks run beside the sweep, on another
+/// rayon thread, for a large polygon: the two sweeps take about as long each. The triangulation
+/// of rings not yet known valid never panics and always ends
+/// ([`crate::algo::plain::try_polygon`]), and it is kept only if the polygon is valid
+/// and its rings do not touch (touching rings are relinked into walks, another polygon). On one
+/// thread (`--jobs 1`) nothing would overlap: an invalid polygon would only be triangulated for
+/// nothing, so the sweep runs alone.
+pub(crate) struct PlainBeside;
+
+impl Validation for PlainBeside {
+    fn validated<P: Coord>(&self, polygon: Polygon<P>) -> Result<Polygon<P>, Vec<InvalidPolygon>> {
+        if polygon.len() < TRIANGULATE_WHILE_VALIDATING || rayon::current_num_threads() <= 1 {
+            return polygon.validated();
+        }
+        let (contacts, plain) = rayon::join(
+            || polygon.sweep(),
+            || crate::algo::plain::try_polygon(&polygon),
+        );
+        let contacts = contacts?;
+        if contacts.any() {
+            return polygon.settled(contacts);
+        }
+        Ok(polygon.with_walking_plain(plain))
+    }
 }

@@ -2,7 +2,7 @@
 
 use crate::geom::decimal::Decimal;
 use crate::geom::polygon::Polygon;
-use crate::io::read::RawPolygon;
+use crate::raw::RawPolygon;
 
 /// The U-shape of the README: 12 vertices, counter-clockwise from (3, 2), four of them flat, with
 /// a notch from the top down to y = 3.

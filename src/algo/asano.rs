@@ -39,7 +39,8 @@ use crate::geom::kernel::Coord;
 use crate::geom::polygon::Polygon;
 use std::time::Instant;
 
-/// The default largest number of vertices the DP accepts (at most about 6 s and 75 MB at 3000).
+/// The default largest number of vertices the DP accepts (seconds and tens of MB at 3000;
+/// docs/benchmarks.md).
 pub const DEFAULT_LIMIT: usize = 3000;
 
 const INF: u16 = u16::MAX;

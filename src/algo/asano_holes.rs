@@ -66,12 +66,12 @@ use std::collections::BTreeMap;
 /// The most holes the DP handles (its time grows like n^(3+2k) with k holes).
 pub const MAX_HOLES: usize = 2;
 
-/// The largest polygon (vertices over all rings) the DP accepts with one hole (measured: 0.6 s
-/// for a convex 60-gon with a convex 40-gon hole, release build).
+/// The largest polygon (vertices over all rings) the DP accepts with one hole (about a second
+/// at worst; docs/benchmarks.md).
 pub const ONE_HOLE_LIMIT: usize = 100;
 
-/// The largest polygon (vertices over all rings) the DP accepts with two holes (measured: 2.0 s
-/// for a convex 30-gon with two convex 7-gon holes, release build).
+/// The largest polygon (vertices over all rings) the DP accepts with two holes (a few seconds
+/// at worst; docs/benchmarks.md).
 pub const TWO_HOLES_LIMIT: usize = 40;
 
 /// The size limit for a polygon with `holes` holes (1 or 2), at most `dp_limit`.
@@ -95,8 +95,8 @@ pub fn estimate(n: usize, holes: usize) -> String {
     } else {
         (n / 3.0 * (2.0 * n / 3.0)).powi(2) * walk(n + 4.0)
     };
-    // Calibrated on convex rings (release build): 0.61 s measured for 100 vertices with one hole
-    // of 40, 2.0 s for 44 with two holes of 7; this formula gives 2 to 5 times that.
+    // Calibrated on convex rings (release build; docs/benchmarks.md): an overestimate, by 2 to 5
+    // times.
     let seconds = 3e-9 * steps;
     if seconds >= 86_400.0 {
         format!("{:.0} days", seconds / 86_400.0)

@@ -25,7 +25,7 @@ use crate::io::write::{OutputFormat, Renderer, Sink};
 use crate::pipeline::{process_raw, unreadable, Error, Options, Outcome};
 use rayon::prelude::*;
 use std::collections::{BTreeMap, HashMap};
-use std::io::{self, BufRead, BufReader, Read};
+use std::io::{self, BufRead, Read};
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
 
@@ -585,114 +585,52 @@ fn read_input(input: &Input, settings: &Settings, chunker: &mut Chunker) -> io::
             Err(e) => return failed(chunker, Error::Read(e.to_string())),
         }
     };
-    let mut reader = BufReader::with_capacity(1 << 16, reader);
-    // `a.geojson.gz`: the extension before `.gz` decides.
-    let extension = (!input.is_stdin())
-        .then(|| read::extension_of(&input.path))
-        .flatten();
-    let mut gzip = false;
-    let start = loop {
-        let start = match reader.fill_buf() {
-            Ok(start) => start,
-            Err(e) => return failed(chunker, Error::Read(e.to_string())),
-        };
-        // gzip by its magic bytes: decompressed as it is read, then judged like any input.
-        if gzip || !read::gzip::is_gzip(start) {
-            break start;
+    let path = (!input.is_stdin()).then_some(input.path.as_path());
+    let opened = read::open(
+        reader,
+        path,
+        settings.from,
+        settings.limit,
+        settings.max_vertices,
+    );
+    match opened {
+        Ok(read::Opened::Parts(parts)) => push_parts(&source, parts, chunker),
+        Ok(read::Opened::Lines(reader)) => read_lines(&source, reader, settings, chunker),
+        Ok(read::Opened::GeoJson(reader)) => stream_geojson(&source, reader, settings, chunker),
+        Ok(read::Opened::GeoJsonText(text)) => {
+            stream_geojson(&source, text.as_bytes(), settings, chunker)
         }
-        gzip = true;
-        reader = BufReader::with_capacity(1 << 16, Box::new(read::gzip::decompress(reader)));
-    };
-    if let Some(error) = read::foreign(start) {
-        return failed(chunker, Error::Parse(error));
+        Err(read::limits::NotRead::Io(e)) => failed(chunker, Error::Read(e.to_string())),
+        Err(read::limits::NotRead::Parse(e)) => failed(chunker, Error::Parse(e)),
     }
-    let format = settings.from.or_else(|| read::sniff(extension, start));
-    // Read chunk by chunk, at most `settings.limit` bytes (decompressed ones, for gzip).
-    let size = (!input.is_stdin() && !gzip)
-        .then(|| std::fs::metadata(&input.path).map(|m| m.len()).ok())
-        .flatten();
-    let note = if gzip { " decompressed" } else { "" };
-    if format == Some(Format::Wkb) {
-        let parts = match read::limits::read_bytes(reader, settings.limit, size.unwrap_or(0), note)
-        {
-            Ok(bytes) => read::wkb::read_parts_srid_within(&bytes, settings.max_vertices),
-            Err(read::limits::NotRead::Io(e)) => {
-                return failed(chunker, Error::Read(e.to_string()))
-            }
-            Err(read::limits::NotRead::Parse(e)) => return failed(chunker, Error::Parse(e)),
-        };
-        return push_parts(&source, parts, chunker);
-    }
-    if format == Some(Format::GeoJson) {
-        let lines_by_name = read::lines_by_extension(extension);
-        if lines_by_name || geojson_stream::looks_line_delimited(start) {
-            return read_lines(&source, reader, settings, chunker);
-        }
-        // Binary data is named as such, not as a JSON syntax error (judged on the start only).
-        if let Some(error) = read::not_text(start, false) {
-            return failed(chunker, Error::Parse(error));
-        }
-        return stream_geojson(&source, reader, settings, chunker);
-    }
-    // Read chunk by chunk, stopping at the first byte that cannot be text (io/read/limits.rs).
-    let text = match read::limits::read_text_noted(reader, settings.limit, size.unwrap_or(0), note)
-    {
-        Ok(text) => text,
-        Err(read::limits::NotRead::Io(e)) => return failed(chunker, Error::Read(e.to_string())),
-        Err(read::limits::NotRead::Parse(e)) => return failed(chunker, Error::Parse(e)),
-    };
-    let format = format.unwrap_or_else(|| read::detect(extension, &text));
-    if format == Format::GeoJson {
-        return stream_geojson(&source, text.as_bytes(), settings, chunker);
-    }
-    let parts = match format {
-        Format::Wkt => read::wkt::read_parts_srid_within(&text, settings.max_vertices),
-        _ => read::read_parts_within(format, &text, settings.max_vertices).map(|parts| {
-            let srids = vec![None; parts.len()];
-            (parts, srids)
-        }),
-    };
-    drop(text);
-    push_parts(&source, parts, chunker)
 }
 
-/// Pushes the parts of an input read whole into the chunker; returns whether it was read to
-/// its end. A member of a collection that is not a polygon is reported in its place; the
-/// polygons are numbered without it.
+/// Pushes the parts of an input read whole into the chunker; returns that it was read to its
+/// end. A member of a collection that is not a polygon is reported in its place; the polygons
+/// are numbered without it.
 fn push_parts(
     source: &Arc<str>,
-    parts: Result<read::wkb::PartsAndSrids, ParseError>,
+    (parts, srids): read::wkb::PartsAndSrids,
     chunker: &mut Chunker,
 ) -> io::Result<bool> {
-    match parts {
-        Ok((parts, srids)) => {
-            let mut index = 0;
-            for (part, srid) in parts.into_iter().zip(srids) {
-                let source = Arc::clone(source);
-                match part {
-                    Ok(raw) => {
-                        chunker.push(Item::Polygon {
-                            source,
-                            index,
-                            raw,
-                            feature: None,
-                            srid,
-                        })?;
-                        index += 1;
-                    }
-                    Err(e) => chunker
-                        .push(Item::Failed(Box::new(unreadable(&source, Error::Parse(e)))))?,
-                }
+    let mut index = 0;
+    for (part, srid) in parts.into_iter().zip(srids) {
+        let source = Arc::clone(source);
+        match part {
+            Ok(raw) => {
+                chunker.push(Item::Polygon {
+                    source,
+                    index,
+                    raw,
+                    feature: None,
+                    srid,
+                })?;
+                index += 1;
             }
-            Ok(true)
-        }
-        Err(e) => {
-            let outcome = unreadable(source, Error::Parse(e));
-            chunker
-                .push(Item::Failed(Box::new(outcome)))
-                .map(|()| false)
+            Err(e) => chunker.push(Item::Failed(Box::new(unreadable(&source, Error::Parse(e)))))?,
         }
     }
+    Ok(true)
 }
 
 /// Reads a GeoJSON Lines input into the chunker, line by line (the lines are parsed in parallel

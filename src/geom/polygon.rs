@@ -15,7 +15,7 @@ use super::decimal::Decimal;
 use super::kernel::{cross, Area, Coord, Point, MAX_COORD};
 use super::validate::{self, InvalidPolygon};
 use super::wide::WidePoint;
-use crate::io::read::RawPolygon;
+use crate::raw::RawPolygon;
 use std::borrow::Cow;
 use std::fmt;
 use std::ops::Range;
@@ -116,9 +116,23 @@ impl Grid {
     }
 }
 
-/// From this many vertices on, a polygon is triangulated for step 1 while it is validated
-/// ([`Polygon::validated`]); below, the second thread would not pay for itself.
-const TRIANGULATE_WHILE_VALIDATING: usize = 8192;
+/// How a built polygon (`Polygon::build`, rings not yet known valid) becomes a valid one:
+/// its validation sweep ([`Polygon::sweep`]), and beside it whatever the caller chooses to run
+/// on the same rings (the pipeline: the plain triangulation for step 1, on a second core);
+/// then [`Polygon::settled`] on what the sweep learned. [`SweepOnly`] runs the sweep alone.
+pub(crate) trait Validation {
+    /// `polygon` validated: as [`Polygon::validated`] returns it, maybe with more prepared.
+    fn validated<P: Coord>(&self, polygon: Polygon<P>) -> Result<Polygon<P>, Vec<InvalidPolygon>>;
+}
+
+/// The validation sweep alone ([`Polygon::validated`]).
+pub(crate) struct SweepOnly;
+
+impl Validation for SweepOnly {
+    fn validated<P: Coord>(&self, polygon: Polygon<P>) -> Result<Polygon<P>, Vec<InvalidPolygon>> {
+        polygon.validated()
+    }
+}
 
 /// A valid polygon with holes, its points of one exact kernel: the fast grid [`Point`]s (the
 /// default) or [`WidePoint`]s.
@@ -147,8 +161,9 @@ pub struct Polygon<P = Point> {
     /// With touching rings: whether each stored vertex is a copy of a touch point (its point
     /// is stored more than once); empty otherwise (all points distinct).
     copy: Vec<bool>,
-    /// A plain triangulation for step 1's walks, made while the polygon was validated (large
-    /// polygons, [`crate::algo::plain::polygon`]), until taken.
+    /// A plain triangulation for step 1's walks, made beside the validation sweep by whoever
+    /// validated the polygon (the pipeline, for large polygons: [`Polygon::with_walking_plain`]),
+    /// until taken.
     walking_plain: TakeOnce<Vec<[usize; 3]>>,
 }
 
@@ -213,10 +228,18 @@ impl AnyPolygon {
     pub fn from_raw_all_errors(
         raw: &RawPolygon,
     ) -> Result<(AnyPolygon, Vec<Warning>), Vec<InvalidPolygon>> {
-        match Polygon::from_raw_all_errors(raw) {
+        AnyPolygon::from_raw_validated(raw, &SweepOnly)
+    }
+
+    /// [`AnyPolygon::from_raw_all_errors`], validated by `how`.
+    pub(crate) fn from_raw_validated(
+        raw: &RawPolygon,
+        how: &impl Validation,
+    ) -> Result<(AnyPolygon, Vec<Warning>), Vec<InvalidPolygon>> {
+        match Polygon::from_raw_validated(raw, how) {
             Err(errors) if matches!(errors[..], [InvalidPolygon::CoordinatesTooLarge { .. }]) => {
-                let (polygon, warnings) = Polygon::from_raw_wide(raw)?;
-                Ok((AnyPolygon::Wide(polygon), warnings))
+                let (polygon, warnings) = Polygon::build_wide(raw).map_err(|e| vec![e])?;
+                Ok((AnyPolygon::Wide(how.validated(polygon)?), warnings))
             }
             other => other.map(|(polygon, warnings)| (AnyPolygon::Fast(polygon), warnings)),
         }
@@ -340,8 +363,16 @@ impl Polygon {
     pub fn from_raw_all_errors(
         raw: &RawPolygon,
     ) -> Result<(Polygon, Vec<Warning>), Vec<InvalidPolygon>> {
+        Polygon::from_raw_validated(raw, &SweepOnly)
+    }
+
+    /// [`Polygon::from_raw_all_errors`], validated by `how`.
+    pub(crate) fn from_raw_validated(
+        raw: &RawPolygon,
+        how: &impl Validation,
+    ) -> Result<(Polygon, Vec<Warning>), Vec<InvalidPolygon>> {
         let (polygon, warnings) = Polygon::build(raw).map_err(|e| vec![e])?;
-        Ok((polygon.validated()?, warnings))
+        Ok((how.validated(polygon)?, warnings))
     }
 
     /// Grid conversion, numbering, duplicate removal and winding, without the sweep.
@@ -396,30 +427,34 @@ pub(crate) fn wide_points(raw: &RawPolygon) -> Vec<WidePoint> {
 impl<P: Coord> Polygon<P> {
     /// The polygon validated: as it is when no rings touch, else relinked into the boundary
     /// walks of its touching rings ([`crate::geom::touch`]).
-    pub(crate) fn validated(mut self) -> Result<Polygon<P>, Vec<InvalidPolygon>> {
-        // A large polygon is triangulated for step 1's walks on a second thread while it is
-        // validated: the two sweeps take about as long each (0.9-1.0 s at 10^6 vertices). The
-        // triangulation of rings not yet known valid never panics and always ends
-        // (`plain::try_polygon`), and it is kept only if the polygon is valid and
-        // its rings do not touch (touching rings are relinked into walks, another polygon).
-        // On one thread (`--jobs 1`) nothing would overlap: an invalid polygon would only be
-        // triangulated for nothing.
-        let overlap =
-            self.len() >= TRIANGULATE_WHILE_VALIDATING && rayon::current_num_threads() > 1;
-        let (contacts, plain) = if overlap {
-            rayon::join(
-                || validate::touching(&self),
-                || crate::algo::plain::try_polygon(&self),
-            )
-        } else {
-            (validate::touching(&self), None)
-        };
-        let contacts = contacts?;
+    pub(crate) fn validated(self) -> Result<Polygon<P>, Vec<InvalidPolygon>> {
+        let contacts = self.sweep()?;
+        self.settled(contacts)
+    }
+
+    /// The validation sweep of a built polygon: what it learned (how the rings touch), or every
+    /// problem found. O(n log n).
+    pub(crate) fn sweep(&self) -> Result<validate::Contacts, Vec<InvalidPolygon>> {
+        validate::touching(self)
+    }
+
+    /// The polygon validated, given what its sweep learned: as it is when no rings touch, else
+    /// relinked into the boundary walks of its touching rings ([`crate::geom::touch`]).
+    pub(crate) fn settled(
+        self,
+        contacts: validate::Contacts,
+    ) -> Result<Polygon<P>, Vec<InvalidPolygon>> {
         if !contacts.any() {
-            self.walking_plain = TakeOnce::new(plain);
             return Ok(self);
         }
         super::touch::walks(self, &contacts)
+    }
+
+    /// The polygon holding `plain`, a plain triangulation for step 1's walks of exactly these
+    /// stored vertices ([`crate::algo::plain::try_polygon`]), until taken.
+    pub(crate) fn with_walking_plain(mut self, plain: Option<Vec<[usize; 3]>>) -> Polygon<P> {
+        self.walking_plain = TakeOnce::new(plain);
+        self
     }
 
     /// A polygon without rings yet, with room for `vertices` vertices in `rings` rings (rings are
@@ -497,8 +532,8 @@ impl<P: Coord> Polygon<P> {
         }
     }
 
-    /// The plain triangulation made for step 1's walks while validating, if any and not taken
-    /// yet: the first call takes it (its memory goes with it).
+    /// The plain triangulation made for step 1's walks beside the validation sweep, if any and
+    /// not taken yet: the first call takes it (its memory goes with it).
     pub(crate) fn take_walking_plain(&self) -> Option<Vec<[usize; 3]>> {
         self.walking_plain.take()
     }

@@ -37,9 +37,11 @@
 //! holes into s > 1 outer rings O(h n).
 
 use super::kernel::{cmp_angle_from, cross, line_through, on_segment, Area, Coord, Point};
-use super::polygon::{dropped, to_grid, wide_points, AnyPolygon, Grid, Polygon, Ring, Warning};
+use super::polygon::{
+    dropped, to_grid, wide_points, AnyPolygon, Grid, Polygon, Ring, SweepOnly, Validation, Warning,
+};
 use super::validate::{folds_back, vertices_on_edges, InvalidPolygon};
-use crate::io::read::RawPolygon;
+use crate::raw::RawPolygon;
 use serde::Serialize;
 use std::collections::HashMap;
 use std::fmt;
@@ -122,6 +124,14 @@ pub struct Pieces {
 /// What cannot be repaired into anything: an outer ring of fewer than 3 distinct points or of
 /// zero area.
 pub fn repair_raw(raw: &RawPolygon) -> Result<Pieces, InvalidPolygon> {
+    repair_raw_validated(raw, &SweepOnly)
+}
+
+/// [`repair_raw`], each piece validated by `how`.
+pub(crate) fn repair_raw_validated(
+    raw: &RawPolygon,
+    how: &impl Validation,
+) -> Result<Pieces, InvalidPolygon> {
     if raw.rings.is_empty() {
         return Err(InvalidPolygon::TooFewVertices {
             ring: Ring::Outer,
@@ -129,9 +139,9 @@ pub fn repair_raw(raw: &RawPolygon) -> Result<Pieces, InvalidPolygon> {
         });
     }
     match to_grid(raw) {
-        Ok((points, grid)) => repair_points(raw, points, grid),
+        Ok((points, grid)) => repair_points(raw, points, grid, how),
         Err(InvalidPolygon::CoordinatesTooLarge { .. }) => {
-            repair_points(raw, wide_points(raw), Grid::identity())
+            repair_points(raw, wide_points(raw), Grid::identity(), how)
         }
         Err(e) => Err(e),
     }
@@ -142,6 +152,7 @@ fn repair_points<P: Coord>(
     raw: &RawPolygon,
     points: Vec<P>,
     grid: Grid,
+    how: &impl Validation,
 ) -> Result<Pieces, InvalidPolygon>
 where
     AnyPolygon: From<Polygon<P>>,
@@ -166,7 +177,7 @@ where
         .map(|rings| {
             let (polygon, warnings) =
                 Polygon::from_grid_rings(rings, grid, input_vertices).map_err(|e| vec![e])?;
-            Ok((AnyPolygon::from(polygon.validated()?), warnings))
+            Ok((AnyPolygon::from(how.validated(polygon)?), warnings))
         })
         .collect();
     Ok(Pieces {
@@ -638,80 +649,14 @@ fn trace<P: Coord>(edges: &[(Vertex<P>, P, usize)]) -> Vec<(usize, Vec<Vertex<P>
 /// contacts OGC allows are left to validation), as is everything when the sweep finds rings
 /// crossing or overlapping, or a loop of fewer than 3 vertices (rejected by validation).
 fn separate<P: Coord>(loops: Vec<Loop<P>>, grid: &Grid, out: &mut Repaired<P>) -> Vec<Loop<P>> {
-    // The sweep needs rings of at least 3 vertices without consecutive repeats; what is left
-    // otherwise is rejected by validation.
-    let sane = |l: &Loop<P>| {
-        let v = &l.vertices;
-        v.len() >= 3 && (0..v.len()).all(|i| v[i].0 != v[(i + 1) % v.len()].0)
+    let result = match cut_at_own_touches(loops, grid, out) {
+        Ok(result) => result,
+        Err(loops) => return loops,
     };
-    if loops.is_empty() || !loops.iter().all(sane) {
-        return loops;
-    }
-    let rings: Vec<Vec<Vertex<P>>> = loops.iter().map(|l| l.vertices.clone()).collect();
-    let polygon = Polygon::rings_as_they_are(&rings, 0, *grid);
-    drop(rings);
-    let Some(on_edge) = vertices_on_edges(&polygon) else {
-        return loops;
-    };
-    let starts = polygon.ring_starts();
-    let locate = |i: usize| {
-        let l = polygon.ring_index(i);
-        (l, i - starts[l])
-    };
-    // The vertices to insert into each edge (loop, position of its start), and for each loop
-    // the points of its own vertices inside its edges, with the edge's input numbers.
-    let mut cuts: HashMap<(usize, usize), Vec<Vertex<P>>> = HashMap::new();
-    let mut own: Vec<HashMap<P, (usize, usize)>> = vec![HashMap::new(); loops.len()];
-    for &(e, v) in &on_edge {
-        let ((l, i), (m, j)) = (locate(e), locate(v));
-        let ring = &loops[l].vertices;
-        cuts.entry((l, i)).or_default().push(loops[m].vertices[j]);
-        if l == m {
-            own[l]
-                .entry(ring[j].0)
-                .or_insert((ring[i].1, ring[(i + 1) % ring.len()].1));
-        }
-    }
-    // Step 5a: each loop with its edges cut (kept for tracing), split where it touches itself.
-    let mut result: Vec<(Loop<P>, Vec<Vertex<P>>)> = Vec::with_capacity(loops.len());
-    for (l, lp) in loops.into_iter().enumerate() {
-        let mut vertices = Vec::with_capacity(lp.vertices.len());
-        for (i, &v) in lp.vertices.iter().enumerate() {
-            vertices.push(v);
-            if let Some(inner) = cuts.get_mut(&(l, i)) {
-                inner.sort_by(|x, y| P::cmp_dist(v.0, x.0, y.0));
-                inner.dedup_by_key(|x| x.0);
-                vertices.extend_from_slice(inner);
-            }
-        }
-        if own[l].is_empty() {
-            result.push((lp, vertices));
-        } else {
-            for piece in split(lp.ring, lp.shell, vertices, grid, out, &own[l]) {
-                let cut = piece.vertices.clone();
-                result.push((piece, cut));
-            }
-        }
-    }
     // Step 5b: the loops through each point shared by several; a touch joining loops already
     // joined closes a cycle.
     let n = result.len();
-    let mut through: HashMap<P, Vec<usize>> = HashMap::new();
-    for (l, (_, vertices)) in result.iter().enumerate() {
-        for v in vertices {
-            through.entry(v.0).or_default().push(l);
-        }
-    }
-    let mut touches: Vec<(P, Vec<usize>)> =
-        through.into_iter().filter(|(_, ls)| ls.len() > 1).collect();
-    touches.sort_unstable_by_key(|t| t.0);
-    fn find(root: &mut [usize], mut r: usize) -> usize {
-        while root[r] != r {
-            root[r] = root[root[r]];
-            r = root[r];
-        }
-        r
-    }
+    let mut touches = shared_points(&result);
     let mut root: Vec<usize> = (0..n).collect();
     let mut closing = Vec::new();
     for (_, ls) in &mut touches {
@@ -740,68 +685,11 @@ fn separate<P: Coord>(loops: Vec<Loop<P>>, grid: &Grid, out: &mut Repaired<P>) -
     }
     let mut replaced: Vec<(usize, Vec<Loop<P>>)> = Vec::new();
     for c in cyclic {
-        let ls = &members[&c];
-        let mut edges = Vec::new();
-        for &l in ls {
-            let (lp, vertices) = &result[l];
-            let k = vertices.len();
-            for i in 0..k {
-                edges.push((vertices[i], vertices[(i + 1) % k].0, lp.ring));
-            }
+        let points = touches.iter().filter(|(_, t)| part[t[0]] == c);
+        let points: Vec<P> = points.map(|(p, _)| *p).collect();
+        if let Some(traced) = cut_cycle(&result, &members[&c], &points, grid, out) {
+            replaced.push((c, traced));
         }
-        // Traced again, its walks split silently where they pass a point twice (a touch that
-        // is no cycle: OGC allows it, as the input had it).
-        let mut quiet = Repaired::default();
-        let mut traced = Vec::new();
-        for (ring, vertices) in trace(&edges) {
-            let twice = area(&vertices).signum();
-            if twice != 0 && vertices.len() >= 3 {
-                traced.extend(split(
-                    ring,
-                    twice > 0,
-                    vertices,
-                    grid,
-                    &mut quiet,
-                    &HashMap::new(),
-                ));
-            }
-        }
-        let before = ls.iter().filter(|&&l| result[l].0.shell).count();
-        let after = traced.iter().filter(|l| l.shell).count();
-        if after <= before {
-            continue; // the cycle encloses no interior (pieces touching twice): left as it is
-        }
-        let mut rings: Vec<usize> = ls.iter().map(|&l| result[l].0.ring).collect();
-        rings.sort_unstable();
-        rings.dedup();
-        let mut names: Vec<String> = rings
-            .iter()
-            .map(|&r| Ring::from_index(r).to_string())
-            .collect();
-        let last = names.pop().unwrap_or_default();
-        let (names, verb) = if names.is_empty() {
-            (last, "touches itself")
-        } else {
-            (format!("{} and {last}", names.join(", ")), "touch")
-        };
-        let points: Vec<String> = touches
-            .iter()
-            .filter(|(_, t)| part[t[0]] == c)
-            .map(|(p, _)| grid.format_point(*p))
-            .collect();
-        const SHOWN: usize = 6;
-        let mut at = points[..points.len().min(SHOWN)].join(", ");
-        if points.len() > SHOWN {
-            at.push_str(&format!(" and {} more points", points.len() - SHOWN));
-        }
-        out.repairs.push(Repair {
-            kind: RepairKind::CutInterior,
-            message: format!(
-                "{names} {verb} at {at}, cutting the interior into {} pieces: each became a separate polygon",
-                1 + after - before
-            ),
-        });
-        replaced.push((c, traced));
     }
     let mut gone = vec![false; n];
     for &(c, _) in &replaced {
@@ -815,6 +703,172 @@ fn separate<P: Coord>(loops: Vec<Loop<P>>, grid: &Grid, out: &mut Repaired<P>) -
     }
     loops.extend(replaced.into_iter().flat_map(|(_, traced)| traced));
     loops
+}
+
+/// A loop with its edges cut at the vertices inside them (the vertices traced in step 5b).
+type Cut<P> = (Loop<P>, Vec<Vertex<P>>);
+
+/// The root of `r`'s set in the union-find forest `root` (paths halved on the way).
+fn find(root: &mut [usize], mut r: usize) -> usize {
+    while root[r] != r {
+        root[r] = root[root[r]];
+        r = root[r];
+    }
+    r
+}
+
+/// Step 5a of [`separate`]: each loop with its edges cut at the vertices the sweep finds inside
+/// them (the cut vertices kept for tracing), split where it touches itself; `Err` with the
+/// loops as they came when the sweep cannot run (a loop of fewer than 3 vertices, consecutive
+/// repeats) or finds rings crossing or overlapping.
+fn cut_at_own_touches<P: Coord>(
+    loops: Vec<Loop<P>>,
+    grid: &Grid,
+    out: &mut Repaired<P>,
+) -> Result<Vec<Cut<P>>, Vec<Loop<P>>> {
+    // The sweep needs rings of at least 3 vertices without consecutive repeats; what is left
+    // otherwise is rejected by validation.
+    let sane = |l: &Loop<P>| {
+        let v = &l.vertices;
+        v.len() >= 3 && (0..v.len()).all(|i| v[i].0 != v[(i + 1) % v.len()].0)
+    };
+    if loops.is_empty() || !loops.iter().all(sane) {
+        return Err(loops);
+    }
+    let rings: Vec<Vec<Vertex<P>>> = loops.iter().map(|l| l.vertices.clone()).collect();
+    let polygon = Polygon::rings_as_they_are(&rings, 0, *grid);
+    drop(rings);
+    let Some(on_edge) = vertices_on_edges(&polygon) else {
+        return Err(loops);
+    };
+    let starts = polygon.ring_starts();
+    let locate = |i: usize| {
+        let l = polygon.ring_index(i);
+        (l, i - starts[l])
+    };
+    // The vertices to insert into each edge (loop, position of its start), and for each loop
+    // the points of its own vertices inside its edges, with the edge's input numbers.
+    let mut cuts: HashMap<(usize, usize), Vec<Vertex<P>>> = HashMap::new();
+    let mut own: Vec<HashMap<P, (usize, usize)>> = vec![HashMap::new(); loops.len()];
+    for &(e, v) in &on_edge {
+        let ((l, i), (m, j)) = (locate(e), locate(v));
+        let ring = &loops[l].vertices;
+        cuts.entry((l, i)).or_default().push(loops[m].vertices[j]);
+        if l == m {
+            own[l]
+                .entry(ring[j].0)
+                .or_insert((ring[i].1, ring[(i + 1) % ring.len()].1));
+        }
+    }
+    let mut result: Vec<Cut<P>> = Vec::with_capacity(loops.len());
+    for (l, lp) in loops.into_iter().enumerate() {
+        let mut vertices = Vec::with_capacity(lp.vertices.len());
+        for (i, &v) in lp.vertices.iter().enumerate() {
+            vertices.push(v);
+            if let Some(inner) = cuts.get_mut(&(l, i)) {
+                inner.sort_by(|x, y| P::cmp_dist(v.0, x.0, y.0));
+                inner.dedup_by_key(|x| x.0);
+                vertices.extend_from_slice(inner);
+            }
+        }
+        if own[l].is_empty() {
+            result.push((lp, vertices));
+        } else {
+            for piece in split(lp.ring, lp.shell, vertices, grid, out, &own[l]) {
+                let cut = piece.vertices.clone();
+                result.push((piece, cut));
+            }
+        }
+    }
+    Ok(result)
+}
+
+/// The points shared by several of the (cut) loops, in point order, each with the loops
+/// through it (in loop order, a loop once for each time it passes there).
+fn shared_points<P: Coord>(result: &[Cut<P>]) -> Vec<(P, Vec<usize>)> {
+    let mut through: HashMap<P, Vec<usize>> = HashMap::new();
+    for (l, (_, vertices)) in result.iter().enumerate() {
+        for v in vertices {
+            through.entry(v.0).or_default().push(l);
+        }
+    }
+    let mut touches: Vec<(P, Vec<usize>)> =
+        through.into_iter().filter(|(_, ls)| ls.len() > 1).collect();
+    touches.sort_unstable_by_key(|t| t.0);
+    touches
+}
+
+/// Step 5b of [`separate`] for one part of loops `ls` joined in a cycle at `points`: the part
+/// traced again, with the repair told, when that cuts its interior into more pieces; `None`
+/// when the cycle encloses no interior (pieces touching twice: left as it is).
+fn cut_cycle<P: Coord>(
+    result: &[Cut<P>],
+    ls: &[usize],
+    points: &[P],
+    grid: &Grid,
+    out: &mut Repaired<P>,
+) -> Option<Vec<Loop<P>>> {
+    let mut edges = Vec::new();
+    for &l in ls {
+        let (lp, vertices) = &result[l];
+        let k = vertices.len();
+        for i in 0..k {
+            edges.push((vertices[i], vertices[(i + 1) % k].0, lp.ring));
+        }
+    }
+    // Traced again, its walks split silently where they pass a point twice (a touch that is no
+    // cycle: OGC allows it, as the input had it).
+    let mut quiet = Repaired::default();
+    let mut traced = Vec::new();
+    for (ring, vertices) in trace(&edges) {
+        let twice = area(&vertices).signum();
+        if twice != 0 && vertices.len() >= 3 {
+            traced.extend(split(
+                ring,
+                twice > 0,
+                vertices,
+                grid,
+                &mut quiet,
+                &HashMap::new(),
+            ));
+        }
+    }
+    let before = ls.iter().filter(|&&l| result[l].0.shell).count();
+    let after = traced.iter().filter(|l| l.shell).count();
+    if after <= before {
+        return None;
+    }
+    let mut rings: Vec<usize> = ls.iter().map(|&l| result[l].0.ring).collect();
+    rings.sort_unstable();
+    rings.dedup();
+    let mut names: Vec<String> = rings
+        .iter()
+        .map(|&r| Ring::from_index(r).to_string())
+        .collect();
+    let last = names.pop().unwrap_or_default();
+    let (names, verb) = if names.is_empty() {
+        (last, "touches itself")
+    } else {
+        (format!("{} and {last}", names.join(", ")), "touch")
+    };
+    const SHOWN: usize = 6;
+    let shown: Vec<String> = points
+        .iter()
+        .take(SHOWN)
+        .map(|&p| grid.format_point(p))
+        .collect();
+    let mut at = shown.join(", ");
+    if points.len() > SHOWN {
+        at.push_str(&format!(" and {} more points", points.len() - SHOWN));
+    }
+    out.repairs.push(Repair {
+        kind: RepairKind::CutInterior,
+        message: format!(
+            "{names} {verb} at {at}, cutting the interior into {} pieces: each became a separate polygon",
+            1 + after - before
+        ),
+    });
+    Some(traced)
 }
 
 /// The loops with every edge cut at the vertices of collinear edges lying strictly inside it (a

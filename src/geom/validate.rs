@@ -268,8 +268,8 @@ fn scan<P: Coord>(
     let mut contacts = Contacts::default();
     // One small ring: valid exactly when no two non-adjacent edges meet (two vertices at one
     // point make two such edges meet there, so none is repeated either). Only if some do is the
-    // full scan below run, which then reports what is wrong (the sorting of its vertices was
-    // 1.5% of the batch benchmark's time).
+    // full scan below run, which then reports what is wrong (its sorting is worth saving on a
+    // batch of small polygons: docs/benchmarks.md).
     if errors.is_empty()
         && small_rings_by_pairs
         && polygon.holes() == 0

@@ -48,18 +48,71 @@ pub fn check<P: Coord>(
 ) -> Check {
     let mut problems = Problems::default();
     let hull_region = algorithm == Algorithm::PseudoHull;
-    let n = polygon.len();
+    // 1, 2: each face alone; the other checks use the faces whose indices are usable, and those
+    // on all the faces only when every face is.
     let mut good: Vec<usize> = Vec::new();
     for (k, face) in p.faces.iter().enumerate() {
         if face_ok(polygon, k, face, &mut problems) {
             good.push(k);
         }
     }
-    // 3: the chain, the area, the polygon edges.
+    let all = good.len() == p.faces.len();
     let hull = hull_cycle(polygon.points());
+    let region = hull_region.then_some(hull.as_slice());
+    check_partition(polygon, p, &good, region, &mut problems);
+    let half = face_edges(p, &good);
+    if hull_region {
+        check_polygon_edges(polygon, &half, &mut problems);
+    }
+    // 4: the edge count.
+    let distinct = half
+        .keys()
+        .filter(|&&(a, b)| a < b || !half.contains_key(&(b, a)))
+        .count();
+    if all && distinct != p.edge_count {
+        problems.add(|| {
+            format!(
+                "edge_count is {} but the faces have {distinct} edges",
+                p.edge_count
+            )
+        });
+    }
+    if all {
+        check_minimal(polygon, p, &good, &half, &mut problems);
+    }
+    if hull_region {
+        check_count(polygon, p, &hull, &mut problems);
+    }
+    problems.finish()
+}
+
+/// Directed face edges `(a, b)` -> (face, position of `a` in its cycle).
+type HalfEdges = BTreeMap<(usize, usize), (usize, usize)>;
+
+/// The directed edges of faces `good`.
+fn face_edges(p: &Pseudotriangulation, good: &[usize]) -> HalfEdges {
+    let mut half = HalfEdges::new();
+    for &k in good {
+        let c = &p.faces[k].cycle;
+        for i in 0..c.len() {
+            half.insert((c[i], c[(i + 1) % c.len()]), (k, i));
+        }
+    }
+    half
+}
+
+/// Check 3: the faces `good` partition the region (the polygon, or its vertices' convex hull
+/// `hull`): the boundary chain cancels and the areas add up, when every face is good.
+fn check_partition<P: Coord>(
+    polygon: &Polygon<P>,
+    p: &Pseudotriangulation,
+    good: &[usize],
+    hull: Option<&[usize]>,
+    problems: &mut Problems,
+) {
     let mut sides: Vec<[usize; 2]> = Vec::new();
     let mut area = Area::default();
-    for &k in &good {
+    for &k in good {
         let c = &p.faces[k].cycle;
         for i in 0..c.len() {
             sides.push([c[i], c[(i + 1) % c.len()]]);
@@ -71,62 +124,53 @@ pub fn check<P: Coord>(
         }
     }
     let mut region = Area::default();
-    if hull_region && !is_hull(polygon, &hull) {
-        problems.add(|| "the checker's own convex hull is wrong (a checker bug)".to_string());
-    }
-    if hull_region {
+    if let Some(hull) = hull {
+        if !is_hull(polygon, hull) {
+            problems.add(|| "the checker's own convex hull is wrong (a checker bug)".to_string());
+        }
         for i in 0..hull.len() {
             let (a, b) = (hull[i], hull[(i + 1) % hull.len()]);
             sides.push([b, a]);
             region.add(polygon.point(hull[0]), polygon.point(a), polygon.point(b));
         }
     } else {
-        sides.extend((0..n).map(|i| [polygon.next(i), i]));
+        sides.extend((0..polygon.len()).map(|i| [polygon.next(i), i]));
         region = polygon.twice_area();
     }
     if good.len() == p.faces.len() {
         if area != region {
             problems.add(|| "the faces' total area differs from the region's".to_string());
         }
-        check_sides_cancel(polygon, sides, &mut problems);
+        check_sides_cancel(polygon, sides, problems);
     }
-    // Directed face edges -> (face, position).
-    let mut half: BTreeMap<(usize, usize), (usize, usize)> = BTreeMap::new();
-    for &k in &good {
-        let c = &p.faces[k].cycle;
-        for i in 0..c.len() {
-            half.insert((c[i], c[(i + 1) % c.len()]), (k, i));
+}
+
+/// Check 3 for `pseudo-hull`: every polygon edge is a face edge.
+fn check_polygon_edges<P: Coord>(polygon: &Polygon<P>, half: &HalfEdges, problems: &mut Problems) {
+    for i in 0..polygon.len() {
+        let (a, b) = (i, polygon.next(i));
+        if !half.contains_key(&(a, b)) && !half.contains_key(&(b, a)) {
+            problems.add(|| {
+                format!(
+                    "polygon edge {}-{} is no face edge",
+                    polygon.id(a),
+                    polygon.id(b)
+                )
+            });
         }
     }
+}
+
+/// Check 5, Theorem 2: no edge but a polygon edge can be removed leaving a pseudotriangulation
+/// (Lemma 4(a)), nor the three sides of a triangular face (Lemma 4(b)).
+fn check_minimal<P: Coord>(
+    polygon: &Polygon<P>,
+    p: &Pseudotriangulation,
+    good: &[usize],
+    half: &HalfEdges,
+    problems: &mut Problems,
+) {
     let is_ring_edge = |a: usize, b: usize| polygon.next(a) == b || polygon.next(b) == a;
-    if hull_region {
-        for i in 0..n {
-            let (a, b) = (i, polygon.next(i));
-            if !half.contains_key(&(a, b)) && !half.contains_key(&(b, a)) {
-                problems.add(|| {
-                    format!(
-                        "polygon edge {}-{} is no face edge",
-                        polygon.id(a),
-                        polygon.id(b)
-                    )
-                });
-            }
-        }
-    }
-    // 4: the edge count.
-    let distinct = half
-        .keys()
-        .filter(|&&(a, b)| a < b || !half.contains_key(&(b, a)))
-        .count();
-    if good.len() == p.faces.len() && distinct != p.edge_count {
-        problems.add(|| {
-            format!(
-                "edge_count is {} but the faces have {distinct} edges",
-                p.edge_count
-            )
-        });
-    }
-    // 5: Theorem 2.
     let pt = |i: usize| polygon.point(i);
     let corner = |u: usize, a: usize, w: usize| usize::from(cross(pt(u), pt(a), pt(w)) > 0);
     let at = |k: usize, i: usize| {
@@ -142,82 +186,86 @@ pub fn check<P: Coord>(
     let lost = |u: usize, a: usize, b: usize, b2: usize, w: usize| {
         corner(u, a, b) + corner(b2, a, w) - corner(u, a, w)
     };
-    if good.len() == p.faces.len() {
-        for (&(a, b), &(f, i)) in &half {
-            if a > b || is_ring_edge(a, b) {
-                continue;
-            }
-            let Some(&(g, j)) = half.get(&(b, a)) else {
-                continue;
-            };
-            if f == g {
-                continue;
-            }
-            // f: u -> a -> b -> y; g: x -> b -> a -> w.
-            let (u, y) = (before(f, i), at(f, i + 2));
-            let (x, w) = (before(g, j), at(g, j + 2));
-            let merged = 6 - lost(u, a, b, b, w) - lost(x, b, a, a, y);
-            if merged == 3 {
-                problems.add(|| {
-                    format!(
-                        "edge {}-{} can be removed (Lemma 4(a)): its two faces merge into a \
-                         pseudotriangle, so the result is not minimal",
-                        polygon.id(a),
-                        polygon.id(b)
-                    )
-                });
-            }
+    for (&(a, b), &(f, i)) in half {
+        if a > b || is_ring_edge(a, b) {
+            continue;
         }
-        for &k in &good {
-            let c = &p.faces[k].cycle;
-            if c.len() != 3 || (0..3).any(|i| is_ring_edge(c[i], c[(i + 1) % 3])) {
-                continue;
-            }
-            let mut merged = 12;
-            for i in 0..3 {
-                let (cc, a, b) = (c[(i + 2) % 3], c[i], c[(i + 1) % 3]);
-                // The face across c -> a runs u -> a -> c; the one across a -> b runs b -> a -> w.
-                let (Some(&(g, j)), Some(&(h, l))) = (half.get(&(a, cc)), half.get(&(b, a))) else {
-                    merged = 0;
-                    break;
-                };
-                let u = before(g, j);
-                let w = at(h, l + 2);
-                merged -= corner(u, a, cc) + 1 + corner(b, a, w) - corner(u, a, w);
-            }
-            if merged == 3 {
-                let [a, b, cc] = [c[0], c[1], c[2]].map(|v| polygon.id(v));
-                problems.add(|| {
-                    format!(
-                        "triangle [{a}, {b}, {cc}] can be removed (Lemma 4(b)): it and its three \
-                         neighbours merge into a pseudotriangle, so the result is not minimal"
-                    )
-                });
-            }
-        }
-    }
-    // 6: the count of Corollary 1; a result stopped by the time limit claims only minimality
-    // (5), and no pseudotriangulation has fewer faces.
-    if hull_region {
-        let big = big_angles(polygon, &hull);
-        let want = (2 * n).saturating_sub(big + 2);
-        let wrong = if p.stopped.is_some() {
-            p.faces.len() < want
-        } else {
-            p.faces.len() != want
+        let Some(&(g, j)) = half.get(&(b, a)) else {
+            continue;
         };
-        if wrong {
+        if f == g {
+            continue;
+        }
+        // f: u -> a -> b -> y; g: x -> b -> a -> w.
+        let (u, y) = (before(f, i), at(f, i + 2));
+        let (x, w) = (before(g, j), at(g, j + 2));
+        let merged = 6 - lost(u, a, b, b, w) - lost(x, b, a, a, y);
+        if merged == 3 {
             problems.add(|| {
                 format!(
-                    "{} but 2n - N - 2 = {} - {big} - 2 = {want} (N: angles of at least pi of the \
-                     polygon's and the hull's edges; Corollary 1)",
-                    plural(p.faces.len(), "pseudotriangle"),
-                    2 * n
+                    "edge {}-{} can be removed (Lemma 4(a)): its two faces merge into a \
+                     pseudotriangle, so the result is not minimal",
+                    polygon.id(a),
+                    polygon.id(b)
                 )
             });
         }
     }
-    problems.finish()
+    for &k in good {
+        let c = &p.faces[k].cycle;
+        if c.len() != 3 || (0..3).any(|i| is_ring_edge(c[i], c[(i + 1) % 3])) {
+            continue;
+        }
+        let mut merged = 12;
+        for i in 0..3 {
+            let (cc, a, b) = (c[(i + 2) % 3], c[i], c[(i + 1) % 3]);
+            // The face across c -> a runs u -> a -> c; the one across a -> b runs b -> a -> w.
+            let (Some(&(g, j)), Some(&(h, l))) = (half.get(&(a, cc)), half.get(&(b, a))) else {
+                merged = 0;
+                break;
+            };
+            let u = before(g, j);
+            let w = at(h, l + 2);
+            merged -= corner(u, a, cc) + 1 + corner(b, a, w) - corner(u, a, w);
+        }
+        if merged == 3 {
+            let [a, b, cc] = [c[0], c[1], c[2]].map(|v| polygon.id(v));
+            problems.add(|| {
+                format!(
+                    "triangle [{a}, {b}, {cc}] can be removed (Lemma 4(b)): it and its three \
+                     neighbours merge into a pseudotriangle, so the result is not minimal"
+                )
+            });
+        }
+    }
+}
+
+/// Check 6, for `pseudo-hull`: the count of Corollary 1; a result stopped by the time limit
+/// claims only minimality (5), and no pseudotriangulation has fewer faces.
+fn check_count<P: Coord>(
+    polygon: &Polygon<P>,
+    p: &Pseudotriangulation,
+    hull: &[usize],
+    problems: &mut Problems,
+) {
+    let n = polygon.len();
+    let big = big_angles(polygon, hull);
+    let want = (2 * n).saturating_sub(big + 2);
+    let wrong = if p.stopped.is_some() {
+        p.faces.len() < want
+    } else {
+        p.faces.len() != want
+    };
+    if wrong {
+        problems.add(|| {
+            format!(
+                "{} but 2n - N - 2 = {} - {big} - 2 = {want} (N: angles of at least pi of the \
+                 polygon's and the hull's edges; Corollary 1)",
+                plural(p.faces.len(), "pseudotriangle"),
+                2 * n
+            )
+        });
+    }
 }
 
 /// Checks 1 and 2 for face `k`; whether its indices are usable for the other checks.

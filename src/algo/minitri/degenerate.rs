@@ -155,9 +155,8 @@ fn turn_at<P: Coord>(polygon: &Polygon<P>, b: usize) -> i128 {
 const FLIPS_PER_VERTEX: usize = 4;
 
 /// The smallest polygon whose triangulation is flipped before walking: in smaller ones the walks
-/// are short whatever the triangles' shapes, and the flips cost more than they save (4% of all
-/// the work on the batch benchmark's 8- to 40-vertex rectilinear polygons; about even at 50
-/// vertices, flipping saves 13% on 200-vertex stars).
+/// are short whatever the triangles' shapes, and the flips cost more than they save (about even
+/// at 50 vertices; docs/benchmarks.md).
 const FLIPS_FROM: usize = 48;
 
 /// All minimally degenerate triangles of a polygon (holes allowed), by triangular expansion from
@@ -341,8 +340,8 @@ fn search_range<P: Coord>(
 }
 
 /// How many vertices one parallel task searches from (small polygons stay on one thread). Small
-/// enough that a 1000-vertex polygon keeps two cores busy (4 tasks: 1.4 ms instead of 2.2 ms
-/// for a random star), large enough that a task costs far more than handing it out.
+/// enough that a 1000-vertex polygon keeps two cores busy (4 tasks; docs/benchmarks.md), large
+/// enough that a task costs far more than handing it out.
 const PARALLEL_BLOCK: usize = 256;
 
 /// Adds the minimally degenerate triangles with middle vertex `b` to `out`.

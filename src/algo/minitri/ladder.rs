@@ -23,8 +23,8 @@
 //! The levels are chosen among the ranges asked for: only those with few slots (at most 24
 //! each way, found with two reporting trees, not by walking the range), and only where the
 //! positions a level owns (its length minus the levels it jumps itself) are at least 128 and
-//! pay for a matrix product (at least ins x outs). Both numbers were measured best among
-//! 12-256 slots and 32-512 positions (instruction counts on bars and snakes). Nothing depends on
+//! pay for a matrix product (at least ins x outs). Both numbers were measured best
+//! (docs/benchmarks.md). Nothing depends on
 //! the choice for exactness: every choice gives the values of plain scans, which the tests
 //! check with a level at every range asked for (`LadderPolicy::Every`) against no levels.
 //!

@@ -7,82 +7,27 @@
 //! on the circle yet are independent (relationship (iii)(b)); a 3b-chain is a path of such pairs,
 //! and any set of its members is independent.
 //!
-//! `MIS(i, j)` is the largest independent set among the chords with both endpoints in positions
-//! `i..=j`. Let `k j` be the chord ending at `j`. If `k` lies outside `i..j`, or the chord is not
-//! used, `MIS(i, j) = MIS(i, j - 1)`. If it is used, every chosen chord crossing it is a 3b-partner
-//! of it, and so on: the chosen chords connected to `k j` by crossings form a contiguous piece `S`
-//! of its 3b-chain, lying in `i..=j`; every other chosen chord lies in one of the gaps between
-//! consecutive endpoints of `S` (a chord spanning two gaps would cross a chord of `S`, since `S`
-//! is connected by crossings), and chords in different gaps cannot cross. So
-//! `MIS(i, j) = max(MIS(i, j - 1), max over S of |S| + sum of MIS(gap))`, which is exact
-//! (Theorem 6), with 3b-chains of any length.
+//! Input contract: the chords of the circle of [`super::circle`] (one per minimally degenerate
+//! triangle) and their 3b-chains ([`super::chains`]). Output guarantee: a maximum independent set,
+//! exactly: with `MIS(i, j)` the best among the chords inside positions `i..=j`, `MIS(i, j) =
+//! max(MIS(i, j - 1), max over S of |S| + sum of MIS(gap))`, `S` a contiguous piece of the 3b-chain
+//! of the chord ending at `j` and the gaps those between its endpoints (Theorem 6, with 3b-chains
+//! of any length).
 //!
-//! Computation: the paper fills the table `MIS(i, j)` (O(K^2) memory). Here the circle is first
-//! split into the connected components of its crossing graph (dependent chords cross, so the
-//! components are independent problems; a lone chord is always taken, and a component of at most 64
-//! chords is first searched over bit sets, [`super::small`], which gives up past a budget), and
-//! each component left is solved by weighted interval scheduling over "units" (a chord, or a
-//! contiguous piece of a 3b-chain) taken in order of span, in the manner of G. Valiente, "A new
-//! simple algorithm for the maximum-weight independent set problem on circle graphs", ISAAC 2003:
-//! each unit's value needs only the best sets in the gaps inside it, found by one scan each.
+//! Method: the crossing graph's components are solved apart (a component of at most 64 chords by a
+//! search over bit sets, [`super::small`]); each one left by weighted interval scheduling over units
+//! (a chord, or a contiguous piece of a 3b-chain) in order of span, as G. Valiente's algorithm for
+//! circle graphs (ISAAC 2003). The pieces of a 3b-chain that is a staircase on the circle are valued
+//! in the scans (`Staircase`), the other pieces from the piece one chord shorter
+//! (`Sub::list_units`); nested ranges are jumped by the levels of [`super::ladder`].
 //!
-//! 3b-chains in the plane are staircases on the circle: the chain's line cuts off one pocket of
-//! the polygon between consecutive chain vertices (on the non-180-degree side), so the boundary
-//! meets `v_0, v_1, .., v_{L+1}` in this order. Then a piece's value splits into a part for its
-//! first chord, a part for its last, and a sum over the chain between (see `Staircase`), and
-//! the scan finds the best piece ending at each chord with a running maximum. The shape is
-//! checked for each chain. Two things break it, both met on a "snake" of corridors with a vertex
-//! at every lattice point of the boundary (a raster outline): the chain's end chords, where its
-//! line leaves the pocketed wall and meets the boundary anywhere (so the staircase is the chain
-//! without up to two chords at each end, and the pieces with those chords are listed as units:
-//! O(L)); and the place where the circle is cut into a line, if it falls in a pocket (each
-//! component is cut through the pockets of the fewest chain chords, inner ones first, then where
-//! its chords' spans sum to the least: `shortest_cut`). A chain that is still not a staircase
-//! has all its pieces listed (O(L^2) units; before both fixes a 3 x 1000-column snake's wall
-//! chains were, and step 3 took 11 s instead of 0.3 s).
+//! Bound: O(K alpha(K)) for the components, then one scan per unit and staircase gap: O(sum of
+//! spans), near-linear when chords are local, O(K^2) when many long chords nest in one crossing
+//! component (the triangles across a long corridor), which the levels cut down. Memory O(K) plus
+//! the ranges asked for with their values and the levels' matrices (at most 24 x 24 each).
 //!
-//! The pieces that are units (those with an irregular end chord, and all pieces of a chain
-//! that is no staircase) are valued from the piece one chord shorter: only the gaps the new
-//! chord's endpoints split or make are asked for (`Sub::list_units`), O(1) ranges per piece
-//! instead of O(L).
-//!
-//! Complexity: O(K alpha(K)) for the components; then O(K) units and staircase gaps, each valued
-//! by one scan of its span (in endpoint positions of its component): O(sum of spans), which is
-//! Valiente's O(total chord length), near-linear when chords are local, O(K^2) when many long
-//! chords nest inside each other in one crossing component (the triangles across a long
-//! corridor: the "bars" and "snake" benchmarks of `docs/benchmarks.md`). That case is what
-//! [`super::ladder`] removes: a range asked for with few values read across its ends is a
-//! level, its scan a max-plus matrix built once, and every longer range jumps over it. On bars
-//! the positions scanned per position stay flat (50 to 64 from 100 to 1600 columns, against
-//! 150 to 2900 for plain scans); on the snake they grow about as the square root of the length
-//! (bundles of long diagonal chords cross every cut). Memory O(K) plus the ranges asked for
-//! with their values and the levels' matrices (at most 24 x 24 each, a level only where its
-//! own positions pay for a product).
-//! Output-sensitive circle-graph algorithms (Nash & Gregg 2010, O(K min(d, alpha))) do not help
-//! with the nested case (density and independence number both grow with K).
-//!
-//! The scans are the cost, so they read and write little: the units are indexed by end position
-//! in one flat array, sorted by start within a position (a scan of `a..=b` stops at the first
-//! unit starting before `a`), and a scan records only the best value before each position. Each
-//! range asked for is first tightened: first positions where no unit ending within it starts,
-//! and last positions where no unit starting within it ends, are dropped (the same units lie
-//! within, so the value is the same; a range with none is not scanned). All the ranges the jobs
-//! will ask for are listed first, by start: a scan of `a..=b` then also answers every listed
-//! range `a..=c` with `c < b` (everything inside it is inside `a..=b`, so valued already); a
-//! start is scanned again only for a longer range. Together these scan a fifth fewer positions
-//! on bars, and cut this step on the Hilbert fixture from 62 to 24 million instructions. The
-//! reconstruction scans the gaps of the chosen units again (jumping the levels inside) and
-//! walks back over those values: where the best grows at a position, a unit or staircase piece
-//! ending there gives the new value (for a piece, its first chord is found by summing back
-//! along the chain); a value inside a jumped level is found by scanning that level again from
-//! the values saved at the jump.
-//!
-//! Exact reductions before the scans (a simplicial triangle, e.g. one of degree 0 or 1 in the
-//! dependency graph, is in some maximum independent set; a triangle whose closed neighbourhood
-//! contains a neighbour's is not needed) were measured and not kept: on bars most triangles
-//! depend on more than 20 others (each rung is crossed by the long 3b-chains along the
-//! corridor's walls), the rules remove about 5% of them and the crossing component stays whole;
-//! on maze the components are small already.
+//! The reasoning in full, the staircase shape and where it breaks, the economies of the scans and
+//! what was tried and dropped: docs/algorithms.md, "Step 3 in detail".
 
 // The 3b-chains moved to their own module; their old paths stay.
 pub use super::chains::{chains, is_3b_pair, Chains};
@@ -596,50 +541,12 @@ impl Sub<'_> {
         table: &mut Table,
         jobs: &mut Vec<Queued>,
     ) {
-        let path = self.chains.paths.get(chain);
-        let n = path.len();
+        let n = self.chains.paths.get(chain).len();
         let first_unit = table.units.len();
-        let mut push = |table: &mut Table, first: usize, last: usize, pred: u32, deltas: &[_]| {
-            let k = table.units.len();
-            let (mut lo, mut hi) = (usize::MAX, 0);
-            let chords: &[usize] = if pred == NONE {
-                &path[first..=last]
-            } else {
-                let u = &table.units[pred as usize];
-                (lo, hi) = (u.lo as usize, u.hi as usize);
-                if last > u.last as usize {
-                    &path[last..=last]
-                } else {
-                    &path[first..=first]
-                }
-            };
-            for &t in chords {
-                let (l, r) = self.chord(t);
-                (lo, hi) = (lo.min(l), hi.max(r));
-            }
-            let start = table.deltas.len() as u32;
-            table.deltas.extend_from_slice(deltas);
-            jobs.push((
-                (hi - lo) as u32,
-                0,
-                (last - first) as u32,
-                Job::Unit(k as u32),
-            ));
-            table.units.push(Unit {
-                chain: chain as u32,
-                first: first as u32,
-                last: last as u32,
-                lo: lo as u32,
-                hi: hi as u32,
-                pred,
-                deltas: start..table.deltas.len() as u32,
-            });
-            k as u32
-        };
         if !self.method.staircases {
             for first in 0..n {
                 for last in first..n {
-                    push(table, first, last, NONE, &[]);
+                    self.push_unit(chain, (first, last), NONE, &[], table, jobs);
                 }
             }
             return;
@@ -649,30 +556,118 @@ impl Sub<'_> {
         let plain = table.units.len() as u32;
         for first in 0..n {
             for last in first..n.min(first + 2) {
-                push(table, first, last, NONE, &[]);
+                self.push_unit(chain, (first, last), NONE, &[], table, jobs);
             }
         }
-        let pair = |first: usize| plain + 2 * first as u32 + 1;
-        // Growing `first..=last` from the pair, for each `first` outside the core: the unit of
-        // `(first, last)` is `grown + last - first - 2` for that family's `grown`.
+        let families = self.grow_rightwards(chain, &core, plain, table, jobs);
+        self.grow_leftwards(chain, &core, plain, &families, table, jobs);
+        debug_assert!(table.units[first_unit..].iter().all(|u| u.pred == NONE
+            || (
+                table.units[u.pred as usize].first,
+                table.units[u.pred as usize].last
+            ) == if core.contains(&(u.first as usize)) {
+                (u.first + 1, u.last)
+            } else {
+                (u.first, u.last - 1)
+            }));
+    }
+
+    /// Lists the unit of piece `first..=last` of 3b-chain `chain` and its job: valued from all
+    /// its gaps (`pred` is `NONE`), or from unit `pred`, one chord shorter, and the gaps
+    /// `deltas` change. Returns its number.
+    fn push_unit(
+        &self,
+        chain: usize,
+        (first, last): (usize, usize),
+        pred: u32,
+        deltas: &[(u32, u32, bool)],
+        table: &mut Table,
+        jobs: &mut Vec<Queued>,
+    ) -> u32 {
+        let path = self.chains.paths.get(chain);
+        let k = table.units.len();
+        let (mut lo, mut hi) = (usize::MAX, 0);
+        let chords: &[usize] = if pred == NONE {
+            &path[first..=last]
+        } else {
+            let u = &table.units[pred as usize];
+            (lo, hi) = (u.lo as usize, u.hi as usize);
+            if last > u.last as usize {
+                &path[last..=last]
+            } else {
+                &path[first..=first]
+            }
+        };
+        for &t in chords {
+            let (l, r) = self.chord(t);
+            (lo, hi) = (lo.min(l), hi.max(r));
+        }
+        let start = table.deltas.len() as u32;
+        table.deltas.extend_from_slice(deltas);
+        jobs.push((
+            (hi - lo) as u32,
+            0,
+            (last - first) as u32,
+            Job::Unit(k as u32),
+        ));
+        table.units.push(Unit {
+            chain: chain as u32,
+            first: first as u32,
+            last: last as u32,
+            lo: lo as u32,
+            hi: hi as u32,
+            pred,
+            deltas: start..table.deltas.len() as u32,
+        });
+        k as u32
+    }
+
+    /// Growing `first..=last` from the pair (unit `plain + 2 first + 1`), for each `first`
+    /// outside the core: the unit of `(first, last)` is `grown + last - first - 2` for that
+    /// family's `(first, grown)`, returned.
+    fn grow_rightwards(
+        &self,
+        chain: usize,
+        core: &std::ops::Range<usize>,
+        plain: u32,
+        table: &mut Table,
+        jobs: &mut Vec<Queued>,
+    ) -> Vec<(usize, u32)> {
+        let path = self.chains.paths.get(chain);
+        let n = path.len();
         let mut families: Vec<(usize, u32)> = Vec::new();
         let mut deltas = Vec::new();
         for first in (0..n).filter(|f| !core.contains(f)) {
             families.push((first, table.units.len() as u32));
             let mut growing = Growing::new(1, &path[first..(first + 2).min(n)], |t| self.chord(t));
-            let mut pred = pair(first);
+            let mut pred = plain + 2 * first as u32 + 1;
             for (last, &t) in path.iter().enumerate().skip(first + 2) {
                 deltas.clear();
                 growing.add(self.chord(t), &mut deltas);
-                pred = push(table, first, last, pred, &deltas);
+                pred = self.push_unit(chain, (first, last), pred, &deltas, table, jobs);
             }
         }
-        // Growing `first..=last` leftwards into the core, for each `last` after it (not when
-        // there is no core: every piece is listed above then).
+        families
+    }
+
+    /// Growing `first..=last` leftwards into the core, for each `last` after it (not when there
+    /// is no core: every piece is listed by [`Self::grow_rightwards`] then).
+    fn grow_leftwards(
+        &self,
+        chain: usize,
+        core: &std::ops::Range<usize>,
+        plain: u32,
+        families: &[(usize, u32)],
+        table: &mut Table,
+        jobs: &mut Vec<Queued>,
+    ) {
+        let path = self.chains.paths.get(chain);
+        let n = path.len();
+        let mut deltas = Vec::new();
         for last in (core.end..n).filter(|&last| !core.is_empty() && last >= core.start + 2) {
             let top = (last - 2).min(core.end - 1);
             let mut pred = if top + 1 == last - 1 {
-                pair(top + 1)
+                plain + 2 * (top + 1) as u32 + 1
             } else {
                 // `(core.end, last)`, grown from the pair of `core.end` (outside the core).
                 let (_, grown) = families
@@ -685,18 +680,9 @@ impl Sub<'_> {
             for first in (core.start..=top).rev() {
                 deltas.clear();
                 growing.add(self.chord(path[first]), &mut deltas);
-                pred = push(table, first, last, pred, &deltas);
+                pred = self.push_unit(chain, (first, last), pred, &deltas, table, jobs);
             }
         }
-        debug_assert!(table.units[first_unit..].iter().all(|u| u.pred == NONE
-            || (
-                table.units[u.pred as usize].first,
-                table.units[u.pred as usize].last
-            ) == if core.contains(&(u.first as usize)) {
-                (u.first + 1, u.last)
-            } else {
-                (u.first, u.last - 1)
-            }));
     }
 
     /// A maximum independent set of this component.
@@ -747,51 +733,7 @@ impl Sub<'_> {
                 continue;
             }
             chain_seen[chain] = component;
-            let path = self.chains.paths.get(chain);
-            let stair = if self.method.staircases {
-                Staircase::find(path, |t| self.chord(t))
-            } else {
-                None
-            };
-            // Pieces of three or more chords of the staircase core are valued in the scans;
-            // every other piece is a unit.
-            match &stair {
-                None => effort.longest_listed = effort.longest_listed.max(path.len()),
-                Some((core, _)) if core.len() < path.len() => {
-                    effort.longest_trimmed = effort.longest_trimmed.max(path.len());
-                }
-                Some(_) => {}
-            }
-            let (core, stair) = match stair {
-                Some((core, stair)) => (core, Some(stair)),
-                None => (0..0, None),
-            };
-            self.list_units(chain, core, &mut table, &mut jobs);
-            if let Some(stair) = stair {
-                let s = table.stairs.len();
-                let l = stair.tris.len();
-                let span = |(x, y): (usize, usize)| (y - x) as u32;
-                let s32 = s as u32;
-                for f in 0..l - 2 {
-                    let [g0, g1] = stair.left_gaps(f);
-                    jobs.push((span(g0).max(span(g1)), 1, 0, Job::Left(s32, f as u32)));
-                }
-                for j in 2..l - 1 {
-                    jobs.push((span(stair.inner_gap(j)), 1, 0, Job::Inner(s32, j as u32)));
-                }
-                for r in 2..l {
-                    let [g0, g1] = stair.right_gaps(r);
-                    jobs.push((span(g0).max(span(g1)), 1, 0, Job::Right(s32, r as u32)));
-                }
-                for (i, &(_, hi)) in stair.ends.iter().enumerate().skip(2) {
-                    table.events[hi] = StairEvent {
-                        stair: s as u32,
-                        i: i as u32,
-                        first: stair.ends[i - 2].0 as u32,
-                    };
-                }
-                table.stairs.push(stair);
-            }
+            self.list_chain(chain, &mut table, &mut jobs, effort);
         }
         table.index_ending(p);
         let mut scan = Scan {
@@ -806,6 +748,7 @@ impl Sub<'_> {
         scan.asked_value = vec![UNKNOWN; ranges.len()];
         effort.asked += ranges.len();
         let mut ladders = Ladders::choose(p, self.method.ladders, &ranges, || table.readers());
+        // Every job valued in order: the sum of the best values in the ranges it asks for.
         for (n, &(_, _, _, job)) in jobs.iter().enumerate() {
             let asked = from[n] as usize..from[n + 1] as usize;
             let mut inside: i64 = 0;
@@ -813,31 +756,85 @@ impl Sub<'_> {
                 let v = self.best_value(&table, &mut ladders, &mut scan, a as usize, b as usize);
                 inside += if minus { -(v as i64) } else { v as i64 };
             }
-            let count = |u: &Unit| u.length() as i64 + 1;
-            if let Job::Unit(k) = job {
-                let u = &table.units[k as usize];
-                if u.pred != NONE {
-                    // The shorter piece's gaps, with the changes listed for this one.
-                    let shorter = &table.units[u.pred as usize];
-                    let value = table.ending[table.entry_of[u.pred as usize] as usize].1;
-                    inside += value as i64 - count(shorter);
-                }
-            }
-            let inside = inside as u32;
-            match job {
-                Job::Unit(k) => {
-                    let u = &table.units[k as usize];
-                    table.ending[table.entry_of[k as usize] as usize].1 = count(u) as u32 + inside;
-                }
-                Job::Left(s, f) => table.stairs[s as usize].left[f as usize] = inside,
-                Job::Inner(s, j) => table.stairs[s as usize].inner[j as usize] = inside,
-                Job::Right(s, r) => table.stairs[s as usize].right[r as usize] = inside,
-            }
+            set_value(&mut table, job, inside);
         }
+        let chosen = self.reconstruct(&table, &mut ladders, &mut scan, &mut buffers);
+        effort.staircases += table.stairs.len();
+        effort.scanned += scan.scanned;
+        effort.levels += scan.built;
+        chosen
+    }
+
+    /// The units of 3b-chain `chain` and, when it is a staircase, its staircase's jobs (its
+    /// `left`, `inner` and `right` values) and scan events.
+    fn list_chain(
+        &self,
+        chain: usize,
+        table: &mut Table,
+        jobs: &mut Vec<Queued>,
+        effort: &mut Effort,
+    ) {
+        let path = self.chains.paths.get(chain);
+        let stair = if self.method.staircases {
+            Staircase::find(path, |t| self.chord(t))
+        } else {
+            None
+        };
+        // Pieces of three or more chords of the staircase core are valued in the scans;
+        // every other piece is a unit.
+        match &stair {
+            None => effort.longest_listed = effort.longest_listed.max(path.len()),
+            Some((core, _)) if core.len() < path.len() => {
+                effort.longest_trimmed = effort.longest_trimmed.max(path.len());
+            }
+            Some(_) => {}
+        }
+        let (core, stair) = match stair {
+            Some((core, stair)) => (core, Some(stair)),
+            None => (0..0, None),
+        };
+        self.list_units(chain, core, table, jobs);
+        let Some(stair) = stair else {
+            return;
+        };
+        let s = table.stairs.len();
+        let l = stair.tris.len();
+        let span = |(x, y): (usize, usize)| (y - x) as u32;
+        let s32 = s as u32;
+        for f in 0..l - 2 {
+            let [g0, g1] = stair.left_gaps(f);
+            jobs.push((span(g0).max(span(g1)), 1, 0, Job::Left(s32, f as u32)));
+        }
+        for j in 2..l - 1 {
+            jobs.push((span(stair.inner_gap(j)), 1, 0, Job::Inner(s32, j as u32)));
+        }
+        for r in 2..l {
+            let [g0, g1] = stair.right_gaps(r);
+            jobs.push((span(g0).max(span(g1)), 1, 0, Job::Right(s32, r as u32)));
+        }
+        for (i, &(_, hi)) in stair.ends.iter().enumerate().skip(2) {
+            table.events[hi] = StairEvent {
+                stair: s as u32,
+                i: i as u32,
+                first: stair.ends[i - 2].0 as u32,
+            };
+        }
+        table.stairs.push(stair);
+    }
+
+    /// The chosen chords, walking back from the whole range: the best units and staircase
+    /// pieces in each range, then the same in each of their gaps.
+    fn reconstruct(
+        &self,
+        table: &Table,
+        ladders: &mut Ladders,
+        scan: &mut Scan,
+        buffers: &mut GapBuffers,
+    ) -> Vec<usize> {
         let mut chosen = Vec::new();
-        let mut ranges = vec![(0, p - 1)];
+        let mut ranges = vec![(0, self.positions.len() - 1)];
         while let Some((a, b)) = ranges.pop() {
-            let picked = self.best_in(&table, &mut ladders, &mut scan, a, b);
+            let picked = self.best_in(table, ladders, scan, a, b);
             for pick in picked {
                 let piece = match pick {
                     Pick::Unit(k) => table.units[k as usize].piece(self.chains),
@@ -846,7 +843,7 @@ impl Sub<'_> {
                     }
                 };
                 chosen.extend(piece);
-                self.gaps(piece, &mut buffers);
+                self.gaps(piece, buffers);
                 ranges.extend(
                     buffers
                         .gaps
@@ -855,9 +852,6 @@ impl Sub<'_> {
                 );
             }
         }
-        effort.staircases += table.stairs.len();
-        effort.scanned += scan.scanned;
-        effort.levels += scan.built;
         chosen
     }
 
@@ -1397,5 +1391,31 @@ impl Table {
             b -= 1;
         }
         Some((a, b))
+    }
+}
+
+/// Records the value of `job`: `inside`, the sum of the best values in the ranges it asked for
+/// (for a unit valued from a shorter piece, that piece's gaps added back); a unit's value adds
+/// its own chords.
+fn set_value(table: &mut Table, job: Job, mut inside: i64) {
+    let count = |u: &Unit| u.length() as i64 + 1;
+    if let Job::Unit(k) = job {
+        let u = &table.units[k as usize];
+        if u.pred != NONE {
+            // The shorter piece's gaps, with the changes listed for this one.
+            let shorter = &table.units[u.pred as usize];
+            let value = table.ending[table.entry_of[u.pred as usize] as usize].1;
+            inside += value as i64 - count(shorter);
+        }
+    }
+    let inside = inside as u32;
+    match job {
+        Job::Unit(k) => {
+            let u = &table.units[k as usize];
+            table.ending[table.entry_of[k as usize] as usize].1 = count(u) as u32 + inside;
+        }
+        Job::Left(s, f) => table.stairs[s as usize].left[f as usize] = inside,
+        Job::Inner(s, j) => table.stairs[s as usize].inner[j as usize] = inside,
+        Job::Right(s, r) => table.stairs[s as usize].right[r as usize] = inside,
     }
 }

@@ -36,7 +36,8 @@ use crate::geom::kernel::Coord;
 use crate::geom::polygon::Polygon;
 use std::time::{Duration, Instant};
 
-/// How long the exact search for polygons with holes runs by default (`--time-limit`).
+/// How long the exact method may run on one polygon by default (`--time-limit`): step 1
+/// without holes, every stage of the search with holes or touching rings.
 pub const DEFAULT_TIME_LIMIT: Duration = Duration::from_secs(10);
 
 /// The minimum triangulation of a polygon, with the default time limit
@@ -249,8 +250,8 @@ fn general_from<P: Coord>(
     })
 }
 
-/// The pairs the dependency graph may compare per try once the deadline has passed: about
-/// 10 ms of work.
+/// The pairs the dependency graph may compare per try once the deadline has passed: a small
+/// fixed amount of work (docs/benchmarks.md).
 pub const LATE_PAIRS: u64 = 1 << 20;
 
 /// The number of distinct middle vertices of `mdts`.

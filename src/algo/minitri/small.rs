@@ -74,8 +74,7 @@ pub fn maximum_independent_set(
 /// on, as a bit set over positions in `component`: those it crosses on the circle, except the
 /// members of its own 3b-chain.
 ///
-/// One sweep along the circle instead of a test of every pair (which was 5% of the batch
-/// benchmark's time): chord ends are distinct positions, and a chord `(a, b)` crosses exactly the
+/// One sweep along the circle instead of a test of every pair (docs/benchmarks.md): chord ends are distinct positions, and a chord `(a, b)` crosses exactly the
 /// chords opened after `a` and still open at `b` (a chord opened before `a` and open at `b`
 /// encloses it). O(k log k) for the ends' order, plus O(1) per crossing.
 fn dependents(circle: &Circle, chains: &Chains, component: &[usize]) -> [u64; SMALL] {

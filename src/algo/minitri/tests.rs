@@ -1061,13 +1061,18 @@ fn a_past_deadline_bounds_step_1_without_holes() {
     assert!(crate::verify::check(&p, &exact).valid);
 }
 
-/// A large polygon is triangulated for step 1 on a second thread while it is validated
-/// (`Polygon::validated`): the mesh taken is the one made afterwards (here through the
+/// A large polygon is triangulated for step 1 on a second thread while the pipeline validates it
+/// (`pipeline::PlainBeside`): the mesh taken is the one made afterwards (here through the
 /// quarter-turned sweep of a wide polygon and the usual one of a tall polygon, with and without
 /// a hole), it is taken once, and an invalid polygon is refused as before.
 #[test]
 fn the_mesh_made_while_validating_is_the_mesh() {
     use crate::test_support::{comb, raw};
+    let beside = |rings: &[&[(i64, i64)]]| {
+        Polygon::from_raw_validated(&raw(rings), &crate::pipeline::PlainBeside)
+            .expect("a valid test polygon")
+            .0
+    };
     let wide = comb(3000, 1, 3); // 12,002 vertices, 6,000 wide and 4 tall
                                  // The overlap needs two threads, whatever the machine running the tests has.
     let pool = rayon::ThreadPoolBuilder::new()
@@ -1086,7 +1091,7 @@ fn the_mesh_made_while_validating_is_the_mesh() {
     ];
     for rings in &cases {
         let rings: Vec<&[(i64, i64)]> = rings.iter().map(Vec::as_slice).collect();
-        let p = pool.install(|| polygon(&rings));
+        let p = pool.install(|| beside(&rings));
         let made = p.take_walking_plain().expect("made while validating");
         assert!(p.take_walking_plain().is_none());
         assert_eq!(crate::algo::plain::polygon(&p), made);
@@ -1102,13 +1107,15 @@ fn the_mesh_made_while_validating_is_the_mesh() {
         .build()
         .unwrap();
     assert!(one
-        .install(|| polygon(&[&wide]))
+        .install(|| beside(&[&wide]))
         .take_walking_plain()
         .is_none());
     // A tooth's top moved below the base: its edges cross the base.
     let mut bad = wide.clone();
     bad[4] = (bad[4].0, -1);
-    assert!(pool.install(|| Polygon::from_raw(&raw(&[&bad]))).is_err());
+    assert!(pool
+        .install(|| Polygon::from_raw_validated(&raw(&[&bad]), &crate::pipeline::PlainBeside))
+        .is_err());
 }
 
 /// The bound on `d` after step 1 was cut short (`triangulate_within`): the maximum independent

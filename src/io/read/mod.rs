@@ -19,7 +19,7 @@
 //! Complexity: linear in the input size.
 
 use crate::geom::decimal::Decimal;
-use std::fmt;
+use std::io::{BufRead, BufReader, Read};
 use std::path::Path;
 
 pub mod csv;
@@ -32,134 +32,7 @@ pub mod vertices;
 pub mod wkb;
 pub mod wkt;
 
-/// A polygon as read: rings of exact coordinates, outer ring first.
-#[derive(Clone, Debug, PartialEq, Eq, Default)]
-pub struct RawPolygon {
-    /// `rings[0]` is the outer boundary, `rings[1..]` the holes; no repeated closing vertex.
-    pub rings: Vec<Vec<[Decimal; 2]>>,
-    /// The Z and M values of its vertices, when its positions have them (`POLYGON Z`,
-    /// `[x, y, z]`, WKB Z/M/ZM); `None` for plain `x y` positions. Triangulation is in x, y
-    /// only; the writers give each output vertex its input vertex's values.
-    pub ordinates: Option<Ordinates>,
-}
-
-/// Which values besides x and y each position of a polygon has.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Dims {
-    /// `x y z`.
-    Z,
-    /// `x y m` (WKT `POLYGON M`, WKB M).
-    M,
-    /// `x y z m`.
-    Zm,
-}
-
-impl Dims {
-    /// The dimensions of a position of `count` numbers (3 or 4), `measured` when its geometry
-    /// is tagged `M` (then 3 numbers are `x y m`); `None` for 2 numbers.
-    pub fn of(count: usize, measured: bool) -> Option<Dims> {
-        match count {
-            3 if measured => Some(Dims::M),
-            3 => Some(Dims::Z),
-            4 => Some(Dims::Zm),
-            _ => None,
-        }
-    }
-
-    /// How many values a vertex has besides x and y (1 or 2).
-    pub fn count(self) -> usize {
-        if self == Dims::Zm {
-            2
-        } else {
-            1
-        }
-    }
-
-    /// Whether the positions have a Z value.
-    pub fn has_z(self) -> bool {
-        self != Dims::M
-    }
-
-    /// Whether the positions have an M value.
-    pub fn has_m(self) -> bool {
-        self != Dims::Z
-    }
-
-    /// The WKT dimension tag: `Z`, `M` or `ZM`.
-    pub fn tag(self) -> &'static str {
-        match self {
-            Dims::Z => "Z",
-            Dims::M => "M",
-            Dims::Zm => "ZM",
-        }
-    }
-}
-
-/// A Z or M value as read: its exact decimal, or `None` for NaN (which WKT and WKB use for
-/// "no value").
-pub type Ordinate = Option<Decimal>;
-
-/// The Z and M values of a polygon's vertices, in input vertex numbering (the order of the
-/// vertices over the rings, without the closing ones).
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Ordinates {
-    /// Which values each vertex has.
-    pub dims: Dims,
-    /// `dims.count()` values per vertex (Z before M), vertex after vertex.
-    pub values: Vec<Ordinate>,
-}
-
-impl Ordinates {
-    /// No values yet, of `dims`.
-    pub fn new(dims: Dims) -> Ordinates {
-        Ordinates {
-            dims,
-            values: Vec::new(),
-        }
-    }
-
-    /// The Z value of input vertex `vertex` (`None` without Z, or out of range).
-    pub fn z(&self, vertex: usize) -> Option<&Ordinate> {
-        self.dims
-            .has_z()
-            .then(|| self.values.get(vertex * self.dims.count()))
-            .flatten()
-    }
-
-    /// The M value of input vertex `vertex` (`None` without M, or out of range).
-    pub fn m(&self, vertex: usize) -> Option<&Ordinate> {
-        let k = self.dims.count();
-        self.dims
-            .has_m()
-            .then(|| self.values.get(vertex * k + k - 1))
-            .flatten()
-    }
-
-    /// Vertex `vertex`'s values as WKT writes them after `x y`: ` 5` or ` 5 7` (NaN for a
-    /// missing value); empty when out of range.
-    pub fn wkt(&self, vertex: usize) -> String {
-        let k = self.dims.count();
-        let mut out = String::new();
-        for value in self.values.iter().skip(vertex * k).take(k) {
-            out.push(' ');
-            match value {
-                Some(d) => out.push_str(&d.to_string()),
-                None => out.push_str("NaN"),
-            }
-        }
-        out
-    }
-
-    /// Vertex `vertex`'s Z as a JSON number after `x, y` in a GeoJSON position: `, 5`
-    /// (`, null` for NaN); empty without Z. GeoJSON positions have no M.
-    pub fn geojson(&self, vertex: usize) -> String {
-        match self.z(vertex) {
-            Some(Some(z)) => format!(", {z}"),
-            Some(None) => ", null".to_string(),
-            None => String::new(),
-        }
-    }
-}
+pub use crate::raw::{Dims, Location, Ordinate, Ordinates, ParseError, RawPolygon};
 
 /// An input format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -174,49 +47,6 @@ pub enum Format {
     Wkb,
     /// CSV with a `WKT` geometry column, as `--to csv` writes it ([`csv`]).
     Csv,
-}
-
-/// A position in the input text, both 1-based.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Location {
-    /// Line number, from 1.
-    pub line: usize,
-    /// Column in characters, from 1.
-    pub column: usize,
-}
-
-impl fmt::Display for Location {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "line {}, column {}", self.line, self.column)
-    }
-}
-
-/// Why an input could not be read. `Display`: `line 3, column 14: expected ')' but found 'x'`.
-#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-#[error("{}{message}", location.map(|l| format!("{l}: ")).unwrap_or_default())]
-pub struct ParseError {
-    /// Where the problem is, when the format allows saying so.
-    pub location: Option<Location>,
-    /// What is wrong, in words a user can act on (lowercase, no trailing period).
-    pub message: String,
-}
-
-impl ParseError {
-    /// An error at a known position.
-    pub fn at(location: Location, message: impl Into<String>) -> ParseError {
-        ParseError {
-            location: Some(location),
-            message: message.into(),
-        }
-    }
-
-    /// An error without position.
-    pub fn new(message: impl Into<String>) -> ParseError {
-        ParseError {
-            location: None,
-            message: message.into(),
-        }
-    }
 }
 
 /// The 1-based line and column of byte offset `offset` in `text`.
@@ -390,6 +220,90 @@ pub fn foreign(start: &[u8]) -> Option<ParseError> {
     )))
 }
 
+/// An input opened ([`open`]): how its polygons are to be read, decided on its name, its first
+/// bytes (after gzip decompression) and the format asked for.
+pub(crate) enum Opened {
+    /// Read whole (WKB, WKT, a vertex list, CSV): every part in input order, with its SRID.
+    Parts(wkb::PartsAndSrids),
+    /// GeoJSON Lines, to be read line by line from this reader.
+    Lines(BufReader<Box<dyn Read>>),
+    /// GeoJSON, to be streamed feature by feature from this reader.
+    GeoJson(BufReader<Box<dyn Read>>),
+    /// GeoJSON found by its content once read whole, to be streamed from this text.
+    GeoJsonText(String),
+}
+
+/// The one place an input is opened: `reader` decompressed when gzip (by its magic bytes), a
+/// format minitri does not read named ([`foreign`]), the format taken from `from`, else decided
+/// by the name's extension (`path`, `None` for standard input) and the first bytes ([`sniff`]),
+/// else on the whole text ([`detect`]); then read whole (at most `limit` bytes, decompressed
+/// ones for gzip; at most `max_vertices` vertices a polygon) or left to be read line by line or
+/// streamed (GeoJSON).
+///
+/// # Errors
+/// [`limits::NotRead`]: the reader failed, or the input is not one minitri reads (binary
+/// data, a foreign format, too large, unreadable as its format).
+pub(crate) fn open(
+    reader: Box<dyn Read>,
+    path: Option<&Path>,
+    from: Option<Format>,
+    limit: u64,
+    max_vertices: usize,
+) -> Result<Opened, limits::NotRead> {
+    use limits::NotRead;
+    let mut reader = BufReader::with_capacity(1 << 16, reader);
+    // `a.geojson.gz`: the extension before `.gz` decides.
+    let extension = path.and_then(extension_of);
+    let mut gzip = false;
+    let start = loop {
+        let start = reader.fill_buf().map_err(NotRead::Io)?;
+        // gzip by its magic bytes: decompressed as it is read, then judged like any input.
+        if gzip || !gzip::is_gzip(start) {
+            break start;
+        }
+        gzip = true;
+        reader = BufReader::with_capacity(1 << 16, Box::new(gzip::decompress(reader)));
+    };
+    if let Some(error) = foreign(start) {
+        return Err(NotRead::Parse(error));
+    }
+    let format = from.or_else(|| sniff(extension, start));
+    // Read chunk by chunk, at most `limit` bytes (decompressed ones, for gzip).
+    let size = path
+        .filter(|_| !gzip)
+        .and_then(|path| std::fs::metadata(path).map(|m| m.len()).ok())
+        .unwrap_or(0);
+    let note = if gzip { " decompressed" } else { "" };
+    if format == Some(Format::Wkb) {
+        let bytes = limits::read_bytes(reader, limit, size, note)?;
+        return wkb::read_parts_srid_within(&bytes, max_vertices)
+            .map(Opened::Parts)
+            .map_err(NotRead::Parse);
+    }
+    if format == Some(Format::GeoJson) {
+        if lines_by_extension(extension) || geojson_stream::looks_line_delimited(start) {
+            return Ok(Opened::Lines(reader));
+        }
+        // Binary data is named as such, not as a JSON syntax error (judged on the start only).
+        if let Some(error) = not_text(start, false) {
+            return Err(NotRead::Parse(error));
+        }
+        return Ok(Opened::GeoJson(reader));
+    }
+    // Read chunk by chunk, stopping at the first byte that cannot be text (limits.rs).
+    let text = limits::read_text_noted(reader, limit, size, note)?;
+    let format = format.unwrap_or_else(|| detect(extension, &text));
+    let parts = match format {
+        Format::GeoJson => return Ok(Opened::GeoJsonText(text)),
+        Format::Wkt => wkt::read_parts_srid_within(&text, max_vertices),
+        _ => read_parts_within(format, &text, max_vertices).map(|parts| {
+            let srids = vec![None; parts.len()];
+            (parts, srids)
+        }),
+    };
+    parts.map(Opened::Parts).map_err(NotRead::Parse)
+}
+
 /// The first line of `text` that is neither blank nor a `#` comment, without leading blanks.
 fn first_meaningful(text: &str) -> Option<&str> {
     text.lines()
@@ -397,17 +311,14 @@ fn first_meaningful(text: &str) -> Option<&str> {
         .find(|l| !l.is_empty() && !l.starts_with('#'))
 }
 
-/// The file extensions of the input formats (lowercase), the one list that both the readers
-/// ([`by_extension`]) and the walk of a directory use: a file found in a directory is read when
-/// its name ends in one of these, or in one of these and `.gz` (gzip, [`gzip`]).
-pub const EXTENSIONS: &[&str] = &[
-    "wkt", "geojson", "json", "geojsonl", "geojsons", "ndjson", "jsonl", "txt", "xy", "vertices",
-    "wkb",
-];
+/// The file extensions of the input formats (lowercase), from the one table of extensions of
+/// the readers and writers: a file found in a directory is read when its name ends in one of
+/// these, or in one of these and `.gz` (gzip, [`gzip`]).
+pub const EXTENSIONS: &[&str] = crate::io::extension::INPUT;
 
 /// Of [`EXTENSIONS`], those of GeoJSON Lines (read line by line, whatever their content looks
 /// like); the GeoJSON Lines writer's extensions are the same.
-pub const LINES_EXTENSIONS: &[&str] = &["geojsonl", "geojsons", "ndjson", "jsonl"];
+pub const LINES_EXTENSIONS: &[&str] = crate::io::extension::LINES;
 
 /// The format a file extension stands for, if any (one of [`EXTENSIONS`], any case).
 ///
@@ -420,21 +331,14 @@ pub const LINES_EXTENSIONS: &[&str] = &["geojsonl", "geojsons", "ndjson", "jsonl
 /// assert_eq!(by_extension(Some("gz")), None);
 /// ```
 pub fn by_extension(extension: Option<&str>) -> Option<Format> {
-    let extension = extension?.to_ascii_lowercase();
-    if !EXTENSIONS.contains(&extension.as_str()) {
-        return None;
-    }
-    Some(match extension.as_str() {
-        "wkt" => Format::Wkt,
-        "txt" | "xy" | "vertices" => Format::Vertices,
-        "wkb" => Format::Wkb,
-        _ => Format::GeoJson,
-    })
+    crate::io::extension::find(extension?)?.read
 }
 
 /// Is `extension` one of GeoJSON Lines' ([`LINES_EXTENSIONS`], any case)?
 pub fn lines_by_extension(extension: Option<&str>) -> bool {
-    extension.is_some_and(|e| LINES_EXTENSIONS.contains(&e.to_ascii_lowercase().as_str()))
+    extension
+        .and_then(crate::io::extension::find)
+        .is_some_and(|e| e.lines)
 }
 
 /// The extension that decides a file's format: its last one, or for a gzip-compressed name

@@ -443,7 +443,7 @@ fn type_name(geometry: &Wkb) -> &'static str {
 /// Polygon `index` as exact decimals (the shortest decimal of each double).
 fn exact(polygon: &geo_types::Polygon<f64>, index: usize) -> Result<RawPolygon, ParseError> {
     crate::geo::raw_polygon(polygon, index).map_err(|e| match e {
-        crate::pipeline::Error::Parse(e) => e,
+        crate::outcome::Error::Parse(e) => e,
         other => ParseError::new(other.to_string()),
     })
 }

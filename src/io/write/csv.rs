@@ -31,7 +31,7 @@
 use super::group::{Records, Rendered, Summary};
 use super::wkt::{self, is_feature};
 use super::{Renderer, Sink};
-use crate::pipeline::Outcome;
+use crate::outcome::Outcome;
 use std::io::{self, Write};
 
 /// The header row's columns, in order.

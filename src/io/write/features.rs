@@ -39,7 +39,7 @@ use super::group::{Records, Rendered, Summary};
 use super::json::json;
 use super::{Renderer, Sink};
 use crate::feature::{properties_with, Collection};
-use crate::pipeline::Outcome;
+use crate::outcome::Outcome;
 use serde_json::Value;
 use std::fmt::Write as _;
 use std::io::{self, Write};

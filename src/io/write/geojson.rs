@@ -37,7 +37,7 @@ use crate::algo::Triangulation;
 use crate::geom::kernel::line_through;
 use crate::geom::kernel::Coord;
 use crate::geom::polygon::Polygon;
-use crate::pipeline::Outcome;
+use crate::outcome::Outcome;
 use std::io::{self, Write};
 
 /// Writes the FeatureCollection incrementally, one polygon's features at a time.

@@ -13,7 +13,7 @@
 //!
 //! Memory: one record's outcomes.
 
-use crate::pipeline::Outcome;
+use crate::outcome::Outcome;
 use std::sync::Arc;
 
 /// One outcome with the text a writer made of it ahead ([`super::Sink::renderer`]).

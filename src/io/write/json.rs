@@ -11,7 +11,7 @@
 
 use crate::geom::kernel::Coord;
 use crate::geom::polygon::Polygon;
-use crate::pipeline::Outcome;
+use crate::outcome::Outcome;
 use serde::Serialize;
 use std::io::{self, Write};
 

@@ -13,7 +13,7 @@ pub mod json;
 pub mod svg;
 pub mod wkt;
 
-use crate::pipeline::Outcome;
+use crate::outcome::Outcome;
 use std::io::{self, Write};
 
 /// An output format.
@@ -39,29 +39,24 @@ pub enum OutputFormat {
 
 impl OutputFormat {
     /// The format a file name's extension stands for (`None` for an unknown one): `json`,
-    /// `geojson`, `geojsonl` (or `geojsons`, `ndjson`, `jsonl`), `wkt`, `csv`, `svg`.
+    /// `geojson`, `geojsonl` (or `geojsons`, `ndjson`, `jsonl`), `wkt`, `csv`, `svg`; from the
+    /// one table of extensions (`io/extension.rs`).
     pub fn from_extension(extension: &str) -> Option<OutputFormat> {
-        Some(match extension.to_ascii_lowercase().as_str() {
-            "json" => OutputFormat::Json,
-            "geojson" => OutputFormat::GeoJson,
-            e if crate::io::read::LINES_EXTENSIONS.contains(&e) => OutputFormat::GeoJsonLines,
-            "wkt" => OutputFormat::Wkt,
-            "csv" => OutputFormat::Csv,
-            "svg" => OutputFormat::Svg(svg::Style::default()),
-            _ => return None,
-        })
+        crate::io::extension::find(extension)?.write
     }
 
-    /// The file extension of this format, without the dot.
+    /// The file extension of this format, without the dot: its first row in the table of
+    /// extensions (per-triangle GeoJSON: GeoJSON's; any SVG style: SVG's).
     pub fn extension(self) -> &'static str {
-        match self {
-            OutputFormat::Json => "json",
-            OutputFormat::GeoJson | OutputFormat::GeoJsonTriangles => "geojson",
-            OutputFormat::GeoJsonLines => "geojsonl",
-            OutputFormat::Wkt => "wkt",
-            OutputFormat::Csv => "csv",
-            OutputFormat::Svg(_) => "svg",
-        }
+        let format = match self {
+            OutputFormat::GeoJsonTriangles => OutputFormat::GeoJson,
+            OutputFormat::Svg(_) => OutputFormat::Svg(svg::Style::default()),
+            other => other,
+        };
+        crate::io::extension::TABLE
+            .iter()
+            .find(|e| e.write == Some(format))
+            .map_or("json", |e| e.name)
     }
 
     /// A sink writing this format to `out`.

@@ -51,7 +51,7 @@
 use crate::algo::{Pseudotriangulation, Triangulation};
 use crate::geom::kernel::Point;
 use crate::geom::polygon::{AnyPolygon, Polygon};
-use crate::pipeline::Outcome;
+use crate::outcome::Outcome;
 use crate::verify::Faults;
 use std::collections::HashMap;
 use std::fmt;

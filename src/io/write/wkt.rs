@@ -47,7 +47,7 @@
 
 use super::group::{Records, Rendered};
 use super::{Renderer, Sink};
-use crate::pipeline::Outcome;
+use crate::outcome::Outcome;
 use std::io::{self, Write};
 
 /// Writes one `GEOMETRYCOLLECTION` line per input feature.
