@@ -84,8 +84,10 @@
 //! corridor's walls), the rules remove about 5% of them and the crossing component stays whole;
 //! on maze the components are small already.
 
-// The 3b-chains moved to their own module; their old paths stay.
-pub use super::chains::{chains, is_3b_pair, Chains};
+// The 3b-chains moved to their own module; their old paths stay (for the tests and examples).
+pub use super::chains::Chains;
+#[cfg(feature = "internals")]
+pub use super::chains::{chains, is_3b_pair};
 use super::circle::Circle;
 use super::ladder::{clamp, LadderPolicy, Ladders, Level, Reader, Slot, NEG};
 use super::lists::Lists;
