@@ -98,60 +98,50 @@ macro_rules! order_from_cmp {
     };
 }
 
-// The internal modules: crate-private, or, with the `internals` feature, public but hidden from
-// the documentation, for the command line, the integration tests, the benchmarks and the fuzz
-// targets, which reach below the curated API. They are no API: nothing under them is stable
-// (docs/library.md). `batch` (and `io::write`) serve the command line alone, so a library build
-// without the feature does not compile them. (Written out, not by a macro: a `#[macro_export]` macro inside a
-// macro-expanded module could not be named by path.)
-#[cfg(feature = "internals")]
-#[doc(hidden)]
-pub mod algo;
-#[cfg(not(feature = "internals"))]
-#[allow(dead_code)] // What only the command line, the tests and the benchmarks use.
-pub(crate) mod algo;
+/// Declares internal modules: crate-private, or, with the `internals` feature, public but hidden
+/// from the documentation, for the command line, the integration tests, the benchmarks and the
+/// fuzz targets, which reach below the curated API. They are no API: nothing under them is stable
+/// (docs/library.md). Without the feature, what only those use is dead code here.
+macro_rules! internal {
+    ($($name:ident),*) => {$(
+        #[cfg(feature = "internals")]
+        #[doc(hidden)]
+        pub mod $name;
+        #[cfg(not(feature = "internals"))]
+        #[allow(dead_code)]
+        pub(crate) mod $name;
+    )*};
+}
+
+internal!(algo, feature, io, pipeline);
+// `batch` (like `io::write`) serves the command line alone: a library build without the feature
+// does not compile it.
 #[cfg(feature = "internals")]
 #[doc(hidden)]
 pub mod batch;
-#[cfg(feature = "internals")]
-#[doc(hidden)]
-pub mod feature;
-#[cfg(not(feature = "internals"))]
-#[allow(dead_code)] // What only the command line, the tests and the benchmarks use.
-pub(crate) mod feature;
 pub mod geo;
+// As `internal!` would declare it; written out, since a `#[macro_export]` macro (`with_polygon!`,
+// in `geom/polygon.rs`) inside a macro-expanded module could not be named by path.
 #[cfg(feature = "internals")]
 #[doc(hidden)]
 pub mod geom;
 #[cfg(not(feature = "internals"))]
-#[allow(dead_code)] // What only the command line, the tests and the benchmarks use.
+#[allow(dead_code)]
 pub(crate) mod geom;
-#[cfg(feature = "internals")]
-#[doc(hidden)]
-pub mod io;
-#[cfg(not(feature = "internals"))]
-#[allow(dead_code)] // What only the command line, the tests and the benchmarks use.
-pub(crate) mod io;
-#[cfg(feature = "internals")]
-#[doc(hidden)]
-pub mod pipeline;
-#[cfg(not(feature = "internals"))]
-#[allow(dead_code)] // What only the command line, the tests and the benchmarks use.
-pub(crate) mod pipeline;
 #[cfg(test)]
 pub(crate) mod test_support;
 pub mod verify;
 
 pub use algo::{
-    Algorithm, Pseudotriangle, Pseudotriangulation, Pseudotriangulator, Stopped, TriangulateError,
-    Triangulation, Triangulator,
+    Algorithm, HullCounts, Pseudotriangle, Pseudotriangulation, Pseudotriangulator, Stopped,
+    TriangulateError, Triangulation, Triangulator,
 };
-pub use feature::{Collection, Feature, Identity};
+pub use feature::{Collection, Feature, Geometry as FeatureGeometry, Identity};
 pub use geom::decimal::{Decimal, NumberError};
-pub use geom::kernel::{Coord, Point};
-pub use geom::polygon::{AnyPolygon, Polygon, Ring, Warning};
+pub use geom::kernel::{Coord, Point, SegmentContact};
+pub use geom::polygon::{AnyPolygon, Grid, Polygon, Ring, Warning};
 pub use geom::repair::{Repair, RepairKind};
-pub use geom::validate::InvalidPolygon;
+pub use geom::validate::{EdgeContact, InvalidPolygon};
 pub use geom::wide::WidePoint;
 pub use io::read::{
     read, read_parts, Dims, Format, Location, Ordinate, Ordinates, ParseError, RawPolygon,
