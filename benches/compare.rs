@@ -35,7 +35,7 @@
 mod common;
 
 use common::Shape;
-use minitri::{triangulate_with, Algorithm, Polygon, RawPolygon};
+use minitri::{triangulate_with, Polygon, RawPolygon, Triangulator};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::collections::HashMap;
 use std::fmt::Write as _;
@@ -242,9 +242,9 @@ fn worker(
             });
         } else {
             let algorithm = match algo {
-                "minitri" => Algorithm::Minitri,
-                "ear" => Algorithm::Ear,
-                "asano" => Algorithm::Asano,
+                "minitri" => Triangulator::Minitri,
+                "ear" => Triangulator::Ear,
+                "asano" => Triangulator::Asano,
                 _ => return Err(format!("unknown algorithm {algo:?}")),
             };
             if holes > 0 {

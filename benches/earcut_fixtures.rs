@@ -27,7 +27,7 @@ mod common;
 
 use common::Fixture;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, SamplingMode};
-use minitri::{triangulate_with, Algorithm, Options, Polygon, RawPolygon};
+use minitri::{triangulate_with, Options, Polygon, RawPolygon, Triangulator};
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 
@@ -92,7 +92,7 @@ enum Job {
     /// Validation alone.
     Validate,
     /// Validation, then minitri's `ear` or `minitri` on the valid ones.
-    Minitri(Algorithm),
+    Minitri(Triangulator),
     /// The `earcut` crate.
     Earcut,
 }
@@ -139,9 +139,9 @@ fn summary(cases: &[Case], options: &Options) {
         nonempty += usize::from(earcut > 0);
         unread += usize::from(f.raw.is_err());
         let Ok(p) = case.validate() else { continue };
-        let plain = triangulate_with(&p, Algorithm::Ear, options).expect("valid");
+        let plain = triangulate_with(&p, Triangulator::Ear, options).expect("valid");
         let start = Instant::now();
-        let t = triangulate_with(&p, Algorithm::Minitri, options).expect("valid");
+        let t = triangulate_with(&p, Triangulator::Minitri, options).expect("valid");
         let took = start.elapsed();
         let proved = if t.optimal {
             "yes".to_string()
@@ -195,8 +195,8 @@ fn batches(c: &mut Criterion) {
             .measurement_time(Duration::from_secs(5));
         let jobs = [
             ("validate", Job::Validate),
-            ("ear", Job::Minitri(Algorithm::Ear)),
-            ("minitri", Job::Minitri(Algorithm::Minitri)),
+            ("ear", Job::Minitri(Triangulator::Ear)),
+            ("minitri", Job::Minitri(Triangulator::Minitri)),
             ("earcut", Job::Earcut),
         ];
         for (name, job) in jobs {

@@ -15,7 +15,7 @@ mod common;
 
 use common::Shape;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, SamplingMode};
-use minitri::{triangulate_with, Algorithm, Options};
+use minitri::{triangulate_with, Options, Triangulator};
 use std::hint::black_box;
 use std::time::Duration;
 
@@ -57,18 +57,22 @@ fn family(c: &mut Criterion, shape: Shape) {
         }
         group.bench_with_input(BenchmarkId::new("minitri", n), &polygon, |b, p| {
             b.iter(|| {
-                triangulate_with(black_box(p), Algorithm::Minitri, &options).expect("hole-free")
+                triangulate_with(black_box(p), Triangulator::Minitri, &options).expect("hole-free")
             })
         });
         group.bench_with_input(BenchmarkId::new("ear", n), &polygon, |b, p| {
-            b.iter(|| triangulate_with(black_box(p), Algorithm::Ear, &options).expect("hole-free"))
+            b.iter(|| {
+                triangulate_with(black_box(p), Triangulator::Ear, &options).expect("hole-free")
+            })
         });
         group.bench_with_input(BenchmarkId::new("earcut", n), &coords, |b, xy| {
             b.iter(|| common::earcut(black_box(xy), &[]))
         });
         if polygon.len() <= DP_MAX_N {
             group.bench_with_input(BenchmarkId::new("asano", n), &polygon, |b, p| {
-                b.iter(|| triangulate_with(black_box(p), Algorithm::Asano, &options).expect("fits"))
+                b.iter(|| {
+                    triangulate_with(black_box(p), Triangulator::Asano, &options).expect("fits")
+                })
             });
         }
     }

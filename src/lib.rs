@@ -1,18 +1,21 @@
 //! minitri: polygon triangulation with the minimum number of triangles, exactly.
 //!
-//! The path is read ([`io::read`]) -> validate ([`Polygon::from_raw`]) -> triangulate
-//! ([`algo`]) -> verify ([`verify`]) -> write ([`io::write`]); [`pipeline`] runs it.
+//! The path is read ([`read`]) -> validate ([`Polygon::from_raw`]) -> triangulate
+//! ([`triangulate`], [`pseudotriangulate`]) -> verify ([`verify`]); [`process`] runs it on text
+//! and [`solve`] on a polygon, as [`Options`] say.
 //!
 //! # Library use
 //!
 //! Build a [`Polygon`] (from a [`geo_types::Polygon`], see [`geo`] for how coordinates are taken
-//! exactly, or from text with [`io::read::read`]), then [`triangulate`] it. A vertex lying inside
+//! exactly, or from text with [`read`]), then [`triangulate`] it with a [`Triangulator`] (or
+//! [`pseudotriangulate`] it with a [`Pseudotriangulator`]). No public function panics, whatever
+//! the input: a polygon that is not valid, or an algorithm that does not apply, is an error. A vertex lying inside
 //! a triangle side (a T-junction, listed as a degenerate triangle) saves one triangle, so
 //! `triangles = n + 2w - 2 - d` for `n` vertices, `w` holes and `d` degenerate triangles.
 //!
 //! ```
 //! use geo_types::polygon;
-//! use minitri::{Algorithm, Polygon};
+//! use minitri::{Polygon, Triangulator};
 //!
 //! // A U: a 3 x 1 bar with two 1 x 1 arms; 12 vertices, 4 of them flat (on a straight side).
 //! let u = polygon![
@@ -23,13 +26,13 @@
 //! let polygon = Polygon::try_from(&u)?;
 //! assert_eq!((polygon.len(), polygon.holes()), (12, 0));
 //!
-//! let t = minitri::triangulate(&polygon, Algorithm::Minitri)?;
+//! let t = minitri::triangulate(&polygon, Triangulator::Minitri)?;
 //! // Every T-junction saves a triangle: n + 2w - 2 - d.
 //! assert_eq!(t.triangles.len(), 12 + 0 - 2 - t.degenerate.len());
 //! // 5 is the minimum: 5 T-junctions; the O(n^3) dynamic program finds the same count.
 //! assert_eq!((t.triangles.len(), t.degenerate.len()), (5, 5));
 //! assert!(t.optimal);
-//! assert_eq!(minitri::triangulate(&polygon, Algorithm::Asano)?.triangles.len(), 5);
+//! assert_eq!(minitri::triangulate(&polygon, Triangulator::Asano)?.triangles.len(), 5);
 //! // The independent checker accepts it.
 //! assert!(minitri::verify::check(&polygon, &t).valid);
 //!
@@ -49,7 +52,7 @@
 //! use geo_types::polygon;
 //! let quad = polygon![(x: 0.0, y: 0.0), (x: 0.1, y: 0.3), (x: 0.2, y: 0.6), (x: 0.0, y: 1.0)];
 //! let polygon = minitri::Polygon::try_from(&quad)?;
-//! let t = minitri::triangulate(&polygon, minitri::Algorithm::Minitri)?;
+//! let t = minitri::triangulate(&polygon, minitri::Triangulator::Minitri)?;
 //! assert_eq!((t.triangles.len(), t.degenerate.len()), (1, 1));
 //! // The degenerate triangle, out as geo-types: (0.1, 0.3) is its middle corner, bit for bit.
 //! let [_, b, _] = minitri::geo::degenerate(&polygon, &t)[0].to_array();
@@ -95,29 +98,58 @@ macro_rules! order_from_cmp {
     };
 }
 
-pub mod algo;
+/// Declares internal modules: crate-private, or, with the `internals` feature, public but hidden
+/// from the documentation, for the command line, the integration tests, the benchmarks and the
+/// fuzz targets, which reach below the curated API. They are no API: nothing under them is stable
+/// (docs/library.md). Without the feature, what only those use is dead code here.
+macro_rules! internal {
+    ($($name:ident),*) => {$(
+        #[cfg(feature = "internals")]
+        #[doc(hidden)]
+        pub mod $name;
+        #[cfg(not(feature = "internals"))]
+        #[allow(dead_code)]
+        pub(crate) mod $name;
+    )*};
+}
+
+internal!(algo, feature, io, pipeline);
+// `batch` serves the command line alone: a library build without the feature does not compile
+// it.
+#[cfg(feature = "internals")]
+#[doc(hidden)]
 pub mod batch;
-pub mod feature;
 pub mod geo;
+// As `internal!` would declare it; written out, since a `#[macro_export]` macro (`with_polygon!`,
+// in `geom/polygon.rs`) inside a macro-expanded module could not be named by path.
+#[cfg(feature = "internals")]
+#[doc(hidden)]
 pub mod geom;
-pub mod io;
+#[cfg(not(feature = "internals"))]
+#[allow(dead_code)]
+pub(crate) mod geom;
 mod outcome;
-pub mod pipeline;
 mod raw;
 #[cfg(test)]
 pub(crate) mod test_support;
 pub mod verify;
 
 pub use algo::{
-    Algorithm, Pseudotriangle, Pseudotriangulation, Stopped, TriangulateError, Triangulation,
+    Algorithm, HullCounts, Pseudotriangle, Pseudotriangulation, Pseudotriangulator, Stopped,
+    TriangulateError, Triangulation, Triangulator,
 };
+pub use feature::{Collection, Feature, Geometry as FeatureGeometry, Identity};
 pub use geom::decimal::{Decimal, NumberError};
-pub use geom::kernel::{Coord, Point};
-pub use geom::polygon::{AnyPolygon, Polygon, Ring, Warning};
-pub use geom::validate::InvalidPolygon;
+pub use geom::kernel::{Coord, Point, SegmentContact};
+pub use geom::polygon::{AnyPolygon, Grid, Polygon, Ring, Warning};
+pub use geom::repair::{Repair, RepairKind};
+pub use geom::validate::{EdgeContact, InvalidPolygon};
 pub use geom::wide::WidePoint;
-pub use io::read::{Format, ParseError};
+pub use io::read::{
+    read, read_parts, Dims, Format, Location, Ordinate, Ordinates, ParseError,
+};
 pub use pipeline::{
-    process, pseudotriangulate, solve, triangulate, triangulate_with, Error, Options, Outcome,
+    process, process_raw, pseudotriangulate, solve, triangulate, triangulate_with, AlgorithmCheck,
+    Error, Options, Outcome, Solved, Verification,
 };
 pub use raw::RawPolygon;

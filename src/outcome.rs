@@ -33,7 +33,7 @@ pub enum Error {
     /// FIFO, not a regular file ...`): what a directory walk reports.
     #[error("{0}")]
     NotRead(String),
-    /// Even the least memory a polygon of this size needs could not be had ([`crate::pipeline::reserve_for`]).
+    /// Even the least memory a polygon of this size needs could not be had.
     #[error("not enough memory: {n} vertices need at least {memory} to be validated and triangulated, and a reservation of that much failed")]
     OutOfMemory {
         /// The polygon's number of vertices, as read.
@@ -127,7 +127,7 @@ pub struct Outcome {
     /// piece (piece 0, or the only outcome); the later pieces of a polygon split in several
     /// have an empty list (their repairs are piece 0's); `None` without `--repair`.
     pub repaired: Option<Vec<Repair>>,
-    /// The input feature and part this outcome is (GeoJSON inputs; see [`crate::feature`]).
+    /// The input feature and part this outcome is (GeoJSON inputs; see [`Identity`]).
     pub feature: Option<Identity>,
     /// The SRID its input gave it (EWKT `SRID=4326;`, an EWKB header's), which `--to wkt`
     /// writes back as EWKT and `--to geojson` as a `crs`.

@@ -6,8 +6,8 @@
 //! Complexity: that of reading and validating (O(n log n)) plus the chosen algorithm's.
 
 use crate::algo::{
-    asano, minitri, plain, pseudo, pseudo_hull, Algorithm, Pseudotriangulation, TriangulateError,
-    Triangulation,
+    asano, minitri, plain, pseudo, pseudo_hull, Algorithm, Pseudotriangulation, Pseudotriangulator,
+    TriangulateError, Triangulation, Triangulator,
 };
 use crate::geom::kernel::Coord;
 use crate::geom::polygon::{AnyPolygon, Polygon, Validation};
@@ -31,7 +31,7 @@ pub struct Options {
     /// past it the best found is reported, not optimal, with `stopped`.
     pub time_limit: Option<std::time::Duration>,
     /// Repair spikes, degenerate rings, self-touching rings, rings sharing edges and rings
-    /// touching in a cycle before validating ([`crate::geom::repair`]); a polygon may then give several pieces.
+    /// touching in a cycle before validating (docs/repair.md); a polygon may then give several pieces.
     pub repair: bool,
 }
 
@@ -98,7 +98,7 @@ fn in_words(bytes: f64) -> String {
 
 /// Triangulates a valid polygon with one algorithm and the default [`Options`] (for the exact
 /// algorithms: at most [`minitri::DEFAULT_TIME_LIMIT`] a polygon, then the best found with
-/// `optimal: false`; for `asano`: at most [`asano::DEFAULT_LIMIT`] vertices).
+/// `optimal: false`; for `asano`: at most `Options::default().dp_limit` vertices).
 ///
 /// # Errors
 /// [`TriangulateError`] when the algorithm does not apply (holes, size).
@@ -106,19 +106,19 @@ fn in_words(bytes: f64) -> String {
 /// # Examples
 /// ```
 /// use geo_types::polygon;
-/// use minitri::{Algorithm, Polygon};
+/// use minitri::{Polygon, Triangulator};
 /// // A square with a vertex in the middle of its bottom side: with the diagonals from the top
 /// // left corner, that vertex lies inside a side, so 2 triangles (n - 2 - d = 5 - 2 - 1) do;
 /// // and 1 cannot, the square not being a triangle.
 /// let square = polygon![(x: 0, y: 0), (x: 1, y: 0), (x: 2, y: 0), (x: 2, y: 2), (x: 0, y: 2)];
 /// let polygon = Polygon::try_from(&square)?;
-/// let t = minitri::triangulate(&polygon, Algorithm::Minitri)?;
+/// let t = minitri::triangulate(&polygon, Triangulator::Minitri)?;
 /// assert_eq!((t.triangles.len(), t.degenerate.len()), (2, 1));
 /// # Ok::<(), minitri::Error>(())
 /// ```
 pub fn triangulate<P: Coord>(
     polygon: &Polygon<P>,
-    algorithm: Algorithm,
+    algorithm: Triangulator,
 ) -> Result<Triangulation, TriangulateError> {
     triangulate_with(polygon, algorithm, &Options::default())
 }
@@ -127,33 +127,25 @@ pub fn triangulate<P: Coord>(
 /// `algorithm` and `verify` are not used here).
 ///
 /// # Errors
-/// [`TriangulateError`] when the algorithm does not apply (holes, size), and
-/// [`TriangulateError::WrongFunction`] for [`Algorithm::Pseudo`] and [`Algorithm::PseudoHull`],
-/// which make pseudotriangulations: call [`pseudotriangulate`] for them.
+/// [`TriangulateError`] when the algorithm does not apply (holes, size). The
+/// pseudotriangulation algorithms are no [`Triangulator`]s: [`pseudotriangulate`] runs them.
 ///
 /// # Examples
 /// ```
 /// use geo_types::polygon;
-/// use minitri::{Algorithm, Options, Polygon};
+/// use minitri::{Algorithm, Options, Polygon, Triangulator};
 /// let square = polygon![(x: 0, y: 0), (x: 2, y: 0), (x: 2, y: 2), (x: 0, y: 2)];
 /// let polygon = Polygon::try_from(&square)?;
 /// let options = Options::default();
-/// for algorithm in [Algorithm::Minitri, Algorithm::Asano, Algorithm::Ear] {
+/// for algorithm in [Triangulator::Minitri, Triangulator::Asano, Triangulator::Ear] {
 ///     let t = minitri::triangulate_with(&polygon, algorithm, &options)?;
-///     assert_eq!((t.algorithm, t.triangles.len()), (algorithm, 2));
+///     assert_eq!((t.algorithm, t.triangles.len()), (Algorithm::from(algorithm), 2));
 /// }
-/// // A pseudotriangulation is no triangulation: the error says which function makes it.
-/// let error = minitri::triangulate_with(&polygon, Algorithm::Pseudo, &options).unwrap_err();
-/// assert_eq!(
-///     error.to_string(),
-///     "the pseudo algorithm makes a pseudotriangulation, not a triangulation: \
-///      call minitri::pseudotriangulate for it"
-/// );
 /// # Ok::<(), minitri::Error>(())
 /// ```
 pub fn triangulate_with<P: Coord>(
     polygon: &Polygon<P>,
-    algorithm: Algorithm,
+    algorithm: Triangulator,
     options: &Options,
 ) -> Result<Triangulation, TriangulateError> {
     let deadline = || {
@@ -162,18 +154,12 @@ pub fn triangulate_with<P: Coord>(
             .and_then(|limit| std::time::Instant::now().checked_add(limit))
     };
     match algorithm {
-        Algorithm::Asano if polygon.touches() > 0 => {
-            crate::algo::touching(polygon, algorithm, options.dp_limit, deadline())
+        Triangulator::Asano if polygon.touches() > 0 => {
+            crate::algo::touching(polygon, Algorithm::Asano, options.dp_limit, deadline())
         }
-        Algorithm::Asano => asano::triangulate(polygon, options.dp_limit),
-        Algorithm::Ear => plain::triangulate(polygon),
-        Algorithm::Pseudo | Algorithm::PseudoHull => Err(TriangulateError::WrongFunction {
-            algorithm,
-            makes: "a pseudotriangulation",
-            asked: "a triangulation",
-            call: "pseudotriangulate",
-        }),
-        Algorithm::Minitri => minitri::triangulate_within(polygon, deadline()),
+        Triangulator::Asano => asano::triangulate(polygon, options.dp_limit),
+        Triangulator::Ear => plain::triangulate(polygon),
+        Triangulator::Minitri => minitri::triangulate_within(polygon, deadline()),
     }
 }
 
@@ -182,7 +168,7 @@ impl AnyPolygon {
     ///
     /// # Errors
     /// [`TriangulateError`] when the algorithm does not apply (holes, size).
-    pub fn triangulate(&self, algorithm: Algorithm) -> Result<Triangulation, TriangulateError> {
+    pub fn triangulate(&self, algorithm: Triangulator) -> Result<Triangulation, TriangulateError> {
         crate::with_polygon!(self, p => triangulate(p, algorithm))
     }
 
@@ -195,49 +181,40 @@ impl AnyPolygon {
     }
 }
 
-/// Pseudotriangulates a valid polygon: [`Algorithm::Pseudo`], a minimal pseudotriangulation of
-/// the polygon inside its plain (`ear`) triangulation (Rote, Wang, Wang & Xu, Section 5), or
-/// [`Algorithm::PseudoHull`], a minimum pseudotriangulation of the convex hull containing every
-/// polygon edge (their Theorem 6). Vertex numbers are stored indices, as in [`Triangulation`];
-/// [`Pseudotriangulation::input_faces`] gives them in input numbering.
+/// Pseudotriangulates a valid polygon: [`Pseudotriangulator::Pseudo`], a minimal
+/// pseudotriangulation of the polygon inside its plain (`ear`) triangulation (Rote, Wang, Wang &
+/// Xu, Section 5), or [`Pseudotriangulator::PseudoHull`], a minimum pseudotriangulation of the
+/// convex hull containing every polygon edge (their Theorem 6). Vertex numbers are stored
+/// indices, as in [`Triangulation`]; [`Pseudotriangulation::input_faces`] gives them in input
+/// numbering.
 ///
 /// # Errors
-/// [`TriangulateError::WrongFunction`] for the triangulation algorithms (call [`triangulate`]);
 /// [`TriangulateError::PseudoHullIncomplete`] should a self-check of the construction fail.
 ///
 /// # Examples
 /// ```
 /// use geo_types::polygon;
-/// use minitri::{Algorithm, Polygon};
+/// use minitri::{Polygon, Pseudotriangulator};
 /// // A quadrilateral with one reflex vertex is itself a pseudotriangle: one face.
 /// let dart = polygon![(x: 0, y: 0), (x: 4, y: 0), (x: 2, y: 1), (x: 0, y: 4)];
 /// let polygon = Polygon::try_from(&dart)?;
-/// let p = minitri::pseudotriangulate(&polygon, Algorithm::Pseudo)?;
+/// let p = minitri::pseudotriangulate(&polygon, Pseudotriangulator::Pseudo)?;
 /// assert_eq!((p.faces.len(), p.faces[0].corners.len()), (1, 3));
 /// // The hull's version also cuts the pocket outside the reflex vertex: n - 2 = 2 faces.
-/// let hull = minitri::pseudotriangulate(&polygon, Algorithm::PseudoHull)?;
+/// let hull = minitri::pseudotriangulate(&polygon, Pseudotriangulator::PseudoHull)?;
 /// assert_eq!(hull.faces.len(), 2);
-/// assert!(minitri::pseudotriangulate(&polygon, Algorithm::Minitri).is_err());
 /// # Ok::<(), minitri::Error>(())
 /// ```
 pub fn pseudotriangulate<P: Coord>(
     polygon: &Polygon<P>,
-    algorithm: Algorithm,
+    algorithm: Pseudotriangulator,
 ) -> Result<Pseudotriangulation, TriangulateError> {
     match algorithm {
-        Algorithm::PseudoHull => pseudo_hull::pseudotriangulate(polygon),
-        Algorithm::Pseudo => Ok(pseudo::minimal(
+        Pseudotriangulator::PseudoHull => pseudo_hull::pseudotriangulate(polygon),
+        Pseudotriangulator::Pseudo => Ok(pseudo::minimal(
             polygon,
             &plain::triangulate(polygon)?.triangles,
         )),
-        Algorithm::Minitri | Algorithm::Asano | Algorithm::Ear => {
-            Err(TriangulateError::WrongFunction {
-                algorithm,
-                makes: "a triangulation",
-                asked: "a pseudotriangulation",
-                call: "triangulate",
-            })
-        }
     }
 }
 
@@ -257,10 +234,10 @@ pub const CORRUPT_WITH_EAR: &str = "ear";
 /// # Errors
 /// [`Error::Triangulate`] when the chosen algorithm does not apply.
 pub fn solve<P: Coord>(polygon: &Polygon<P>, options: &Options) -> Result<Solved, Error> {
-    if options.algorithm.is_pseudo() {
+    let Some(algorithm) = options.algorithm.triangulator() else {
         return solve_pseudo(polygon, options);
-    }
-    let mut triangulation = triangulate_with(polygon, options.algorithm, options)?;
+    };
+    let mut triangulation = triangulate_with(polygon, algorithm, options)?;
     // The environment is read only with `--verify` (a lookup per polygon costs as much as
     // writing its output's numbers).
     let corrupt = options
@@ -337,8 +314,8 @@ fn verify_all<P: Coord>(
 ) -> Verification {
     let mut outputs = vec![main.clone()];
     let mut skipped = Vec::new();
-    for other in [Algorithm::Minitri, Algorithm::Asano] {
-        if other == main.algorithm {
+    for other in [Triangulator::Minitri, Triangulator::Asano] {
+        if Algorithm::from(other) == main.algorithm {
             continue;
         }
         match triangulate_with(polygon, other, options) {

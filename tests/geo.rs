@@ -3,7 +3,7 @@
 //! polygon.
 
 use geo_types::polygon;
-use minitri::{geo, verify, Algorithm, Error, Polygon};
+use minitri::{geo, verify, Error, Polygon, Triangulator};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed};
 
@@ -38,7 +38,7 @@ proptest! {
     fn float_coordinates_come_out_bit_for_bit(radii in prop::collection::vec(0.1f64..0.4, 3..14)) {
         let ring = star(&radii);
         let polygon = Polygon::try_from(&geo_polygon(&ring)).expect("a star around its centre");
-        for algorithm in [Algorithm::Minitri, Algorithm::Ear] {
+        for algorithm in [Triangulator::Minitri, Triangulator::Ear] {
             let t = minitri::triangulate(&polygon, algorithm).expect("no holes, small");
             prop_assert!(verify::check(&polygon, &t).valid);
             let corners = geo::triangles(&polygon, &t);
@@ -65,7 +65,7 @@ fn floats_mean_their_shortest_decimals() {
         (x: 0.1, y: 0.1), (x: 0.2, y: 0.2), (x: 0.3, y: 0.3), (x: 0.1, y: 0.5), (x: 0.0, y: 0.3)
     ];
     let polygon = Polygon::try_from(&p).unwrap();
-    let t = minitri::triangulate(&polygon, Algorithm::Minitri).unwrap();
+    let t = minitri::triangulate(&polygon, Triangulator::Minitri).unwrap();
     assert_eq!((t.triangles.len(), t.degenerate.len()), (2, 1));
     let [a, b, c] = geo::degenerate(&polygon, &t)[0].to_array();
     assert_eq!((b.x, b.y), (0.2, 0.2));
@@ -76,7 +76,7 @@ fn floats_mean_their_shortest_decimals() {
     ];
     let polygon32 = Polygon::try_from(&p32).unwrap();
     assert_eq!(
-        minitri::triangulate(&polygon32, Algorithm::Asano)
+        minitri::triangulate(&polygon32, Triangulator::Asano)
             .unwrap()
             .triangles
             .len(),
@@ -101,7 +101,7 @@ fn integers_are_exact_and_the_closing_coordinate_is_not_a_vertex() {
     // -0.0 comes out as 0.0: the decimal zero has no sign.
     let q = polygon![(x: -0.0, y: 0.0), (x: 1.0, y: 0.0), (x: 0.0, y: 1.0)];
     let polygon = Polygon::try_from(&q).unwrap();
-    let t = minitri::triangulate(&polygon, Algorithm::Minitri).unwrap();
+    let t = minitri::triangulate(&polygon, Triangulator::Minitri).unwrap();
     let corners = geo::triangles(&polygon, &t)[0].to_array();
     assert!(corners.iter().all(|c| c.x.to_bits() != (-0.0f64).to_bits()));
 }

@@ -1,5 +1,6 @@
 //! Integration tests: one binary (`autotests = false`), modules per topic.
 
+mod api;
 mod batch;
 mod cli;
 mod earcut;

@@ -14,9 +14,9 @@
 
 use crate::property::general;
 use crate::util::xorshift;
-use minitri::algo::{walks, Algorithm};
+use minitri::algo::walks;
 use minitri::geom::kernel::{cross, dot, segment_contact, Point, SegmentContact};
-use minitri::{verify, Decimal, Polygon, RawPolygon};
+use minitri::{verify, Decimal, Polygon, RawPolygon, Triangulator};
 use std::collections::{BTreeMap, BTreeSet};
 
 pub(crate) type Rings = Vec<Vec<(i64, i64)>>;
@@ -418,7 +418,11 @@ fn every_algorithm_triangulates_touching_rings_and_the_minimum_is_exact() {
         three_at_a_point += usize::from(at.values().any(|&k| k >= 3));
         let minimum = exhaustive_minimum(&rings);
         let plain = p.len() + 2 * p.holes() - 2;
-        for algorithm in [Algorithm::Minitri, Algorithm::Asano, Algorithm::Ear] {
+        for algorithm in [
+            Triangulator::Minitri,
+            Triangulator::Asano,
+            Triangulator::Ear,
+        ] {
             let t = minitri::triangulate(&p, algorithm)
                 .unwrap_or_else(|e| panic!("{rings:?} {algorithm}: {e}"));
             let check = verify::check(&p, &t);
@@ -428,7 +432,7 @@ fn every_algorithm_triangulates_touching_rings_and_the_minimum_is_exact() {
                 plain,
                 "{rings:?} {algorithm}"
             );
-            if algorithm == Algorithm::Ear {
+            if algorithm == Triangulator::Ear {
                 assert_eq!(t.triangles.len(), plain);
             } else {
                 // One walk: Chen & Chang's steps (minitri) or the walk DP (asano); hole walks
@@ -472,7 +476,7 @@ fn with_hole_walks_the_minimum_equals_an_exhaustive_search() {
         }
         checked += 1;
         let minimum = exhaustive_minimum(&rings);
-        let t = minitri::triangulate(&p, Algorithm::Minitri).expect("minitri");
+        let t = minitri::triangulate(&p, Triangulator::Minitri).expect("minitri");
         let check = verify::check(&p, &t);
         assert!(check.valid, "{rings:?}: {:?}", check.problems);
         assert!(t.optimal, "{rings:?}");
@@ -504,11 +508,11 @@ fn with_hole_walks_the_minimum_algorithms_finish_the_exact_search() {
             continue;
         }
         checked += 1;
-        let plain = minitri::triangulate(&p, Algorithm::Ear).expect("ear");
+        let plain = minitri::triangulate(&p, Triangulator::Ear).expect("ear");
         assert!(verify::check(&p, &plain).valid, "{rings:?} ear");
         assert!(plain.degenerate.is_empty());
         let flattened = walks::flattened(&p, None).map_or(plain.triangles.len(), |t| t.0.len());
-        for algorithm in [Algorithm::Minitri, Algorithm::Asano] {
+        for algorithm in [Triangulator::Minitri, Triangulator::Asano] {
             let t = minitri::triangulate(&p, algorithm)
                 .unwrap_or_else(|e| panic!("{rings:?} {algorithm}: {e}"));
             let check = verify::check(&p, &t);
@@ -537,7 +541,7 @@ fn the_issue_example_hole_touching_an_outer_edge() {
         (p.len(), p.holes(), p.touches(), p.input_holes()),
         (8, 0, 1, 1)
     );
-    let t = minitri::triangulate(&p, Algorithm::Minitri).unwrap();
+    let t = minitri::triangulate(&p, Triangulator::Minitri).unwrap();
     assert!(t.optimal && verify::check(&p, &t).valid);
     assert_eq!((t.triangles.len(), t.degenerate.len()), (5, 1));
     assert_eq!(exhaustive_minimum(&rings), 5);
@@ -633,7 +637,7 @@ fn large_single_walks_minitri_and_the_walk_dp_agree() {
         let (p, _) = Polygon::from_raw(&raw(&rings)).expect("valid");
         assert_eq!(p.holes(), 0, "one walk");
         assert!(p.len() > 300);
-        let counts: Vec<usize> = [Algorithm::Minitri, Algorithm::Asano]
+        let counts: Vec<usize> = [Triangulator::Minitri, Triangulator::Asano]
             .into_iter()
             .map(|algorithm| {
                 let t = minitri::triangulate(&p, algorithm).expect("triangulated");

@@ -6,9 +6,15 @@
 //! messages (errors, warnings) without the source name, the triangles as one WKB MultiPolygon
 //! and the totals. Nothing here decides a fact about the geometry: that is the library's work.
 
-use minitri::io::read::{self, geojson_stream, Format};
-use minitri::pipeline::{self, Error, Options, Outcome};
-use minitri::{Algorithm, Coord, ParseError, Polygon, Triangulation};
+// The public API, and below it (the `internals` feature, docs/library.md) the three things the
+// command line's front end does that no library function offers: reading GeoJSON Lines one line
+// at a time, splitting WKB into its geometries with their floats, and the outcome of an input
+// that could not be read; and the CLI's JSON text of an outcome (`io::write::json::render`).
+use minitri::io::read::{self, geojson_stream};
+use minitri::pipeline;
+use minitri::{
+    Algorithm, Coord, Error, Format, Options, Outcome, ParseError, Polygon, Triangulation,
+};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyBytes;
@@ -67,7 +73,7 @@ fn outcomes(input: &Input<'_>, options: &Options) -> Vec<(Outcome, Option<Vec<[f
                 .flat_map(|(i, p)| {
                     // Several outcomes only when `--repair` splits a polygon (not offered here).
                     let floats = p.floats;
-                    pipeline::process_raw("-", i, p.raw, options)
+                    minitri::process_raw("-", i, p.raw, options)
                         .into_iter()
                         .map(move |outcome| (outcome, Some(floats.clone())))
                 })
@@ -84,7 +90,7 @@ fn text_outcomes(text: &str, format: Format, options: &Options) -> Vec<Outcome> 
         return vec![pipeline::unreadable("-", Error::Parse(error))];
     }
     if format != Format::GeoJson || !geojson_stream::looks_line_delimited(text.as_bytes()) {
-        return pipeline::process("-", text, format, options);
+        return minitri::process("-", text, format, options);
     }
     let mut outcomes = Vec::new();
     let mut index = 0;
@@ -101,7 +107,7 @@ fn text_outcomes(text: &str, format: Format, options: &Options) -> Vec<Outcome> 
                 for part in parts {
                     match part {
                         Ok(raw) => {
-                            outcomes.extend(pipeline::process_raw("-", index, raw, options));
+                            outcomes.extend(minitri::process_raw("-", index, raw, options));
                             index += 1;
                         }
                         Err(e) => outcomes.push(pipeline::unreadable("-", Error::Parse(e))),

@@ -25,7 +25,10 @@ pub mod walks;
 use crate::geom::kernel::Coord;
 use std::fmt;
 
-/// Which algorithm made (or should make) a triangulation.
+/// Which algorithm made (or should make) a triangulation or a pseudotriangulation: what
+/// [`crate::Options`] chooses (the command line's `--algorithm`) and what a [`Triangulation`]
+/// records. The functions that run one algorithm take a [`Triangulator`] ([`crate::triangulate`])
+/// or a [`Pseudotriangulator`] ([`crate::pseudotriangulate`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Algorithm {
     /// Chen & Chang's MINITRI (minimum; default).
@@ -63,6 +66,91 @@ impl Algorithm {
     }
 }
 
+/// An algorithm that makes a triangulation: what [`crate::triangulate`] takes. The
+/// pseudotriangulation algorithms are [`Pseudotriangulator`]s, so that asking `triangulate` for
+/// a pseudotriangulation does not compile.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Triangulator {
+    /// Chen & Chang's MINITRI (minimum; default): [`Algorithm::Minitri`].
+    Minitri,
+    /// The O(n^3) dynamic program of Asano, Asano & Pinter (minimum; reference):
+    /// [`Algorithm::Asano`].
+    Asano,
+    /// A plain triangulation into n + 2w - 2 triangles: [`Algorithm::Ear`].
+    Ear,
+}
+
+/// An algorithm that makes a pseudotriangulation: what [`crate::pseudotriangulate`] takes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Pseudotriangulator {
+    /// A minimal pseudotriangulation of the polygon inside its plain triangulation:
+    /// [`Algorithm::Pseudo`].
+    Pseudo,
+    /// A minimum pseudotriangulation of the convex hull containing the polygon's edges:
+    /// [`Algorithm::PseudoHull`].
+    PseudoHull,
+}
+
+impl From<Triangulator> for Algorithm {
+    fn from(t: Triangulator) -> Algorithm {
+        match t {
+            Triangulator::Minitri => Algorithm::Minitri,
+            Triangulator::Asano => Algorithm::Asano,
+            Triangulator::Ear => Algorithm::Ear,
+        }
+    }
+}
+
+impl From<Pseudotriangulator> for Algorithm {
+    fn from(p: Pseudotriangulator) -> Algorithm {
+        match p {
+            Pseudotriangulator::Pseudo => Algorithm::Pseudo,
+            Pseudotriangulator::PseudoHull => Algorithm::PseudoHull,
+        }
+    }
+}
+
+impl Algorithm {
+    /// The algorithm as a [`Triangulator`], when it makes a triangulation.
+    ///
+    /// # Examples
+    /// ```
+    /// use minitri::{Algorithm, Triangulator};
+    /// assert_eq!(Algorithm::Asano.triangulator(), Some(Triangulator::Asano));
+    /// assert_eq!(Algorithm::Pseudo.triangulator(), None);
+    /// assert_eq!(Algorithm::from(Triangulator::Asano), Algorithm::Asano);
+    /// ```
+    pub fn triangulator(self) -> Option<Triangulator> {
+        match self {
+            Algorithm::Minitri => Some(Triangulator::Minitri),
+            Algorithm::Asano => Some(Triangulator::Asano),
+            Algorithm::Ear => Some(Triangulator::Ear),
+            Algorithm::Pseudo | Algorithm::PseudoHull => None,
+        }
+    }
+
+    /// The algorithm as a [`Pseudotriangulator`], when it makes a pseudotriangulation.
+    pub fn pseudotriangulator(self) -> Option<Pseudotriangulator> {
+        match self {
+            Algorithm::Pseudo => Some(Pseudotriangulator::Pseudo),
+            Algorithm::PseudoHull => Some(Pseudotriangulator::PseudoHull),
+            Algorithm::Minitri | Algorithm::Asano | Algorithm::Ear => None,
+        }
+    }
+}
+
+impl fmt::Display for Triangulator {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(Algorithm::from(*self).name())
+    }
+}
+
+impl fmt::Display for Pseudotriangulator {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(Algorithm::from(*self).name())
+    }
+}
+
 impl Triangulation {
     /// The triangles in INPUT vertex numbers, the numbering of the command line's output: 0-based
     /// over all rings in input order (outer ring first), each ring without its closing vertex,
@@ -76,7 +164,7 @@ impl Triangulation {
     /// // Vertex 1 repeats vertex 0: it is dropped, and the square keeps input numbers 0, 2, 3, 4.
     /// let square = polygon![(x: 0, y: 0), (x: 0, y: 0), (x: 1, y: 0), (x: 1, y: 1), (x: 0, y: 1)];
     /// let polygon = minitri::Polygon::try_from(&square)?;
-    /// let t = minitri::triangulate(&polygon, minitri::Algorithm::Minitri)?;
+    /// let t = minitri::triangulate(&polygon, minitri::Triangulator::Minitri)?;
     /// let used: std::collections::BTreeSet<usize> =
     ///     t.input_triangles(&polygon).into_iter().flatten().collect();
     /// assert_eq!(used.into_iter().collect::<Vec<_>>(), [0, 2, 3, 4]);
@@ -164,10 +252,10 @@ pub enum Stopped {
     /// searching it; for one without holes while finding them (step 1, quadratic on combs).
     TimeLimit,
     /// A connected component of the dependency graph had more triangles than the exact search
-    /// takes ([`minitri::branch_and_bound::SEARCH_LIMIT`]); it kept a greedy set.
+    /// takes (`SEARCH_LIMIT`, 4,096 triangles); it kept a greedy set.
     SearchSize,
     /// The dependency graph of all minimally degenerate triangles would have exceeded its size
-    /// budget ([`minitri::dependency::pair_budget`]); the search used the shortest of them.
+    /// budget (`pair_budget`); the search used the shortest of them.
     GraphSize,
     /// Rings that touch, where the exact method on the walks failed a self-check (not seen in
     /// the tests) and the walk DP did not apply: the flattened walk was given.
@@ -464,19 +552,6 @@ pub enum TriangulateError {
         vertex: usize,
         /// Its coordinates, as written in the input.
         point: String,
-    },
-    /// `triangulate` was asked for a pseudotriangulation, or `pseudotriangulate` for a
-    /// triangulation: the other function answers it.
-    #[error("the {algorithm} algorithm makes {makes}, not {asked}: call minitri::{call} for it")]
-    WrongFunction {
-        /// The algorithm asked for.
-        algorithm: Algorithm,
-        /// What it makes ("a pseudotriangulation" or "a triangulation").
-        makes: &'static str,
-        /// What the function called returns.
-        asked: &'static str,
-        /// The function to call instead.
-        call: &'static str,
     },
     /// The polygon is too large for an algorithm with polynomial memory.
     #[error("the asano dynamic program needs about {memory} and {time} for {n} vertices, above its limit of {limit} vertices; use --algorithm minitri, or raise the limit with --dp-limit")]

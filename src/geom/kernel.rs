@@ -32,11 +32,11 @@ pub const MAX_COORD: i64 = 1 << 62;
 /// Every method is exact except [`Coord::incircle_approx`] and the `f64` conversions, which
 /// serve heuristics and drawing only.
 pub trait Coord: Copy + Eq + Ord + Hash + fmt::Debug + Send + Sync + 'static {
-    /// A direction, the difference of two points ([`Dir`] wraps it).
+    /// A direction, the difference of two points (`Dir` wraps it).
     type Vector: Copy + Eq + Hash + fmt::Debug + Send + Sync;
-    /// The supporting line of a segment, as an exact, totally ordered key ([`line_through`]).
+    /// The supporting line of a segment, as an exact, totally ordered key (`line_through`).
     type Line: Copy + Ord + fmt::Debug + Send + Sync;
-    /// An exact sum of twice-areas ([`Area`] wraps it).
+    /// An exact sum of twice-areas (`Area` wraps it).
     type AreaSum: Clone + Default + PartialEq + fmt::Debug + fmt::Display + Send + Sync;
 
     /// A value with the sign of twice the signed area of `a b c` (positive when
@@ -90,7 +90,7 @@ pub trait Coord: Copy + Eq + Ord + Hash + fmt::Debug + Send + Sync + 'static {
         let _ = shift;
         self.offset_f64(origin)
     }
-    /// APPROXIMATELY the in-circle determinant of [`incircle_approx`].
+    /// APPROXIMATELY the in-circle determinant of `incircle_approx`.
     fn incircle_approx(a: Self, b: Self, c: Self, d: Self) -> f64;
     /// Coordinate `axis` (0 = x, 1 = y) in input coordinates, exactly, as text.
     fn format(self, grid: &Grid, axis: usize) -> String;
@@ -422,19 +422,6 @@ impl<P: Coord> Dir<P> {
     pub fn dot(self, other: Dir<P>) -> i128 {
         P::vector_dot(self.0, other.0)
     }
-}
-
-/// Total order of directions by counter-clockwise angle measured from `reference` (angle 0).
-pub fn cmp_dir_from<P: Coord>(reference: Dir<P>, a: Dir<P>, b: Dir<P>) -> Ordering {
-    let half = |d: Dir<P>| {
-        let s = reference.cross(d);
-        if s > 0 || (s == 0 && reference.dot(d) > 0) {
-            0
-        } else {
-            1
-        }
-    };
-    half(a).cmp(&half(b)).then_with(|| 0.cmp(&a.cross(b)))
 }
 
 /// APPROXIMATELY whether `d` lies inside the circle through the counter-clockwise triangle

@@ -205,8 +205,8 @@ pub enum AnyPolygon {
 macro_rules! with_polygon {
     ($any:expr, $p:ident => $body:expr) => {
         match $any {
-            $crate::geom::polygon::AnyPolygon::Fast($p) => $body,
-            $crate::geom::polygon::AnyPolygon::Wide($p) => $body,
+            $crate::AnyPolygon::Fast($p) => $body,
+            $crate::AnyPolygon::Wide($p) => $body,
         }
     };
 }
@@ -751,7 +751,7 @@ impl<P: Coord> Polygon<P> {
     }
 
     /// Whether the direction from stored vertex `v` towards `target` lies in `v`'s closed
-    /// interior angle ([`super::kernel::in_closed_wedge`]; for a copy of a touch point, its
+    /// interior angle (`in_closed_wedge`; for a copy of a touch point, its
     /// sector).
     #[inline]
     pub fn angle_holds(&self, v: usize, target: P) -> bool {

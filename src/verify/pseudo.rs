@@ -24,7 +24,7 @@
 //!    neighbours (Lemma 4(b), 12 corners down to 3);
 //! 6. for `pseudo-hull`: the number of faces is 2n - N - 2, N the number of angles of at least pi
 //!    between neighbouring segments of L and the hull edges, the least possible (see
-//!    [`crate::algo::pseudo_hull`]); in general position N = r = n and this is Corollary 1's
+//!    `algo::pseudo_hull`); in general position N = r = n and this is Corollary 1's
 //!    2n - r - 2.
 //!
 //! Complexity: O(F log F) for the chain and the adjacency (F: total face size), including the

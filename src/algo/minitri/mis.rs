@@ -29,8 +29,10 @@
 //! The reasoning in full, the staircase shape and where it breaks, the economies of the scans and
 //! what was tried and dropped: docs/algorithms.md, "Step 3 in detail".
 
-// The 3b-chains moved to their own module; their old paths stay.
-pub use super::chains::{chains, is_3b_pair, Chains};
+// The 3b-chains moved to their own module; their old paths stay (for the tests and examples).
+pub use super::chains::Chains;
+#[cfg(feature = "internals")]
+pub use super::chains::{chains, is_3b_pair};
 use super::circle::Circle;
 use super::ladder::{clamp, LadderPolicy, Ladders, Level, Reader, Slot, NEG};
 use super::lists::Lists;

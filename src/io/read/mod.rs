@@ -43,9 +43,9 @@ pub enum Format {
     GeoJson,
     /// One `x y` or `x,y` vertex per line (see `docs/cli.md`).
     Vertices,
-    /// Well-known binary (WKB, EWKB), binary or hex text, one geometry per line ([`wkb`]).
+    /// Well-known binary (WKB, EWKB), binary or hex text, one geometry per line.
     Wkb,
-    /// CSV with a `WKT` geometry column, as `--to csv` writes it ([`csv`]).
+    /// CSV with a `WKT` geometry column, as `--to csv` writes it.
     Csv,
 }
 
