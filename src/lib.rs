@@ -145,9 +145,7 @@ pub use geom::polygon::{AnyPolygon, Grid, Polygon, Ring, Warning};
 pub use geom::repair::{Repair, RepairKind};
 pub use geom::validate::{EdgeContact, InvalidPolygon};
 pub use geom::wide::WidePoint;
-pub use io::read::{
-    read, read_parts, Dims, Format, Location, Ordinate, Ordinates, ParseError,
-};
+pub use io::read::{read, read_parts, Dims, Format, Location, Ordinate, Ordinates, ParseError};
 pub use pipeline::{
     process, process_raw, pseudotriangulate, solve, triangulate, triangulate_with, AlgorithmCheck,
     Error, Options, Outcome, Solved, Verification,
