@@ -97,7 +97,7 @@ fn in_words(bytes: f64) -> String {
 }
 
 /// Triangulates a valid polygon with one algorithm and the default [`Options`] (for the exact
-/// algorithms: at most [`minitri::DEFAULT_TIME_LIMIT`] a polygon, then the best found with
+/// algorithms: at most `Options::default().time_limit` a polygon (10 s), then the best found with
 /// `optimal: false`; for `asano`: at most `Options::default().dp_limit` vertices).
 ///
 /// # Errors

@@ -15,7 +15,7 @@
 //! edge cut by the ray bounds what is visible, then edges starting there enter. Walking out along
 //! the ray through the vertices in that direction applies (1) and (3) with the exact wedge test.
 //! Works for polygons with holes as well (all rings' edges take part), and for the boundary walks
-//! of touching rings, where a point may hold several stored vertices ([`walk_out`]).
+//! of touching rings, where a point may hold several stored vertices (`walk_out`).
 //!
 //! The same angular order also numbers the lines through each vertex ([`ChordTable::line`]):
 //! `k` lies on the line through `i` and `j` exactly when `line(i, k) == line(i, j)`, which

@@ -125,7 +125,7 @@ pub fn pseudotriangulate<P: Coord>(
 /// MINIMAL pseudotriangulation of the hull containing the polygon's edges, valid but not proved
 /// minimum, marked `stopped: Some(Stopped::TimeLimit)` (so not optimal) unless it has the
 /// `2n - N - 2` faces of every minimum one (then it is one, and `stopped` stays `None`). The clock is read
-/// between steps and every [`super::mesh`] 1024 flips, so the run ends within one step's walk
+/// between steps and every `super::mesh` 1024 flips, so the run ends within one step's walk
 /// (O(n)) and the greedy's O(n) after the deadline.
 ///
 /// # Errors

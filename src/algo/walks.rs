@@ -1,5 +1,5 @@
 //! Triangulations of polygons whose rings touch: boundary walks that visit a point once per
-//! interior sector around it (see [`crate::geom::touch`] and `docs/touching.md`).
+//! interior sector around it (see `crate::geom::touch` and `docs/touching.md`).
 //!
 //! Input contract: a valid [`Polygon`] with `touches() > 0`: walks, outer one counter-clockwise,
 //! hole walks clockwise, interior on the left of every edge; stored vertices at one point

@@ -2,14 +2,14 @@
 //!
 //! Input contract: paths (files, directories, `-` for standard input) and [`Settings`]. Output
 //! guarantee: one document of every input ([`run_document`]) or one output file per input
-//! mirroring the input tree ([`run_tree`] with [`plan`]), byte for byte the same for any number
+//! mirroring the input tree (`run_tree` with `plan`), byte for byte the same for any number
 //! of threads; every failure an outcome naming its source and polygon, never a stop; output files
 //! written whole or not at all ([`AtomicFile`]). Parallelism: rayon, on the pool the caller
 //! installs (`ThreadPool::install`), across polygons and, for a tree, across files. Memory: one
 //! chunk of polygons at a time per input being read, GeoJSON streamed feature by feature (see
 //! [`run`]). Complexity: that of the polygons' triangulations, plus linear reading and writing.
 //!
-//! The steps, in order: [`discover`] the input files, [`plan`] their outputs (for a tree),
+//! The steps, in order: `discover` the input files, `plan` their outputs (for a tree),
 //! [`run_document`] or [`run_tree`], and [`Tally::summary`] for the summary line.
 
 mod atomic;

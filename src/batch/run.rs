@@ -154,7 +154,7 @@ pub fn run_document(
     Ok(DocumentReport { tally, complete })
 }
 
-/// One input of a tree run and where its output goes (see [`super::plan`]).
+/// One input of a tree run and where its output goes (see `super::plan`).
 #[derive(Clone, Debug)]
 pub struct TreeJob {
     /// The input file.

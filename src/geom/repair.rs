@@ -3,7 +3,7 @@
 //! Input contract: the rings of one input polygon as points of either exact kernel (on its grid
 //! ([`crate::geom::polygon`]'s `to_grid`) when it fits the fast kernel, else the input decimals
 //! themselves, [`crate::geom::wide`]), each vertex with its input number; ring 0 the outer ring. Output guarantee
-//! ([`repair`]): one or more pieces, each an outer ring (counter-clockwise) and its holes
+//! (`repair`): one or more pieces, each an outer ring (counter-clockwise) and its holes
 //! (clockwise) made only of input vertices at their input coordinates, whose union is the region
 //! the input describes (the points covered an odd number of times by the rings' loops, as OGC
 //! `make_valid` reads a ring); every change reported as a [`Repair`] naming the ring, vertex

@@ -14,12 +14,12 @@
 //!   solved exactly on their own (a maximum set of each) and the search goes on in the largest,
 //!   keeping its bound;
 //! - a start close to the maximum: a greedy set improved by iterated local search
-//!   ([`super::local_search`]), so the bound prunes from the first node (a component of more
+//!   (`super::local_search`), so the bound prunes from the first node (a component of more
 //!   than [`SEARCH_LIMIT`] vertices keeps that set, with a matching bound);
 //! - branching on a vertex of highest degree (take it and drop its neighbours, or drop it), with
 //!   the bound "chosen + a greedy clique cover of what is left" (an independent set has at most
 //!   one vertex per clique), lowered by MaxSAT-style unit propagation and failed literals over
-//!   the cover's cliques ([`Search::bound`]), over bit sets.
+//!   the cover's cliques (`Search::bound`), over bit sets.
 //!
 //! When the search of every component finishes, the set is a maximum one (`optimal`). Past the
 //! deadline the search stops where it is and keeps the best set found, with an upper bound on

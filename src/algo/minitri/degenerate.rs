@@ -381,7 +381,7 @@ pub fn minimally_degenerate_by_sweep<P: Coord>(polygon: &Polygon<P>) -> Vec<Dege
 
 /// [`minimally_degenerate_by_sweep`], stopping at `deadline` (read before every 16th middle
 /// vertex): the triangles found, and whether the search finished. It also takes the boundary
-/// walks of touching rings (`crate::algo::walks`): the chord sweep ([`visible_from`]) handles
+/// walks of touching rings (`crate::algo::walks`): the chord sweep (`visible_from`) handles
 /// the copies of a touch point, and of the copies at the nearest point in a direction, the one
 /// seen is the triangle's end (at most one is: the copies' closed angles are disjoint away from
 /// the point). This is step 1 for touching rings, where the plain triangulation walked by

@@ -70,7 +70,7 @@ pub fn pair_budget(n: usize) -> u64 {
 /// that neither its time nor its memory (proportional to the pairs compared) runs away on
 /// polygons where most triangles depend on most others.
 ///
-/// Memory: the dependent pairs are gathered first as 8 bytes each ([`Pairs`], growth capped at
+/// Memory: the dependent pairs are gathered first as 8 bytes each (`Pairs`, growth capped at
 /// the budget), and only a graph that fits is turned into adjacency lists (16 bytes a pair,
 /// each list allocated at its size while the pairs are given back), so that a try that runs
 /// out of budget holds 8 bytes per pair found, not the 16 to 32 of growing lists.

@@ -403,7 +403,7 @@ pub fn double_cone<'w, P: Coord>(
 }
 
 /// How many triangles the walk from one vertex crosses before its parts are cut into rays
-/// ([`isolated`]) in the default hybrid ([`super::ray_shooting::RayPolicy`]): typical vertices never get there (random stars walk 40-50 triangles per
+/// (`isolated`) in the default hybrid (`super::ray_shooting::RayPolicy`): typical vertices never get there (random stars walk 40-50 triangles per
 /// vertex), so they keep the plain walk, which is cheaper when cones are short; a vertex of a
 /// comb's floor or a sliver's staircase does, and its remaining parts become a few rays.
 pub const ISOLATE_AFTER: usize = 64;
