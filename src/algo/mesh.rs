@@ -65,9 +65,8 @@
 //! the k diagonals the segment crosses are found by walking along it, then flipped until the
 //! segment is an edge, which is then fixed. First every flip that leaves one crossing fewer is
 //! made, a diagonal being tested again only when a neighbour along the segment was flipped: O(k)
-//! tests and at most k flips. That usually suffices (in MINITRI's cut step on 2 * 10^5 random
-//! polygons with up to 12 holes, for all but 0.5% of the segments crossing a diagonal), but not
-//! always: every flippable crossed diagonal can have its two apexes on opposite sides of the
+//! tests and at most k flips. That almost always suffices (docs/benchmarks.md, "Figures behind
+//! the code's constants and choices"), but not always: every flippable crossed diagonal can have its two apexes on opposite sides of the
 //! segment (see the tests). Sloan's queue (1993) then finishes, flipping any crossed diagonal
 //! whose quadrilateral is strictly convex: O(k^2) at worst. Removing the crossed triangles and
 //! triangulating the two sides again would be about as fast but is wrong in general: the

@@ -76,12 +76,11 @@
 //! the bounds multiply to O(n^3) in the worst case (flips) and O(n^2) without the flips; neither
 //! is approached on typical polygons, where chains between corners are short and a step
 //! touches a few dozen triangles: on random stars and mazes the time per vertex grows only
-//! slowly from 10^3 to 10^5 vertices (`docs/benchmarks.md`; 10^5 vertices in about 1 s).
+//! slowly from 10^3 to 10^5 vertices (`docs/benchmarks.md`).
 //! Half-edges are found by their ends in a hash map (expected O(1)); only the start of an
 //! inserted segment is searched by turning round its first vertex, O(degree). Inputs that do
 //! more work: high degrees and long chains kept on B, as a square round a big convex hole
-//! (a 20000-gon: 2.7 s, against 1.3 s for a random star of 10^5 vertices). O(n) memory; no size
-//! limit.
+//! (figures in docs/benchmarks.md). O(n) memory; no size limit.
 
 mod funnel;
 

@@ -146,8 +146,7 @@ impl<P: Coord> Default for Workspace<P> {
 /// wide side into a few ray walks. An end that belongs to a part is one not defined by a vertex:
 /// a part bounded by the ray through a vertex `x` (beyond `x`) cannot find anything on that ray,
 /// and counting that ray would keep alive, all along a corridor, a part hugging a wall whose
-/// vertex opposite is `b`'s own neighbour (the `bars` benchmark: 9.5 million states for 13,000
-/// vertices, 7 million once ends were exact, 136,000 on the mesh swept along the corridor).
+/// vertex opposite is `b`'s own neighbour (the `bars` benchmark; figures in docs/benchmarks.md).
 ///
 /// The sweep: every part on either stack is a range of directions, the vertices of the fan
 /// around `b` are zero-width parts among them, and each round pops the part reaching highest
@@ -159,8 +158,7 @@ impl<P: Coord> Default for Workspace<P> {
 /// vertex sharing an end; `debug_assertions` builds check this against a search of the whole
 /// stack and list). A part that crosses a triangle wholly on one side of its apex walks on into
 /// the next one without going back to the stack: it is still the highest part, and nothing
-/// changed in the other cone (on a random star of 1000 vertices, three quarters of the triangles
-/// walked into; 2.0 of 14.6 million instructions saved).
+/// changed in the other cone (most of the triangles walked on random stars: docs/benchmarks.md).
 pub fn double_cone<'w, P: Coord>(
     polygon: &Polygon<P>,
     mesh: &Mesh,

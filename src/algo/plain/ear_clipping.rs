@@ -26,9 +26,9 @@ use crate::geom::kernel::Coord;
 pub(crate) const MAX_CLIP: usize = 64;
 
 /// Polygons of up to this many vertices are ear-clipped ([`super::rings`]), larger ones
-/// cut into monotone pieces: on the batch benchmark's 8- to 40-vertex polygons, clipping up to
-/// 32 instead of 16 vertices saves 3% of all the work (48 and 64 about the same again, with a
-/// worse worst case: O(n^3)).
+/// cut into monotone pieces: the batch benchmark's small polygons are cheaper clipped up to 32
+/// than up to 16 (docs/benchmarks.md); larger limits gain nothing and worsen the worst case,
+/// O(n^3).
 pub(crate) const CLIP_UP_TO: usize = 32;
 
 /// Ear clipping of one counter-clockwise simple polygon given as its cycle of points (flat
