@@ -124,14 +124,15 @@ pub struct Pieces {
 /// What cannot be repaired into anything: an outer ring of fewer than 3 distinct points or of
 /// zero area.
 pub fn repair_raw(raw: &RawPolygon) -> Result<Pieces, InvalidPolygon> {
-    repair_raw_validated(raw, &SweepOnly)
+    repair_raw_validated(raw, &SweepOnly).map(|(pieces, _)| pieces)
 }
 
-/// [`repair_raw`], each piece validated by `how`.
-pub(crate) fn repair_raw_validated(
+/// [`repair_raw`], each piece validated by `how`; with what was made beside each piece's
+/// validation, in the order of the pieces (the default for an invalid piece).
+pub(crate) fn repair_raw_validated<V: Validation>(
     raw: &RawPolygon,
-    how: &impl Validation,
-) -> Result<Pieces, InvalidPolygon> {
+    how: &V,
+) -> Result<(Pieces, Vec<V::Beside>), InvalidPolygon> {
     if raw.rings.is_empty() {
         return Err(InvalidPolygon::TooFewVertices {
             ring: Ring::Outer,
@@ -148,12 +149,12 @@ pub(crate) fn repair_raw_validated(
 }
 
 /// [`repair_raw`] on `points` (every vertex of `raw`, in order) of one kernel.
-fn repair_points<P: Coord>(
+fn repair_points<P: Coord, V: Validation>(
     raw: &RawPolygon,
     points: Vec<P>,
     grid: Grid,
-    how: &impl Validation,
-) -> Result<Pieces, InvalidPolygon>
+    how: &V,
+) -> Result<(Pieces, Vec<V::Beside>), InvalidPolygon>
 where
     AnyPolygon: From<Polygon<P>>,
 {
@@ -171,20 +172,26 @@ where
         .collect();
     let input_vertices = rings.iter().map(Vec::len).sum();
     let repaired = repair(rings, &grid)?;
-    let pieces = repaired
+    let (pieces, besides) = repaired
         .pieces
         .into_iter()
         .map(|rings| {
-            let (polygon, warnings) =
-                Polygon::from_grid_rings(rings, grid, input_vertices).map_err(|e| vec![e])?;
-            Ok((AnyPolygon::from(how.validated(polygon)?), warnings))
+            let (polygon, warnings) = match Polygon::from_grid_rings(rings, grid, input_vertices) {
+                Ok(built) => built,
+                Err(e) => return (Err(vec![e]), V::Beside::default()),
+            };
+            match how.validated(polygon) {
+                Ok((polygon, beside)) => (Ok((AnyPolygon::from(polygon), warnings)), beside),
+                Err(errors) => (Err(errors), V::Beside::default()),
+            }
         })
-        .collect();
-    Ok(Pieces {
+        .unzip();
+    let pieces = Pieces {
         pieces,
         repairs: repaired.repairs,
         warnings: repaired.warnings,
-    })
+    };
+    Ok((pieces, besides))
 }
 
 /// A loop with its role: an outer boundary (counter-clockwise) or a hole (clockwise).
