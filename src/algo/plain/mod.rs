@@ -8,7 +8,7 @@
 //!   clockwise; rings pairwise disjoint, no two points equal, flat vertices and any other
 //!   collinearity allowed (a [`Polygon`] whose rings do not touch, or a piece another algorithm
 //!   cut out). `polygon` is `rings` of such a [`Polygon`], swept along its longer side for
-//!   the walks of step 1, or the [`Premade`] copy made while it was validated; `try_polygon`
+//!   the walks of step 1, or the `Premade` copy made while it was validated; `try_polygon`
 //!   the same on rings still being validated.
 //! - `walks`: the boundary walks of touching rings (copies of a touch point as vertices of
 //!   their own, `docs/touching.md`).
