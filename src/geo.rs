@@ -29,7 +29,6 @@ use crate::geom::decimal::{Decimal, NumberError};
 use crate::geom::polygon::{AnyPolygon, Polygon, Ring, Warning};
 use crate::io::read::ParseError;
 use crate::outcome::Error;
-use crate::pipeline::PlainBeside;
 use crate::raw::RawPolygon;
 use geo_types::{Coord, CoordNum, LineString, MultiPolygon, Triangle};
 
@@ -122,7 +121,7 @@ pub(crate) fn raw_polygon<T: ExactCoord>(
 /// Validates a polygon on the kernel its coordinates need (duplicate consecutive vertices are
 /// dropped silently).
 fn valid(raw: &RawPolygon) -> Result<AnyPolygon, Error> {
-    AnyPolygon::from_raw_validated(raw, &PlainBeside)
+    AnyPolygon::from_raw_all_errors(raw)
         .map(|(polygon, _warnings)| polygon)
         .map_err(Error::Invalid)
 }
@@ -148,7 +147,7 @@ fn valid(raw: &RawPolygon) -> Result<AnyPolygon, Error> {
 pub fn polygon_with_warnings<T: ExactCoord>(
     polygon: &geo_types::Polygon<T>,
 ) -> Result<(Polygon, Vec<Warning>), Error> {
-    Polygon::from_raw_validated(&raw(polygon, 0)?, &PlainBeside).map_err(Error::Invalid)
+    Polygon::from_raw_all_errors(&raw(polygon, 0)?).map_err(Error::Invalid)
 }
 
 impl<T: ExactCoord> TryFrom<&geo_types::Polygon<T>> for RawPolygon {
@@ -174,7 +173,7 @@ impl<T: ExactCoord> TryFrom<&geo_types::Polygon<T>> for Polygon {
     /// of an invalid polygon, or with [`crate::InvalidPolygon::CoordinatesTooLarge`] when its
     /// coordinates need the wide kernel: [`AnyPolygon`] takes every polygon.
     fn try_from(polygon: &geo_types::Polygon<T>) -> Result<Polygon, Error> {
-        Polygon::from_raw_validated(&raw(polygon, 0)?, &PlainBeside)
+        Polygon::from_raw_all_errors(&raw(polygon, 0)?)
             .map(|(polygon, _warnings)| polygon)
             .map_err(Error::Invalid)
     }

@@ -5,17 +5,18 @@
 //! or carrying an [`Error`] that names what is wrong. One bad polygon never stops the others.
 //! Complexity: that of reading and validating (O(n log n)) plus the chosen algorithm's.
 
+use crate::algo::plain::{self, Premade};
 use crate::algo::{
-    asano, minitri, plain, pseudo, pseudo_hull, Algorithm, Pseudotriangulation, Pseudotriangulator,
+    asano, minitri, pseudo, pseudo_hull, Algorithm, Pseudotriangulation, Pseudotriangulator,
     TriangulateError, Triangulation, Triangulator,
 };
 use crate::geom::kernel::Coord;
 use crate::geom::polygon::{AnyPolygon, Polygon, Validation};
-use crate::geom::repair::{self};
+use crate::geom::repair;
 use crate::geom::validate::InvalidPolygon;
 use crate::io::read::{self, Format};
 use crate::raw::RawPolygon;
-use crate::verify::{self};
+use crate::verify;
 
 /// What to compute.
 #[derive(Clone, Debug)]
@@ -148,6 +149,17 @@ pub fn triangulate_with<P: Coord>(
     algorithm: Triangulator,
     options: &Options,
 ) -> Result<Triangulation, TriangulateError> {
+    triangulate_premade(polygon, algorithm, options, None)
+}
+
+/// [`triangulate_with`], MINITRI's step 1 and `ear` taking `premade`'s triangles when the
+/// pipeline made them already (beside the validation sweep, [`PlainBeside`]).
+fn triangulate_premade<P: Coord>(
+    polygon: &Polygon<P>,
+    algorithm: Triangulator,
+    options: &Options,
+    premade: Premade,
+) -> Result<Triangulation, TriangulateError> {
     let deadline = || {
         options
             .time_limit
@@ -158,8 +170,8 @@ pub fn triangulate_with<P: Coord>(
             crate::algo::touching(polygon, Algorithm::Asano, options.dp_limit, deadline())
         }
         Triangulator::Asano => asano::triangulate(polygon, options.dp_limit),
-        Triangulator::Ear => plain::triangulate(polygon),
-        Triangulator::Minitri => minitri::triangulate_within(polygon, deadline()),
+        Triangulator::Ear => plain::triangulate_premade(polygon, premade),
+        Triangulator::Minitri => minitri::triangulate_premade(polygon, premade, deadline()),
     }
 }
 
@@ -177,7 +189,13 @@ impl AnyPolygon {
     /// # Errors
     /// [`Error::Triangulate`] when the chosen algorithm does not apply.
     pub fn solve(&self, options: &Options) -> Result<Solved, Error> {
-        crate::with_polygon!(self, p => solve(p, options))
+        self.solve_premade(options, None)
+    }
+
+    /// [`AnyPolygon::solve`], with the plain triangulation the pipeline made beside the
+    /// validation sweep, if any.
+    fn solve_premade(&self, options: &Options, premade: Premade) -> Result<Solved, Error> {
+        crate::with_polygon!(self, p => solve_premade(p, options, premade))
     }
 }
 
@@ -234,10 +252,20 @@ pub const CORRUPT_WITH_EAR: &str = "ear";
 /// # Errors
 /// [`Error::Triangulate`] when the chosen algorithm does not apply.
 pub fn solve<P: Coord>(polygon: &Polygon<P>, options: &Options) -> Result<Solved, Error> {
+    solve_premade(polygon, options, None)
+}
+
+/// [`solve`], the chosen algorithm taking `premade`'s triangles when the pipeline made them
+/// already (the other algorithms of `--verify` make their own).
+fn solve_premade<P: Coord>(
+    polygon: &Polygon<P>,
+    options: &Options,
+    premade: Premade,
+) -> Result<Solved, Error> {
     let Some(algorithm) = options.algorithm.triangulator() else {
-        return solve_pseudo(polygon, options);
+        return solve_pseudo(polygon, options, premade);
     };
-    let mut triangulation = triangulate_with(polygon, algorithm, options)?;
+    let mut triangulation = triangulate_premade(polygon, algorithm, options, premade)?;
     // The environment is read only with `--verify` (a lookup per polygon costs as much as
     // writing its output's numbers).
     let corrupt = options
@@ -273,13 +301,19 @@ pub fn solve<P: Coord>(polygon: &Polygon<P>, options: &Options) -> Result<Solved
 
 /// `pseudo` (minimal, inside the plain triangulation) or `pseudo-hull` (minimum, of the hull;
 /// past `--time-limit`, minimal, `pseudo`'s greedy on the hull, with `stopped`).
-fn solve_pseudo<P: Coord>(polygon: &Polygon<P>, options: &Options) -> Result<Solved, Error> {
-    let triangulation = plain::triangulate(polygon)?;
+fn solve_pseudo<P: Coord>(
+    polygon: &Polygon<P>,
+    options: &Options,
+    premade: Premade,
+) -> Result<Solved, Error> {
+    let triangulation = plain::triangulate_premade(polygon, premade)?;
     let mut result = if options.algorithm == Algorithm::PseudoHull {
         let deadline = options
             .time_limit
             .and_then(|limit| std::time::Instant::now().checked_add(limit));
-        pseudo_hull::pseudotriangulate_within(polygon, deadline)?
+        // The hull's triangulation starts from the polygon's plain one: this one, not made again.
+        let plain = (polygon.touches() == 0).then(|| triangulation.triangles.clone());
+        pseudo_hull::pseudotriangulate_premade(polygon, plain, deadline)?
     } else {
         pseudo::minimal(polygon, &triangulation.triangles)
     };
@@ -426,7 +460,7 @@ pub fn process_raw(
     if options.repair {
         let repaired = repair::repair_raw_validated(&raw, &PlainBeside);
         drop(raw);
-        let pieces = match repaired {
+        let (pieces, premades) = match repaired {
             Err(e) => {
                 return vec![Outcome {
                     result: Err(Error::Invalid(vec![e])),
@@ -443,8 +477,9 @@ pub fn process_raw(
         return pieces
             .pieces
             .into_iter()
+            .zip(premades)
             .enumerate()
-            .map(|(k, piece)| {
+            .map(|(k, (piece, premade))| {
                 let mut warnings = input_warnings.take().unwrap_or_default();
                 // The repairs once, with the first piece: a ring touching itself k times gives
                 // k pieces and k repairs, and a copy for every piece grew as k^2.
@@ -463,7 +498,7 @@ pub fn process_raw(
                     Err(errors) => one.result = Err(Error::Invalid(errors)),
                     Ok((polygon, more)) => {
                         warnings.extend(more);
-                        one.result = polygon.solve(options);
+                        one.result = polygon.solve_premade(options, premade);
                         one.polygon = Some(polygon);
                     }
                 }
@@ -477,9 +512,9 @@ pub fn process_raw(
     drop(raw);
     match validated {
         Err(errors) => outcome.result = Err(Error::Invalid(errors)),
-        Ok((polygon, warnings)) => {
+        Ok((polygon, warnings, premade)) => {
             outcome.warnings = warnings;
-            outcome.result = polygon.solve(options);
+            outcome.result = polygon.solve_premade(options, premade);
             outcome.polygon = Some(polygon);
         }
     }
@@ -494,24 +529,27 @@ const TRIANGULATE_WHILE_VALIDATING: usize = 8192;
 /// rayon thread, for a large polygon: the two sweeps take about as long each. The triangulation
 /// of rings not yet known valid never panics and always ends
 /// ([`crate::algo::plain::try_polygon`]), and it is kept only if the polygon is valid
-/// and its rings do not touch (touching rings are relinked into walks, another polygon). On one
+/// and its rings do not touch (touching rings are relinked into walks, another polygon): then
+/// returned beside the polygon, for [`solve_premade`] to hand to the chosen algorithm. On one
 /// thread (`--jobs 1`) nothing would overlap: an invalid polygon would only be triangulated for
 /// nothing, so the sweep runs alone.
 pub(crate) struct PlainBeside;
 
 impl Validation for PlainBeside {
-    fn validated<P: Coord>(&self, polygon: Polygon<P>) -> Result<Polygon<P>, Vec<InvalidPolygon>> {
+    type Beside = Premade;
+
+    fn validated<P: Coord>(
+        &self,
+        polygon: Polygon<P>,
+    ) -> Result<(Polygon<P>, Premade), Vec<InvalidPolygon>> {
         if polygon.len() < TRIANGULATE_WHILE_VALIDATING || rayon::current_num_threads() <= 1 {
-            return polygon.validated();
+            return Ok((polygon.validated()?, None));
         }
-        let (contacts, plain) = rayon::join(
-            || polygon.sweep(),
-            || crate::algo::plain::try_polygon(&polygon),
-        );
+        let (contacts, plain) = rayon::join(|| polygon.sweep(), || plain::try_polygon(&polygon));
         let contacts = contacts?;
         if contacts.any() {
-            return polygon.settled(contacts);
+            return Ok((polygon.settled(contacts)?, None));
         }
-        Ok(polygon.with_walking_plain(plain))
+        Ok((polygon, plain))
     }
 }

@@ -24,8 +24,8 @@
 //!    last pseudotriangle.
 //!
 //! How S is found: the hull is triangulated once (the polygon with its holes by
-//! `algo::plain::polygon`, which takes the triangulation made while a large polygon
-//! was validated if nothing took it before; each hole and pocket by `algo::plain`; O(n log n)),
+//! `algo::plain::polygon`, or the pipeline's, made beside the validation sweep or for
+//! `pseudo`'s start; each hole and pocket by `algo::plain`; O(n log n)),
 //! with the edges of L and of the hull marked fixed (`algo/mesh.rs`), and its triangles
 //! fattened by Lawson flips (a heuristic for speed only: fat triangles make short sleeves). Walking along A1 just
 //! inside F crosses, at each inner vertex of A1, the diagonals inside F's angle there,
@@ -133,6 +133,19 @@ pub fn pseudotriangulate_within<P: Coord>(
     polygon: &Polygon<P>,
     deadline: Option<Instant>,
 ) -> Result<Pseudotriangulation, TriangulateError> {
+    pseudotriangulate_premade(polygon, None, deadline)
+}
+
+/// [`pseudotriangulate_within`], the polygon's own part of the hull triangulated by `premade`'s
+/// triangles when the caller made them already ([`plain::Premade`]).
+///
+/// # Errors
+/// As [`pseudotriangulate`].
+pub(crate) fn pseudotriangulate_premade<P: Coord>(
+    polygon: &Polygon<P>,
+    premade: plain::Premade,
+    deadline: Option<Instant>,
+) -> Result<Pseudotriangulation, TriangulateError> {
     if polygon.touches() > 0 {
         return Err(TriangulateError::Touching {
             algorithm: super::Algorithm::PseudoHull,
@@ -146,7 +159,7 @@ pub fn pseudotriangulate_within<P: Coord>(
     let counts = hull_counts(polygon, &hull);
     let target_faces = (2 * n).saturating_sub(counts.big_angles + 2);
     let target_edges = (3 * n).saturating_sub(counts.big_angles + 3);
-    let (triangles, fixed, work) = hull_triangles(polygon, &hull);
+    let (triangles, fixed, work) = hull_triangles(polygon, &hull, premade);
     // Kept for the greedy should the deadline pass (a copy only when there is one).
     let fallback = deadline.map(|_| triangles.clone());
     let (mesh, faces, expired) = construct(polygon, &triangles, &fixed, work, deadline);
@@ -227,10 +240,11 @@ fn construct<P: Coord>(
 fn hull_triangles<P: Coord>(
     polygon: &Polygon<P>,
     hull: &[usize],
+    premade: plain::Premade,
 ) -> (Vec<[usize; 3]>, Vec<(usize, usize)>, Vec<(usize, usize)>) {
     let n = polygon.len();
     let points = polygon.points();
-    let mut triangles = plain::polygon(polygon);
+    let mut triangles = plain::polygon(polygon, premade);
     let mut fixed: Vec<(usize, usize)> = (0..n).map(|i| (i, polygon.next(i))).collect();
     // Where to start: a half-edge of each first face's outer boundary, the face on its left.
     let mut work: Vec<(usize, usize)> = vec![(0, polygon.next(0))];

@@ -118,19 +118,31 @@ impl Grid {
 
 /// How a built polygon (`Polygon::build`, rings not yet known valid) becomes a valid one:
 /// its validation sweep ([`Polygon::sweep`]), and beside it whatever the caller chooses to run
-/// on the same rings (the pipeline: the plain triangulation for step 1, on a second core);
-/// then [`Polygon::settled`] on what the sweep learned. [`SweepOnly`] runs the sweep alone.
+/// on the same rings (the pipeline: the plain triangulation for step 1, on a second core),
+/// returned beside the valid polygon; then [`Polygon::settled`] on what the sweep learned.
+/// [`SweepOnly`] runs the sweep alone.
 pub(crate) trait Validation {
-    /// `polygon` validated: as [`Polygon::validated`] returns it, maybe with more prepared.
-    fn validated<P: Coord>(&self, polygon: Polygon<P>) -> Result<Polygon<P>, Vec<InvalidPolygon>>;
+    /// What is made beside the sweep (the default: nothing made, e.g. for an invalid piece).
+    type Beside: Default;
+
+    /// `polygon` validated, as [`Polygon::validated`] returns it, with what was made beside.
+    fn validated<P: Coord>(
+        &self,
+        polygon: Polygon<P>,
+    ) -> Result<(Polygon<P>, Self::Beside), Vec<InvalidPolygon>>;
 }
 
 /// The validation sweep alone ([`Polygon::validated`]).
 pub(crate) struct SweepOnly;
 
 impl Validation for SweepOnly {
-    fn validated<P: Coord>(&self, polygon: Polygon<P>) -> Result<Polygon<P>, Vec<InvalidPolygon>> {
-        polygon.validated()
+    type Beside = ();
+
+    fn validated<P: Coord>(
+        &self,
+        polygon: Polygon<P>,
+    ) -> Result<(Polygon<P>, ()), Vec<InvalidPolygon>> {
+        Ok((polygon.validated()?, ()))
     }
 }
 
@@ -161,33 +173,6 @@ pub struct Polygon<P = Point> {
     /// With touching rings: whether each stored vertex is a copy of a touch point (its point
     /// is stored more than once); empty otherwise (all points distinct).
     copy: Vec<bool>,
-    /// A plain triangulation for step 1's walks, made beside the validation sweep by whoever
-    /// validated the polygon (the pipeline, for large polygons: [`Polygon::with_walking_plain`]),
-    /// until taken.
-    walking_plain: TakeOnce<Vec<[usize; 3]>>,
-}
-
-/// A value that can be taken once through a shared reference (then it is gone); a clone starts
-/// empty. It holds what is worth keeping only until its one user takes it, without a copy.
-#[derive(Debug, Default)]
-struct TakeOnce<T>(std::sync::Mutex<Option<T>>);
-
-impl<T> TakeOnce<T> {
-    fn new(value: Option<T>) -> TakeOnce<T> {
-        TakeOnce(std::sync::Mutex::new(value))
-    }
-
-    fn take(&self) -> Option<T> {
-        // A poisoned lock (a panic while it was held, which `take` cannot cause) only loses the
-        // value, which is then made again.
-        self.0.lock().ok().and_then(|mut value| value.take())
-    }
-}
-
-impl<T> Clone for TakeOnce<T> {
-    fn clone(&self) -> TakeOnce<T> {
-        TakeOnce::new(None)
-    }
 }
 
 /// A valid polygon of either kernel, as [`AnyPolygon::from_raw`] chose it.
@@ -229,19 +214,23 @@ impl AnyPolygon {
         raw: &RawPolygon,
     ) -> Result<(AnyPolygon, Vec<Warning>), Vec<InvalidPolygon>> {
         AnyPolygon::from_raw_validated(raw, &SweepOnly)
+            .map(|(polygon, warnings, ())| (polygon, warnings))
     }
 
-    /// [`AnyPolygon::from_raw_all_errors`], validated by `how`.
-    pub(crate) fn from_raw_validated(
+    /// [`AnyPolygon::from_raw_all_errors`], validated by `how`, with what it made beside.
+    #[allow(clippy::type_complexity)]
+    pub(crate) fn from_raw_validated<V: Validation>(
         raw: &RawPolygon,
-        how: &impl Validation,
-    ) -> Result<(AnyPolygon, Vec<Warning>), Vec<InvalidPolygon>> {
+        how: &V,
+    ) -> Result<(AnyPolygon, Vec<Warning>, V::Beside), Vec<InvalidPolygon>> {
         match Polygon::from_raw_validated(raw, how) {
             Err(errors) if matches!(errors[..], [InvalidPolygon::CoordinatesTooLarge { .. }]) => {
                 let (polygon, warnings) = Polygon::build_wide(raw).map_err(|e| vec![e])?;
-                Ok((AnyPolygon::Wide(how.validated(polygon)?), warnings))
+                let (polygon, beside) = how.validated(polygon)?;
+                Ok((AnyPolygon::Wide(polygon), warnings, beside))
             }
-            other => other.map(|(polygon, warnings)| (AnyPolygon::Fast(polygon), warnings)),
+            other => other
+                .map(|(polygon, warnings, beside)| (AnyPolygon::Fast(polygon), warnings, beside)),
         }
     }
 
@@ -326,7 +315,6 @@ impl AnyPolygon {
                     source_ring: p.source_ring.clone(),
                     touches: p.touches,
                     copy: p.copy.clone(),
-                    walking_plain: TakeOnce::default(),
                 })
             }
         }
@@ -364,15 +352,18 @@ impl Polygon {
         raw: &RawPolygon,
     ) -> Result<(Polygon, Vec<Warning>), Vec<InvalidPolygon>> {
         Polygon::from_raw_validated(raw, &SweepOnly)
+            .map(|(polygon, warnings, ())| (polygon, warnings))
     }
 
-    /// [`Polygon::from_raw_all_errors`], validated by `how`.
-    pub(crate) fn from_raw_validated(
+    /// [`Polygon::from_raw_all_errors`], validated by `how`, with what it made beside.
+    #[allow(clippy::type_complexity)]
+    pub(crate) fn from_raw_validated<V: Validation>(
         raw: &RawPolygon,
-        how: &impl Validation,
-    ) -> Result<(Polygon, Vec<Warning>), Vec<InvalidPolygon>> {
+        how: &V,
+    ) -> Result<(Polygon, Vec<Warning>, V::Beside), Vec<InvalidPolygon>> {
         let (polygon, warnings) = Polygon::build(raw).map_err(|e| vec![e])?;
-        Ok((how.validated(polygon)?, warnings))
+        let (polygon, beside) = how.validated(polygon)?;
+        Ok((polygon, warnings, beside))
     }
 
     /// Grid conversion, numbering, duplicate removal and winding, without the sweep.
@@ -450,13 +441,6 @@ impl<P: Coord> Polygon<P> {
         super::touch::walks(self, &contacts)
     }
 
-    /// The polygon holding `plain`, a plain triangulation for step 1's walks of exactly these
-    /// stored vertices ([`crate::algo::plain::try_polygon`]), until taken.
-    pub(crate) fn with_walking_plain(mut self, plain: Option<Vec<[usize; 3]>>) -> Polygon<P> {
-        self.walking_plain = TakeOnce::new(plain);
-        self
-    }
-
     /// A polygon without rings yet, with room for `vertices` vertices in `rings` rings (rings are
     /// pushed by the caller, who closes `ring_starts`).
     fn empty(vertices: usize, rings: usize, input_vertices: usize, grid: Grid) -> Polygon<P> {
@@ -470,7 +454,6 @@ impl<P: Coord> Polygon<P> {
             source_ring: Vec::new(),
             touches: 0,
             copy: Vec::new(),
-            walking_plain: TakeOnce::default(),
         }
     }
 
@@ -528,14 +511,7 @@ impl<P: Coord> Polygon<P> {
             source_ring: order.iter().map(|&i| self.ring_of[i]).collect(),
             touches,
             copy: order.iter().map(|&i| copy[i]).collect(),
-            walking_plain: TakeOnce::default(),
         }
-    }
-
-    /// The plain triangulation made for step 1's walks beside the validation sweep, if any and
-    /// not taken yet: the first call takes it (its memory goes with it).
-    pub(crate) fn take_walking_plain(&self) -> Option<Vec<[usize; 3]>> {
-        self.walking_plain.take()
     }
 
     /// Whether stored vertex `i` is a copy of a touch point: its point is stored more than once
@@ -569,7 +545,6 @@ impl<P: Coord> Polygon<P> {
             source_ring: Vec::new(),
             touches: 0,
             copy: Vec::new(),
-            walking_plain: TakeOnce::default(),
         }
     }
 

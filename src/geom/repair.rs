@@ -1,40 +1,25 @@
-//! `--repair`: the usual defects of real polygons mended without new points, before validation.
+//! `--repair`: the usual defects of real polygons mended without new points, before validation
+//! (docs/repair.md describes each repair, its message and its cost).
 //!
-//! Input contract: the rings of one input polygon as points of either exact kernel (on its grid
-//! ([`crate::geom::polygon`]'s `to_grid`) when it fits the fast kernel, else the input decimals
-//! themselves, [`crate::geom::wide`]), each vertex with its input number; ring 0 the outer ring. Output guarantee
-//! (`repair`): one or more pieces, each an outer ring (counter-clockwise) and its holes
-//! (clockwise) made only of input vertices at their input coordinates, whose union is the region
-//! the input describes (the points covered an odd number of times by the rings' loops, as OGC
-//! `make_valid` reads a ring); every change reported as a [`Repair`] naming the ring, vertex
-//! numbers and coordinates. The pieces are then validated as any polygon: what needs a new point
-//! (rings that properly cross) is still rejected there.
+//! Input contract: the rings of one input polygon as points of either exact kernel (on its grid,
+//! `to_grid` of [`crate::geom::polygon`], when it fits the fast kernel, else the input decimals,
+//! [`crate::geom::wide`]), each vertex with its input number; ring 0 the outer ring.
+//! Output guarantee (`repair`): one or more pieces, each an outer ring (counter-clockwise) and its
+//! holes (clockwise) made only of input vertices at their input coordinates, whose union is the
+//! region the input describes (the points covered an odd number of times by the rings' loops, as
+//! OGC `make_valid` reads a ring); every change a [`Repair`] naming rings, vertices and
+//! coordinates. The pieces are then validated as any polygon: rings that properly cross (which
+//! would need a new point) are still rejected there. Every decision is an exact kernel test.
 //!
-//! The repairs, in order:
-//! 1. per ring, repeated consecutive points dropped (a [`Warning`], as without `--repair`) and
-//!    spikes removed (a vertex where the boundary folds back onto itself), repeatedly, so that a
-//!    spike left by removing another goes too;
-//! 2. rings with fewer than 3 distinct points, or all on one line, dropped (holes only: without
-//!    its outer ring nothing is left, which stays an error);
-//! 3. a ring through one point twice split there into its loops; a loop inside an odd number of
-//!    the ring's other loops is a hole of the outer ring's region (the "inverted hole"), or an
-//!    island inside a hole; otherwise a separate polygon (a figure eight gives two) or hole;
-//! 4. edges shared by two rings in opposite directions (holes sharing a stretch; a hole sharing
-//!    a stretch with the outer ring) removed, after cutting collinear overlapping edges at each
-//!    other's vertices, and the rings around them traced again: two holes become one, a hole
-//!    on the outer ring becomes a notch of it. Tracing turns, at a point with several ways on,
-//!    into the first edge clockwise from the one it came by, which keeps the region on the left
-//!    and splits rings where they touch;
-//! 5. a vertex lying inside an edge (found by the validation sweep) inserted there as a copy (same
-//!    point, same input number); a loop that then passes its own point twice split as in step 3;
-//!    loops touching in a cycle (a hole touching the outer ring twice, two holes touching twice),
-//!    which cuts the interior into pieces, traced again as in step 4: each piece its own polygon.
-//!    Loops touching without a cycle (valid in OGC terms) are left as they came.
+//! The steps, in order: 1. repeated points dropped and spikes removed, per ring, repeatedly;
+//! 2. degenerate holes dropped; 3. a ring through one point twice split into its loops; 4. edges
+//! shared in opposite directions removed and the rings traced again; 5. a vertex inside an edge
+//! of its own ring cut into it and split as in 3, and loops touching in a cycle traced again as
+//! in 4 (5a, 5b), each piece of the interior its own polygon.
 //!
-//! Every decision is exact (the kernel's orientation and collinearity tests). Complexity:
-//! O(n log n) for steps 1, 2, 4 and 5 (a sort of the edges by their supporting line, hash maps of
-//! edges and points, one sweep); step 3 costs O(k n) for a ring split into k loops, and placing h
-//! holes into s > 1 outer rings O(h n).
+//! Bound: O(n log n) for steps 1, 2, 4 and 5 (a sort of the edges by their supporting line, hash
+//! maps of edges and points, one sweep); O(k n) for step 3 on a ring split into k loops, and
+//! O(h n) to place h holes into several outer rings.
 
 use super::kernel::{cmp_angle_from, cross, line_through, on_segment, Area, Coord, Point};
 use super::polygon::{
@@ -124,14 +109,15 @@ pub struct Pieces {
 /// What cannot be repaired into anything: an outer ring of fewer than 3 distinct points or of
 /// zero area.
 pub fn repair_raw(raw: &RawPolygon) -> Result<Pieces, InvalidPolygon> {
-    repair_raw_validated(raw, &SweepOnly)
+    repair_raw_validated(raw, &SweepOnly).map(|(pieces, _)| pieces)
 }
 
-/// [`repair_raw`], each piece validated by `how`.
-pub(crate) fn repair_raw_validated(
+/// [`repair_raw`], each piece validated by `how`; with what was made beside each piece's
+/// validation, in the order of the pieces (the default for an invalid piece).
+pub(crate) fn repair_raw_validated<V: Validation>(
     raw: &RawPolygon,
-    how: &impl Validation,
-) -> Result<Pieces, InvalidPolygon> {
+    how: &V,
+) -> Result<(Pieces, Vec<V::Beside>), InvalidPolygon> {
     if raw.rings.is_empty() {
         return Err(InvalidPolygon::TooFewVertices {
             ring: Ring::Outer,
@@ -148,12 +134,12 @@ pub(crate) fn repair_raw_validated(
 }
 
 /// [`repair_raw`] on `points` (every vertex of `raw`, in order) of one kernel.
-fn repair_points<P: Coord>(
+fn repair_points<P: Coord, V: Validation>(
     raw: &RawPolygon,
     points: Vec<P>,
     grid: Grid,
-    how: &impl Validation,
-) -> Result<Pieces, InvalidPolygon>
+    how: &V,
+) -> Result<(Pieces, Vec<V::Beside>), InvalidPolygon>
 where
     AnyPolygon: From<Polygon<P>>,
 {
@@ -171,20 +157,26 @@ where
         .collect();
     let input_vertices = rings.iter().map(Vec::len).sum();
     let repaired = repair(rings, &grid)?;
-    let pieces = repaired
+    let (pieces, besides) = repaired
         .pieces
         .into_iter()
         .map(|rings| {
-            let (polygon, warnings) =
-                Polygon::from_grid_rings(rings, grid, input_vertices).map_err(|e| vec![e])?;
-            Ok((AnyPolygon::from(how.validated(polygon)?), warnings))
+            let (polygon, warnings) = match Polygon::from_grid_rings(rings, grid, input_vertices) {
+                Ok(built) => built,
+                Err(e) => return (Err(vec![e]), V::Beside::default()),
+            };
+            match how.validated(polygon) {
+                Ok((polygon, beside)) => (Ok((AnyPolygon::from(polygon), warnings)), beside),
+                Err(errors) => (Err(errors), V::Beside::default()),
+            }
         })
-        .collect();
-    Ok(Pieces {
+        .unzip();
+    let pieces = Pieces {
         pieces,
         repairs: repaired.repairs,
         warnings: repaired.warnings,
-    })
+    };
+    Ok((pieces, besides))
 }
 
 /// A loop with its role: an outer boundary (counter-clockwise) or a hole (clockwise).

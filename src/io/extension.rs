@@ -3,7 +3,59 @@
 //! written (`-o FILE` names the output format). Lookups ignore case.
 
 use super::read::Format;
-use super::write::{svg, OutputFormat};
+
+/// An output format (its writer: `io/write/`, `OutputFormat::sink`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum OutputFormat {
+    /// The JSON document of `docs/cli.md`.
+    Json,
+    /// A GeoJSON FeatureCollection, one Feature per input feature (a GeometryCollection of its
+    /// triangles as Polygons; `io/write/features.rs`).
+    GeoJson,
+    /// GeoJSON Lines: the same Features, one per line (`io/write/features.rs`).
+    GeoJsonLines,
+    /// A GeoJSON FeatureCollection, one Feature per triangle (`io/write/geojson.rs`).
+    GeoJsonTriangles,
+    /// WKT, one GEOMETRYCOLLECTION of triangle POLYGONs per line and input feature
+    /// (`io/write/wkt.rs`).
+    Wkt,
+    /// CSV, one row per input feature: its triangles as WKT, its id and properties, minitri's
+    /// facts (`io/write/csv.rs`).
+    Csv,
+    /// An SVG picture, drawn in this style (`io/write/svg.rs`).
+    Svg(Style),
+}
+
+/// How to draw an SVG picture, beyond what the outcomes say.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Style {
+    /// Write vertex numbers at any size (`--labels`); otherwise only up to `svg::LABELS_MAX`
+    /// vertices.
+    pub labels: bool,
+}
+
+impl OutputFormat {
+    /// The format a file name's extension stands for (`None` for an unknown one): `json`,
+    /// `geojson`, `geojsonl` (or `geojsons`, `ndjson`, `jsonl`), `wkt`, `csv`, `svg`; from the
+    /// table below.
+    pub fn from_extension(extension: &str) -> Option<OutputFormat> {
+        find(extension)?.write
+    }
+
+    /// The file extension of this format, without the dot: its first row in the table
+    /// (per-triangle GeoJSON: GeoJSON's; any SVG style: SVG's).
+    pub fn extension(self) -> &'static str {
+        let format = match self {
+            OutputFormat::GeoJsonTriangles => OutputFormat::GeoJson,
+            OutputFormat::Svg(_) => OutputFormat::Svg(Style::default()),
+            other => other,
+        };
+        TABLE
+            .iter()
+            .find(|e| e.write == Some(format))
+            .map_or("json", |e| e.name)
+    }
+}
 
 /// One file extension (lowercase, without the dot) and what it stands for.
 pub(crate) struct Extension {
@@ -34,7 +86,7 @@ const fn entry(
 const GEOJSON: Option<Format> = Some(Format::GeoJson);
 const VERTICES: Option<Format> = Some(Format::Vertices);
 const GEOJSONL: Option<OutputFormat> = Some(OutputFormat::GeoJsonLines);
-const SVG: OutputFormat = OutputFormat::Svg(svg::Style { labels: false });
+const SVG: OutputFormat = OutputFormat::Svg(Style { labels: false });
 
 /// Every extension minitri knows; an output format's own extension is its first row.
 pub(crate) const TABLE: &[Extension] = &[

@@ -2,10 +2,7 @@
 //! of file extensions serves both (`io/extension.rs`).
 pub(crate) mod extension;
 pub mod read;
-// The writers serve the command line (and the Python package) alone: public (and hidden) with
-// `internals`; without it only the extension table reads their formats.
+// The writers serve the command line (and the Python package) alone: a library build without
+// the `internals` feature does not compile them (the extension table holds their formats).
 #[cfg(feature = "internals")]
 pub mod write;
-#[cfg(not(feature = "internals"))]
-#[allow(dead_code)]
-pub(crate) mod write;

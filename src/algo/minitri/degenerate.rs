@@ -184,7 +184,7 @@ pub fn minimally_degenerate_and_mesh_until<P: Coord>(
     polygon: &Polygon<P>,
     deadline: Option<std::time::Instant>,
 ) -> (Vec<Degenerate>, Vec<[usize; 3]>, usize) {
-    let plain = crate::algo::plain::polygon(polygon);
+    let plain = crate::algo::plain::polygon(polygon, None);
     minimally_degenerate_over_until(polygon, plain, deadline)
 }
 
@@ -210,7 +210,7 @@ pub fn minimally_degenerate_with<P: Coord>(
     polygon: &Polygon<P>,
     policy: RayPolicy,
 ) -> Vec<Degenerate> {
-    let plain = crate::algo::plain::polygon(polygon);
+    let plain = crate::algo::plain::polygon(polygon, None);
     minimally_degenerate_over_with(polygon, plain, None, policy).0
 }
 

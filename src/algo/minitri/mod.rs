@@ -31,6 +31,7 @@ pub mod ray_shooting;
 pub mod small;
 mod staircase;
 
+use super::plain::Premade;
 use super::{Algorithm, Stopped, TriangulateError, Triangulation};
 use crate::geom::kernel::Coord;
 use crate::geom::polygon::Polygon;
@@ -65,14 +66,28 @@ pub fn triangulate_within<P: Coord>(
     polygon: &Polygon<P>,
     deadline: Option<Instant>,
 ) -> Result<Triangulation, TriangulateError> {
+    triangulate_premade(polygon, None, deadline)
+}
+
+/// [`triangulate_within`], step 1 walking `premade`'s triangles when the caller made them
+/// already (the pipeline, beside the validation sweep).
+///
+/// # Errors
+/// As [`triangulate_within`].
+pub(crate) fn triangulate_premade<P: Coord>(
+    polygon: &Polygon<P>,
+    premade: Premade,
+    deadline: Option<Instant>,
+) -> Result<Triangulation, TriangulateError> {
     if polygon.touches() > 0 {
         return super::touching(polygon, Algorithm::Minitri, 0, deadline);
     }
     if polygon.holes() > 0 {
-        return triangulate_general(polygon, deadline);
+        return triangulate_general_premade(polygon, premade, deadline);
     }
+    let plain = super::plain::polygon(polygon, premade);
     let (mdts, base, unexamined) =
-        degenerate::minimally_degenerate_and_mesh_until(polygon, deadline);
+        degenerate::minimally_degenerate_over_until(polygon, plain, deadline);
     let chosen = circle_mis(polygon, &mdts);
     drop(mdts);
     // With nothing chosen the only piece is P itself, and step 1's plain triangulation is one;
@@ -127,8 +142,19 @@ pub fn triangulate_general<P: Coord>(
     polygon: &Polygon<P>,
     deadline: Option<Instant>,
 ) -> Result<Triangulation, TriangulateError> {
+    triangulate_general_premade(polygon, None, deadline)
+}
+
+/// [`triangulate_general`], step 1 walking `premade`'s triangles when the caller made them
+/// already.
+fn triangulate_general_premade<P: Coord>(
+    polygon: &Polygon<P>,
+    premade: Premade,
+    deadline: Option<Instant>,
+) -> Result<Triangulation, TriangulateError> {
+    let plain = super::plain::polygon(polygon, premade);
     let (mdts, base, unexamined) =
-        degenerate::minimally_degenerate_and_mesh_until(polygon, deadline);
+        degenerate::minimally_degenerate_over_until(polygon, plain, deadline);
     general_from(polygon, mdts, base, unexamined, deadline)
 }
 

@@ -551,7 +551,7 @@ mod tests {
         let mut shot = 0;
         for ring in &rings {
             let p = polygon(&[ring]);
-            let mut mesh = Mesh::new(&p, crate::algo::plain::polygon(&p));
+            let mut mesh = Mesh::new(&p, crate::algo::plain::polygon(&p, None));
             mesh.flip_towards_delaunay(&p, 4 * p.len());
             let shooter = Shooter::new(&p, &mesh);
             for t in 0..mesh.triangle_count() {

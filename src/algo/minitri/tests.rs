@@ -497,7 +497,7 @@ fn wide_polygons_are_swept_along_their_length_and_found_alike() {
         for tall in [false, true] {
             let ring = bars_ring(columns, seed, tall);
             let p = polygon(&[&ring]);
-            let problems = plain_problems(&p, crate::algo::plain::polygon(&p));
+            let problems = plain_problems(&p, crate::algo::plain::polygon(&p, None));
             assert!(problems.is_empty(), "seed {seed} tall {tall}: {problems:?}");
             found[usize::from(tall)] = checked_against_the_sweep(&p, &ring).len();
         }
@@ -1062,16 +1062,18 @@ fn a_past_deadline_bounds_step_1_without_holes() {
 }
 
 /// A large polygon is triangulated for step 1 on a second thread while the pipeline validates it
-/// (`pipeline::PlainBeside`): the mesh taken is the one made afterwards (here through the
-/// quarter-turned sweep of a wide polygon and the usual one of a tall polygon, with and without
-/// a hole), it is taken once, and an invalid polygon is refused as before.
+/// (`pipeline::PlainBeside`): the triangulation returned beside the polygon is the one made
+/// afterwards (here through the quarter-turned sweep of a wide polygon and the usual one of a
+/// tall polygon, with and without a hole), step 1 walks it, and an invalid polygon is refused
+/// as before.
 #[test]
 fn the_mesh_made_while_validating_is_the_mesh() {
     use crate::test_support::{comb, raw};
     let beside = |rings: &[&[(i64, i64)]]| {
-        Polygon::from_raw_validated(&raw(rings), &crate::pipeline::PlainBeside)
-            .expect("a valid test polygon")
-            .0
+        let (polygon, _warnings, premade) =
+            Polygon::from_raw_validated(&raw(rings), &crate::pipeline::PlainBeside)
+                .expect("a valid test polygon");
+        (polygon, premade)
     };
     let wide = comb(3000, 1, 3); // 12,002 vertices, 6,000 wide and 4 tall
                                  // The overlap needs two threads, whatever the machine running the tests has.
@@ -1091,13 +1093,12 @@ fn the_mesh_made_while_validating_is_the_mesh() {
     ];
     for rings in &cases {
         let rings: Vec<&[(i64, i64)]> = rings.iter().map(Vec::as_slice).collect();
-        let p = pool.install(|| beside(&rings));
-        let made = p.take_walking_plain().expect("made while validating");
-        assert!(p.take_walking_plain().is_none());
-        assert_eq!(crate::algo::plain::polygon(&p), made);
-        let fresh = polygon(&rings);
-        let t = super::triangulate_within(&fresh, None).unwrap();
+        let (p, made) = pool.install(|| beside(&rings));
+        let made = made.expect("made while validating");
+        assert_eq!(crate::algo::plain::polygon(&p, None), made);
+        let t = super::triangulate_premade(&p, Some(made), None).unwrap();
         assert!(crate::verify::check(&p, &t).valid);
+        assert_eq!(t.triangles, super::triangulate_within(&p, None).unwrap().triangles);
         let plain = p.len() + 2 * p.holes() - 2;
         assert_eq!(t.triangles.len(), plain - t.degenerate.len());
     }
@@ -1106,10 +1107,7 @@ fn the_mesh_made_while_validating_is_the_mesh() {
         .num_threads(1)
         .build()
         .unwrap();
-    assert!(one
-        .install(|| beside(&[&wide]))
-        .take_walking_plain()
-        .is_none());
+    assert!(one.install(|| beside(&[&wide])).1.is_none());
     // A tooth's top moved below the base: its edges cross the base.
     let mut bad = wide.clone();
     bad[4] = (bad[4].0, -1);
@@ -1281,7 +1279,7 @@ fn over_the_walks_mesh_policies_agree<P: Coord>(p: &Polygon<P>, what: &str) {
         let plain = if p.touches() > 0 {
             crate::algo::plain::walks(p).unwrap()
         } else {
-            crate::algo::plain::polygon(p)
+            crate::algo::plain::polygon(p, None)
         };
         let (mut found, _, unexamined) = minimally_degenerate_over_with(p, plain, None, policy);
         assert_eq!(unexamined, 0);

@@ -8,8 +8,8 @@
 //!   clockwise; rings pairwise disjoint, no two points equal, flat vertices and any other
 //!   collinearity allowed (a [`Polygon`] whose rings do not touch, or a piece another algorithm
 //!   cut out). `polygon` is `rings` of such a [`Polygon`], swept along its longer side for
-//!   the walks of step 1, or the copy made while it was validated; `try_polygon` the same on
-//!   rings still being validated.
+//!   the walks of step 1, or the `Premade` copy made while it was validated; `try_polygon`
+//!   the same on rings still being validated.
 //! - `walks`: the boundary walks of touching rings (copies of a touch point as vertices of
 //!   their own, `docs/touching.md`).
 //! - [`triangulate`]: the `ear` algorithm on any valid polygon, as a [`Triangulation`].
@@ -67,6 +67,17 @@ use std::cmp::Ordering;
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn triangulate<P: Coord>(polygon: &Polygon<P>) -> Result<Triangulation, TriangulateError> {
+    triangulate_premade(polygon, None)
+}
+
+/// [`triangulate`], taking `premade`'s triangles when the caller made them already.
+///
+/// # Errors
+/// As [`triangulate`].
+pub(crate) fn triangulate_premade<P: Coord>(
+    polygon: &Polygon<P>,
+    premade: Premade,
+) -> Result<Triangulation, TriangulateError> {
     if polygon.touches() > 0 {
         return super::touching(polygon, Algorithm::Ear, 0, None);
     }
@@ -74,13 +85,18 @@ pub fn triangulate<P: Coord>(polygon: &Polygon<P>) -> Result<Triangulation, Tria
         algorithm: Algorithm::Ear,
         // The triangulation MINITRI's step 1 walks (fatter triangles on wide polygons, and on
         // large ones made while the polygon was validated).
-        triangles: self::polygon(polygon),
+        triangles: self::polygon(polygon, premade),
         degenerate: Vec::new(),
         optimal: false,
         lower_bound: None,
         stopped: None,
     })
 }
+
+/// A plain triangulation of a valid polygon whose rings do not touch, made ahead of its use
+/// (by the pipeline, beside the validation sweep: [`try_polygon`]): exactly the triangles
+/// `polygon` makes for it, or `None` to have them made there.
+pub(crate) type Premade = Option<Vec<[usize; 3]>>;
 
 /// The plain triangulation of simple rings given as points one after another (see the module
 /// documentation): `ring_starts[k]` is the index of the first point of ring `k` (`[0]` for one
@@ -101,8 +117,9 @@ pub(crate) fn rings<P: Coord>(pts: &[P], ring_starts: &[usize]) -> Vec<[usize; 3
 
 /// `rings` of a valid polygon whose rings do not touch, as stored vertex indices: the
 /// triangulation MINITRI's step 1 walks. Above `CLIP_UP_TO` vertices it is swept along x when
-/// the bounding box is more than twice as wide as tall, else along y as always; a triangulation
-/// made while the polygon was validated (`try_polygon`) is taken instead when there is one.
+/// the bounding box is more than twice as wide as tall, else along y as always; the triangles
+/// of `premade` (made while the polygon was validated, `try_polygon`) are returned instead when
+/// there are some.
 ///
 /// The monotone pieces are swept bottom to top, so a long horizontal corridor is one wide piece
 /// whose walls, vertices at nearly the same heights, get joined by long fans; walks through
@@ -112,8 +129,8 @@ pub(crate) fn rings<P: Coord>(pts: &[P], ring_starts: &[usize]) -> Vec<[usize; 3
 /// unchanged) meets its walls' vertices alternately: short fans. A corridor crossing the sweep
 /// elsewhere in the same polygon is still slow, never wrong. A polygon about as wide as tall
 /// keeps the usual sweep, which needs no turned copy of its points (16 bytes per vertex).
-pub(crate) fn polygon<P: Coord>(polygon: &Polygon<P>) -> Vec<[usize; 3]> {
-    if let Some(plain) = polygon.take_walking_plain() {
+pub(crate) fn polygon<P: Coord>(polygon: &Polygon<P>, premade: Premade) -> Vec<[usize; 3]> {
+    if let Some(plain) = premade {
         return plain; // the same triangles, made while the polygon was validated
     }
     if polygon.len() <= CLIP_UP_TO {

@@ -109,7 +109,7 @@ fn at(p: &Polygon, x: i64, y: i64) -> usize {
 /// reported, and the boundary of the face left of the first new edge (what is left of F).
 fn first_step(p: &Polygon) -> (Vec<Vec<usize>>, Vec<usize>) {
     let hull = hull_cycle(p.points());
-    let (triangles, fixed, _) = hull_triangles(p, &hull);
+    let (triangles, fixed, _) = hull_triangles(p, &hull, None);
     let (mut mesh, guard) = setup(p, &triangles, &fixed, None);
     let h = mesh.half_from(0, p.next(0)).expect("outer edge");
     let (mut faces, mut work) = (Vec::new(), Vec::new());

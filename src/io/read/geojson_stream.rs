@@ -1,47 +1,24 @@
 //! Streaming GeoJSON reader: the features of a FeatureCollection, and the values of a
-//! newline-delimited (or concatenated) GeoJSON input, one at a time, with exact numbers.
+//! newline-delimited (or concatenated) GeoJSON input, one at a time, with exact numbers
+//! (`serde_json` with `arbitrary_precision`, never through `f64`). docs/cli.md ("Streaming")
+//! says what is streamed and why the `geojson` crate's reader is not used.
 //!
 //! Input contract: the same documents as [`super::geojson`], from any [`BufRead`]. Output
-//! guarantee: [`Event`]s in input order, pushed to a callback as soon as each feature (or
-//! top-level value) has been read, so memory holds one feature at a time, not the document (the
-//! first top-level value's parts wait until the next value starts, or the input ends: whether
-//! their failures carry a location depends on whether there are several values).
-//! Numbers are read by `serde_json` with `arbitrary_precision`, exactly as written, never through
-//! `f64` (the `geojson` crate's `FeatureReader` finds the features by looking for the first `[`
-//! in the text and yields `f64` positions, so it is not used).
+//! guarantee: [`Event`]s in input order, pushed to a callback as each feature (or top-level
+//! value) is read: each top-level value in turn, and inside a FeatureCollection whose `"type"`
+//! comes before `"features"` each feature in turn; anything else is one value. A feature, value
+//! or GeometryCollection member that is not a polygon is an [`Event::Failed`] (or a failed
+//! part) and reading goes on, unlike [`super::geojson::read`]'s all or nothing; a JSON syntax
+//! error stops reading ([`Stop::Parse`]) after the events pushed. Messages are those of
+//! [`super::geojson::read`] (`feature 3, ring 1: ...`; `line 5, column 1: ...` for a value of
+//! several). [`read_line`] reads one line of GeoJSON Lines alone; [`looks_line_delimited`]
+//! recognises such an input by its start.
 //!
-//! What is streamed: each top-level JSON value in turn (so a GeoJSON Lines file is read line by
-//! line), and inside a FeatureCollection object whose `"type"` comes before its `"features"` (as
-//! every writer puts it), each feature in turn. Anything else (a single geometry, a Feature, a
-//! FeatureCollection with `"features"` before `"type"`) is read as one value.
-//!
-//! Error semantics, which differ from [`super::geojson::read`] (all or nothing) on purpose, so
-//! that one bad record does not stop the others: a feature or top-level value that is not a
-//! polygon is reported as an [`Event::Failed`] and reading goes on, and so is each member of a
-//! GeometryCollection that is not a polygon, a failed part among its feature's parts (the
-//! collection's polygons stand); a JSON syntax error stops
-//! reading ([`Stop::Parse`]), after the events already pushed. Messages are those of
-//! [`super::geojson::read`]: `feature 3, ring 1: ...` inside a FeatureCollection, and
-//! `line 5, column 1: ...` for a top-level value when the input holds several.
-//!
-//! [`read_line`] reads one line of GeoJSON Lines on its own (so that lines can be read in
-//! parallel, and a syntax error costs only its line), and [`looks_line_delimited`] recognises
-//! such an input by its start.
-//!
-//! Size: one feature of a streamed FeatureCollection, or one top-level value (with the blank
-//! space before it), may take at most a cap of bytes ([`super::limits::MAX_TEXT`] by default,
-//! [`stream_within`] to choose): past it reading stops with an error naming the feature (or the
-//! line and column where the value starts) and the byte of the input where it stopped, so that
-//! an endless input, even valid JSON (`[[[0,0],[0,0],...`), does not grow memory without bound.
-//!
-//! Vertices: one feature (all its polygons together), or one top-level value other than a
-//! FeatureCollection, may hold at most a cap of positions ([`MAX_VERTICES`] by default): past
-//! it, the polygon being read is a failure of its feature (`feature 3, ring 0, position 1000:
-//! too many vertices: ...`), its positions are dropped and the rest of it is read without being
-//! kept, and reading goes on with the next feature (an endless one meets the cap on bytes).
-//!
-//! Complexity: linear in the input size; memory proportional to the largest feature, at most
-//! 64 bytes per position kept.
+//! Bounds: one feature or top-level value may take at most a cap of bytes
+//! ([`super::limits::MAX_TEXT`], [`stream_within`] to choose; past it reading stops, naming the
+//! feature and the byte) and hold at most [`MAX_VERTICES`] positions (past it that feature
+//! fails and reading goes on): docs/reliability.md, section 5. Time linear in the input; memory
+//! proportional to the largest feature, at most 64 bytes per position kept.
 
 use super::geojson::{
     collection_feature, json_message, top_level, type_of, Failure, Part, JSON_WHITESPACE,

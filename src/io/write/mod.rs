@@ -16,49 +16,9 @@ pub mod wkt;
 use crate::outcome::Outcome;
 use std::io::{self, Write};
 
-/// An output format.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum OutputFormat {
-    /// The JSON document of `docs/cli.md`.
-    Json,
-    /// A GeoJSON FeatureCollection, one Feature per input feature (a GeometryCollection of its
-    /// triangles as Polygons; [`features`]).
-    GeoJson,
-    /// GeoJSON Lines: the same Features, one per line ([`features`]).
-    GeoJsonLines,
-    /// A GeoJSON FeatureCollection, one Feature per triangle ([`geojson`]).
-    GeoJsonTriangles,
-    /// WKT, one GEOMETRYCOLLECTION of triangle POLYGONs per line and input feature ([`wkt`]).
-    Wkt,
-    /// CSV, one row per input feature: its triangles as WKT, its id and properties, minitri's
-    /// facts ([`csv`]).
-    Csv,
-    /// An SVG picture, drawn in this style.
-    Svg(svg::Style),
-}
+pub use super::extension::OutputFormat;
 
 impl OutputFormat {
-    /// The format a file name's extension stands for (`None` for an unknown one): `json`,
-    /// `geojson`, `geojsonl` (or `geojsons`, `ndjson`, `jsonl`), `wkt`, `csv`, `svg`; from the
-    /// one table of extensions (`io/extension.rs`).
-    pub fn from_extension(extension: &str) -> Option<OutputFormat> {
-        crate::io::extension::find(extension)?.write
-    }
-
-    /// The file extension of this format, without the dot: its first row in the table of
-    /// extensions (per-triangle GeoJSON: GeoJSON's; any SVG style: SVG's).
-    pub fn extension(self) -> &'static str {
-        let format = match self {
-            OutputFormat::GeoJsonTriangles => OutputFormat::GeoJson,
-            OutputFormat::Svg(_) => OutputFormat::Svg(svg::Style::default()),
-            other => other,
-        };
-        crate::io::extension::TABLE
-            .iter()
-            .find(|e| e.write == Some(format))
-            .map_or("json", |e| e.name)
-    }
-
     /// A sink writing this format to `out`.
     ///
     /// # Errors

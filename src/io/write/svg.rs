@@ -100,13 +100,7 @@ const MUTED: &str = "#555";
 /// Largest label font, in pixels.
 const LABEL_FONT: f64 = 11.0;
 
-/// How to draw, beyond what the outcomes say.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Style {
-    /// Write vertex numbers at any size (`--labels`); otherwise only up to [`LABELS_MAX`]
-    /// vertices.
-    pub labels: bool,
-}
+pub use crate::io::extension::Style;
 
 /// One polygon to draw.
 pub struct Figure<'a> {
