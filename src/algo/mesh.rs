@@ -31,7 +31,9 @@
 //! and two flags per half-edge (fixed, and done: a face already reported):
 //! - building: twins matched by their two ends in O(n + m) (one counting sort by the lower end,
 //!   then one pass per bucket); [`Mesh::separate`] unlinks the twins of given edges;
-//! - reading: [`Mesh::tail`], [`Mesh::head`], [`Mesh::apex`], [`Mesh::twin_of`], the rotation
+//! - reading: [`Mesh::tail`], [`Mesh::head`], [`Mesh::apex`], [`Mesh::twin_of`] (and, with one
+//!   division by 3 for all, [`Mesh::ends_and_apex`] and [`Mesh::apex_and_sides`]: the steps of
+//!   the flips and of step 1's walks), the rotation
 //!   round a vertex ([`Mesh::fan`]), the walk along a face of triangles joined across
 //!   unfixed edges ([`Mesh::next_boundary`], [`Mesh::prev_boundary`]); all O(1) per step;
 //! - [`Mesh::flip`], O(1), keeping the numbering: the triangles `t = (a b c)` and
