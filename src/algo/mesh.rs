@@ -31,7 +31,9 @@
 //! and two flags per half-edge (fixed, and done: a face already reported):
 //! - building: twins matched by their two ends in O(n + m) (one counting sort by the lower end,
 //!   then one pass per bucket); [`Mesh::separate`] unlinks the twins of given edges;
-//! - reading: [`Mesh::tail`], [`Mesh::head`], [`Mesh::apex`], [`Mesh::twin_of`], the rotation
+//! - reading: [`Mesh::tail`], [`Mesh::head`], [`Mesh::apex`], [`Mesh::twin_of`] (and, with one
+//!   division by 3 for all, [`Mesh::ends_and_apex`] and [`Mesh::apex_and_sides`]: the steps of
+//!   the flips and of step 1's walks), the rotation
 //!   round a vertex ([`Mesh::fan`]), the walk along a face of triangles joined across
 //!   unfixed edges ([`Mesh::next_boundary`], [`Mesh::prev_boundary`]); all O(1) per step;
 //! - [`Mesh::flip`], O(1), keeping the numbering: the triangles `t = (a b c)` and
@@ -237,6 +239,34 @@ impl Mesh {
         }
     }
 
+    /// The tail, head and apex of a half-edge (`(tail(h), head(h), apex(h))`), with one division
+    /// by 3.
+    #[inline]
+    pub(crate) fn ends_and_apex(&self, h: usize) -> (usize, usize, usize) {
+        let [u, v, w] = self.tri[h / 3];
+        let (u, v, w) = (u as usize, v as usize, w as usize);
+        match h % 3 {
+            0 => (u, v, w),
+            1 => (v, w, u),
+            _ => (w, u, v),
+        }
+    }
+
+    /// The apex of a half-edge's triangle and that triangle's next and previous half-edges
+    /// (`(apex(h), next_in_triangle(h), prev_in_triangle(h))`), with one division by 3: the step
+    /// of the walks across triangles.
+    #[inline]
+    pub(crate) fn apex_and_sides(&self, h: usize) -> (usize, usize, usize) {
+        let t = h / 3;
+        let first = 3 * t;
+        let (next, prev) = match h - first {
+            0 => (1, 2),
+            1 => (2, 0),
+            _ => (0, 1),
+        };
+        (self.tri[t][prev] as usize, first + next, first + prev)
+    }
+
     /// The next half-edge of the same triangle (counter-clockwise).
     #[inline]
     pub(crate) fn next_in_triangle(h: usize) -> usize {
@@ -347,16 +377,24 @@ impl Mesh {
             return;
         };
         let (t, s) = (h / 3, g / 3);
-        let (a, b, c, d) = (self.tail(h), self.head(h), self.apex(h), self.apex(g));
+        // Corner k of a triangle starts its half-edge k: h = a -> b (apex c), g = b -> a (apex d).
+        let (kh, kg) = (h - 3 * t, g - 3 * s);
+        let (next, prev) = (|k: usize| (k + 1) % 3, |k: usize| (k + 2) % 3);
+        let (a, b, c) = (
+            self.tri[t][kh] as usize,
+            self.tri[t][next(kh)] as usize,
+            self.tri[t][prev(kh)] as usize,
+        );
+        let d = self.tri[s][prev(kg)] as usize;
         // The outer sides c -> a, a -> d, d -> b, b -> c: twins and flags.
-        let side = |x: usize| {
-            let bits = (self.flags[x / 3] >> (x % 3)) & (FIXED | DONE);
-            (self.twin[x], bits)
+        let side = |tri: usize, k: usize| {
+            let bits = (self.flags[tri] >> k) & (FIXED | DONE);
+            (self.twin[3 * tri + k], bits)
         };
-        let ca = side(Self::prev_in_triangle(h));
-        let ad = side(Self::next_in_triangle(g));
-        let db = side(Self::prev_in_triangle(g));
-        let bc = side(Self::next_in_triangle(h));
+        let ca = side(t, prev(kh));
+        let ad = side(s, next(kg));
+        let db = side(s, prev(kg));
+        let bc = side(t, next(kh));
         self.tri[t] = [c, a, d].map(|v| v as u32);
         self.tri[s] = [d, b, c].map(|v| v as u32);
         let links = [
@@ -406,7 +444,8 @@ impl Mesh {
             let Some(g) = self.twin_of(h) else {
                 continue; // a boundary side (or an entry made stale by earlier flips)
             };
-            let (a, b, c, d) = (self.tail(h), self.head(h), self.apex(h), self.apex(g));
+            let (a, b, c) = self.ends_and_apex(h);
+            let d = self.apex_and_sides(g).0;
             let [pa, pb, pc, pd] = [a, b, c, d].map(|v| pts[v]);
             if cross(pc, pa, pd) <= 0 || cross(pd, pb, pc) <= 0 {
                 continue; // not strictly convex: the flip is not allowed

@@ -351,9 +351,7 @@ pub fn double_cone<'w, P: Coord>(
                 break;
             }
             // The entered triangle has the half-edge g = w -> u; its apex x follows u.
-            let x = mesh.apex(g);
-            let k_ux = Mesh::next_in_triangle(g);
-            let k_xw = Mesh::next_in_triangle(k_ux);
+            let (x, k_ux, k_xw) = mesh.apex_and_sides(g);
             let dx = dir(x);
             let right = cone.lo.cross(dx);
             let through = if cone.holds_given(dx, right) {
