@@ -507,7 +507,7 @@ impl WideSum {
     }
 
     /// The sum as `f64` (for display only).
-    pub fn to_f64(&self) -> f64 {
+    pub fn to_f64(self) -> f64 {
         self.high as f64 * 2f64.powi(128) + self.low as f64
     }
 }
