@@ -155,6 +155,17 @@ fn twin_halves(vertices: usize, tri: &[[u32; 3]]) -> Vec<u32> {
     twin
 }
 
+/// The corners after and before corner `k` (0, 1 or 2) of a triangle, counter-clockwise: corner
+/// `k` starts half-edge `k`, so these are also the next and previous half-edges' corners.
+#[inline]
+fn around(k: usize) -> (usize, usize) {
+    match k {
+        0 => (1, 2),
+        1 => (2, 0),
+        _ => (0, 1),
+    }
+}
+
 impl Mesh {
     /// The mesh of `triangles` (corners below `vertices`, as the module's input contract says).
     pub(crate) fn from_triangles(vertices: usize, triangles: &[[usize; 3]]) -> Mesh {
@@ -243,13 +254,10 @@ impl Mesh {
     /// by 3.
     #[inline]
     pub(crate) fn ends_and_apex(&self, h: usize) -> (usize, usize, usize) {
-        let [u, v, w] = self.tri[h / 3];
-        let (u, v, w) = (u as usize, v as usize, w as usize);
-        match h % 3 {
-            0 => (u, v, w),
-            1 => (v, w, u),
-            _ => (w, u, v),
-        }
+        let (t, k) = (h / 3, h % 3);
+        let (next, prev) = around(k);
+        let corner = |k: usize| self.tri[t][k] as usize;
+        (corner(k), corner(next), corner(prev))
     }
 
     /// The apex of a half-edge's triangle and that triangle's next and previous half-edges
@@ -259,11 +267,7 @@ impl Mesh {
     pub(crate) fn apex_and_sides(&self, h: usize) -> (usize, usize, usize) {
         let t = h / 3;
         let first = 3 * t;
-        let (next, prev) = match h - first {
-            0 => (1, 2),
-            1 => (2, 0),
-            _ => (0, 1),
-        };
+        let (next, prev) = around(h - first);
         (self.tri[t][prev] as usize, first + next, first + prev)
     }
 
@@ -379,22 +383,22 @@ impl Mesh {
         let (t, s) = (h / 3, g / 3);
         // Corner k of a triangle starts its half-edge k: h = a -> b (apex c), g = b -> a (apex d).
         let (kh, kg) = (h - 3 * t, g - 3 * s);
-        let (next, prev) = (|k: usize| (k + 1) % 3, |k: usize| (k + 2) % 3);
+        let ((next_h, prev_h), (next_g, prev_g)) = (around(kh), around(kg));
         let (a, b, c) = (
             self.tri[t][kh] as usize,
-            self.tri[t][next(kh)] as usize,
-            self.tri[t][prev(kh)] as usize,
+            self.tri[t][next_h] as usize,
+            self.tri[t][prev_h] as usize,
         );
-        let d = self.tri[s][prev(kg)] as usize;
+        let d = self.tri[s][prev_g] as usize;
         // The outer sides c -> a, a -> d, d -> b, b -> c: twins and flags.
         let side = |tri: usize, k: usize| {
             let bits = (self.flags[tri] >> k) & (FIXED | DONE);
             (self.twin[3 * tri + k], bits)
         };
-        let ca = side(t, prev(kh));
-        let ad = side(s, next(kg));
-        let db = side(s, prev(kg));
-        let bc = side(t, next(kh));
+        let ca = side(t, prev_h);
+        let ad = side(s, next_g);
+        let db = side(s, prev_g);
+        let bc = side(t, next_h);
         self.tri[t] = [c, a, d].map(|v| v as u32);
         self.tri[s] = [d, b, c].map(|v| v as u32);
         let links = [
