@@ -35,6 +35,10 @@
                                          long sliver edge (0 0, N 1): (0 0, N 1, N-1 1, N-1 2,
                                          ..., 1 N); about 2 N vertices, every reflex corner on the
                                          line x + y = N, each seeing along it
+  bench/polygon.py notches N             N/2 thin notches cut into a regular polygon, their tips on
+                                         a circle of half its radius: every tip sees every other
+                                         across the middle, in two wide opposite cones (the walk of
+                                         step 1 from each tip is linear, quadratic in all)
   bench/polygon.py diamonds N            a strip with a chain of N diamond holes, each touching
                                          the next at a corner (4 N + 4 vertices, N hole rings
                                          joined into one hole walk): a raster layer's touches
@@ -196,6 +200,14 @@ elif kind == "stairs-lattice":
     for (x, y), (u, v) in zip(corners, corners[1:] + corners[:1]):
         steps = max(abs(u - x), abs(v - y)) if x == u or y == v else 1
         pts += [(x + (u - x) * k // steps, y + (v - y) * k // steps) for k in range(steps)]
+elif kind == "notches":
+    m = max(3, n // 2)
+    r = 20 * m
+    pts = []
+    for i in range(m):
+        a, b = 2 * math.pi * i / m, 2 * math.pi * (i + 0.5) / m
+        pts += [(round(r * math.cos(a)), round(r * math.sin(a))),
+                (round(r / 2 * math.cos(b)), round(r / 2 * math.sin(b)))]
 elif kind in ("diamonds", "diamonds-apart"):
     gap = 2 if kind == "diamonds" else 4          # centre to centre; 2 makes them touch
     pts = [(0, 0), (gap * n + 8, 0), (gap * n + 8, 8), (0, 8)]

@@ -6,6 +6,9 @@
 //!   sets of empty vertex triangles (written here from scratch, sharing no code with the crate's
 //!   algorithms);
 //! - MINITRI's output passes the checker and has exactly the DP's count;
+//! - step 1 finds the same minimally degenerate triangles, kinds included, with the walk alone,
+//!   the bounded method alone (balanced cuts and shortest-path trees), the default hybrid and
+//!   every ray policy, and the angular sweep agrees;
 //! - Lemma 3 of Chen & Chang: fewer than 2n - 1 minimally degenerate triangles, on polygons
 //!   without flat vertices (with flat vertices, see `lemma_3_with_flat_vertices` below);
 //! - the plain triangulation passes the checker with exactly n - 2 triangles, and on random
@@ -224,6 +227,10 @@ fn check_all(ring: &[(i64, i64)]) -> Result<(), TestCaseError> {
         return Ok(());
     };
     let n = poly.len();
+    // Step 1 finds the same set of triangles, kinds included, whatever the ray policy and the
+    // walk's budget (the walk alone, the bounded method alone, the hybrid), and the angular
+    // sweep agrees.
+    chen_chang::degenerate::check_ray_policies(&poly).map_err(TestCaseError::fail)?;
     let dp = asano::triangulate(&poly, asano::DEFAULT_LIMIT)
         .map_err(|e| TestCaseError::fail(e.to_string()))?;
     let report = verify::check(&poly, &dp);

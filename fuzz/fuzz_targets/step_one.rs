@@ -1,7 +1,9 @@
-//! Step 1 of MINITRI (all minimally degenerate triangles) whatever the ray policy: the set of
-//! triangles, kinds included, found with every ray walked, every ray shot over heavy paths
-//! (`minitri::algo::minitri::ray_shooting`) and the default hybrid must equal the angular
-//! sweep's (`minimally_degenerate_by_sweep`).
+//! Step 1 of MINITRI (all minimally degenerate triangles) whatever the ray policy and the walk's
+//! budget: the set of triangles, kinds included, found with every ray walked, every ray shot
+//! over heavy paths (`minitri::algo::minitri::ray_shooting`), the default hybrid, and the
+//! bounded method alone (budget 0: balanced cuts and shortest-path trees,
+//! `minitri::algo::minitri::polygon_cutting`) must equal the angular sweep's
+//! (`minimally_degenerate_by_sweep`).
 //!
 //! Inputs: a ring grown point by point on the grid 0..=16 (each point inserted after the vertex
 //! its third byte names, kept only when the polygon stays valid, as in the `core` target), up to

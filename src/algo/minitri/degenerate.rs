@@ -26,23 +26,23 @@
 //! still held, which `tests/property.rs` keeps watching.
 //!
 //! Complexity: a plain triangulation (O(n log n), swept along x when the bounding box is more
-//! than twice as wide as tall: `crate::algo::plain::polygon`), at most `4 n` edge
-//! flips to fatten it, then work proportional to the triangles met inside each reflex vertex's
-//! double cone where both cones may still see a vertex, near-linear on typical polygons (on
-//! random star polygons about 40-50 triangle visits per vertex from 10^4 to 10^6 vertices; see
+//! than twice as wide as tall: `crate::algo::plain::polygon`), at most `4 n` edge flips to
+//! fatten it, then work proportional to the triangles met inside each reflex vertex's double
+//! cone where both cones may still see a vertex (about 40-50 per vertex on random stars; see
 //! [`super::expansion`] and `docs/benchmarks.md`). Parts of a cone left with only isolated
 //! directions to match become rays, and a ray that walks far is shot instead
-//! ([`super::ray_shooting`]: O(log^3 n) per ray after an O(n log n) build, made only once long
-//! rays have cost about as much), so combs and sliver staircases, quadratic for the walk alone,
-//! are near-linear. The parts that stay wide are still walked: O(n^2) in the worst case (every
-//! reflex vertex seeing most of the polygon in two opposite wide ranges). The paper's
-//! O(n log^2 n) worst case (polygon cutting and shortest-path trees feeding the ray shooting) is
-//! not implemented; `deadline` bounds the step instead.
+//! ([`super::ray_shooting`]: O(log^3 n) per ray after an O(n log n) build). The walk from one
+//! vertex of a simple polygon is given up past [`walk_budget`] triangles (O(log n)), and the
+//! vertices given up are searched by balanced cuts, shortest-path trees and rays
+//! ([`super::polygon_cutting`], O(n log^4 n)), so step 1 is O(n log^4 n) in the worst case on
+//! simple polygons (the paper's O(n log^2 n) has a ray shooting of O(log n) per ray). With holes
+//! or touching rings the walk has no budget (the cutting needs a dual tree): O(n^2) in the
+//! worst case, and `deadline` bounds the step.
 
 use super::expansion::{double_cone, Mesh, Workspace};
 use super::ray_shooting::{Lazy, RayPolicy};
 use crate::algo::chords::visible_from;
-use crate::geom::kernel::Coord;
+use crate::geom::kernel::{Coord, Dir};
 use crate::geom::kernel::{cmp_angle, cross};
 use crate::geom::polygon::Polygon;
 use rayon::prelude::*;
@@ -78,7 +78,7 @@ pub struct Degenerate {
 }
 
 impl Degenerate {
-    fn new<P: Coord>(polygon: &Polygon<P>, a: usize, b: usize, c: usize) -> Degenerate {
+    pub(super) fn new<P: Coord>(polygon: &Polygon<P>, a: usize, b: usize, c: usize) -> Degenerate {
         let (a, c) = (a.min(c), a.max(c));
         let edge = |u: usize, v: usize| polygon.next(u) == v || polygon.next(v) == u;
         let kind = match (edge(a, b), edge(b, c)) {
@@ -204,20 +204,22 @@ pub fn minimally_degenerate_over_until<P: Coord>(
 }
 
 /// All minimally degenerate triangles as [`minimally_degenerate`] finds them, with rays walked
-/// or shot as `policy` says ([`super::ray_shooting`]): the same set whatever the policy (the
-/// tests compare them), only the time differs.
+/// or shot as `policy` says ([`super::ray_shooting`]) and the work shared between the walk and
+/// the bounded method as `budget` says: the same set whatever the choices (the tests compare
+/// them), only the time differs.
 pub fn minimally_degenerate_with<P: Coord>(
     polygon: &Polygon<P>,
     policy: RayPolicy,
+    budget: Budget,
 ) -> Vec<Degenerate> {
     let plain = crate::algo::plain::polygon(polygon, None);
-    minimally_degenerate_over_with(polygon, plain, None, policy).0
+    minimally_degenerate_over_budget(polygon, plain, None, policy, budget).0
 }
 
 /// The oracle of the tests and the `step_one` fuzz target: the set of minimally degenerate
-/// triangles, kinds included, found with each [`RayPolicy`] must equal the angular sweep's
-/// ([`minimally_degenerate_by_sweep`]). Returns how many there are, or the first policy that
-/// disagrees with both sets.
+/// triangles, kinds included, found with each [`RayPolicy`] and each [`Budget`] must equal the
+/// angular sweep's ([`minimally_degenerate_by_sweep`]). Returns how many there are, or the
+/// first choice that disagrees with both sets.
 ///
 /// # Errors
 /// A description of the disagreement (a bug).
@@ -231,14 +233,55 @@ pub fn check_ray_policies<P: Coord>(polygon: &Polygon<P>) -> Result<usize, Strin
         keys
     };
     let swept = sorted(&minimally_degenerate_by_sweep(polygon));
-    for policy in [RayPolicy::WalkOnly, RayPolicy::ShootOnly, RayPolicy::Hybrid] {
-        let found = sorted(&minimally_degenerate_with(polygon, policy));
+    let choices = [
+        (RayPolicy::WalkOnly, Budget::WalkOnly),
+        (RayPolicy::ShootOnly, Budget::WalkOnly),
+        (RayPolicy::Hybrid, Budget::Hybrid),
+        (RayPolicy::Hybrid, Budget::CutsOnly),
+        (RayPolicy::WalkOnly, Budget::CutsOnly),
+    ];
+    for (policy, budget) in choices {
+        let found = sorted(&minimally_degenerate_with(polygon, policy, budget));
         if found != swept {
-            return Err(format!("{policy:?}: {found:?}, the sweep: {swept:?}"));
+            return Err(format!(
+                "{policy:?} {budget:?}: {found:?}, the sweep: {swept:?}"
+            ));
         }
     }
     Ok(swept.len())
 }
+
+/// How step 1 shares its work between the walk and the bounded method
+/// ([`super::polygon_cutting`]), which applies to simple polygons (one ring, no touching rings;
+/// others are walked whatever this says). The same set of triangles either way (the tests
+/// compare them); only the time differs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Budget {
+    /// The default: the walk from each vertex, given up after [`walk_budget`] triangles, and
+    /// the bounded method for the vertices given up.
+    Hybrid,
+    /// The walk alone (budget unlimited).
+    WalkOnly,
+    /// The bounded method alone (budget 0), for every reflex vertex.
+    CutsOnly,
+}
+
+/// The triangles a walk from one vertex of a polygon of `n` vertices may cross before it is
+/// given up: `WALK_BUDGET_PER_LOG * ceil(log2 n)`, at least [`WALK_BUDGET_MIN`]. So the walks
+/// cost O(n log n) in all, whatever the polygon, and the bounded method takes the vertices
+/// over it. Its constant factor is several times the walk's (docs/benchmarks.md), so the
+/// budget is set high: every vertex of the benchmark inputs and of the real boundaries stays
+/// under it (the longest walk measured, on China's boundary, crosses 3,626 triangles against
+/// a budget of 7,168), and those inputs never pay for the bounded method.
+pub fn walk_budget(n: usize) -> usize {
+    let log = usize::BITS - n.max(2).leading_zeros();
+    (WALK_BUDGET_PER_LOG * log as usize).max(WALK_BUDGET_MIN)
+}
+
+/// See [`walk_budget`].
+pub const WALK_BUDGET_PER_LOG: usize = 512;
+/// See [`walk_budget`].
+pub const WALK_BUDGET_MIN: usize = 2048;
 
 /// [`minimally_degenerate_over_until`] with rays walked or shot as `policy` says.
 pub fn minimally_degenerate_over_with<P: Coord>(
@@ -247,55 +290,118 @@ pub fn minimally_degenerate_over_with<P: Coord>(
     deadline: Option<std::time::Instant>,
     policy: RayPolicy,
 ) -> (Vec<Degenerate>, Vec<[usize; 3]>, usize) {
+    minimally_degenerate_over_budget(polygon, plain, deadline, policy, Budget::Hybrid)
+}
+
+/// [`minimally_degenerate_over_with`], the work shared between the walk and the bounded method
+/// as `budget` says.
+pub fn minimally_degenerate_over_budget<P: Coord>(
+    polygon: &Polygon<P>,
+    plain: Vec<[usize; 3]>,
+    deadline: Option<std::time::Instant>,
+    policy: RayPolicy,
+    budget: Budget,
+) -> (Vec<Degenerate>, Vec<[usize; 3]>, usize) {
     let mut mesh = Mesh::new(polygon, plain);
     if polygon.len() >= FLIPS_FROM {
         mesh.flip_towards_delaunay(polygon, FLIPS_PER_VERTEX * polygon.len());
     }
     let cut_short = std::sync::atomic::AtomicBool::new(false);
     let unexamined = std::sync::atomic::AtomicUsize::new(0);
+    let n = polygon.len();
+    let simple = polygon.holes() == 0 && polygon.touches() == 0;
+    let limit = match budget {
+        _ if !simple => usize::MAX,
+        Budget::Hybrid => walk_budget(n),
+        Budget::WalkOnly => usize::MAX,
+        Budget::CutsOnly => 0,
+    };
+    // Long rays are shot over heavy paths once walking them has cost enough (built at most once).
+    let shooter = Lazy::new(n, policy).with_budget(limit);
     // The vertices are independent searches over a shared mesh: in parallel (on the current
     // rayon pool) by blocks of vertices, concatenated in vertex order, so the result does not
     // depend on the number of threads. A polygon of one block skips the pool altogether.
-    let n = polygon.len();
-    // Long rays are shot over heavy paths once walking them has cost enough (built at most once).
-    let shooter = Lazy::new(n, policy);
-    if n <= PARALLEL_BLOCK {
-        let found = search_range(
+    let search = |range| {
+        search_range(
             polygon,
             &mesh,
             &shooter,
-            0..n,
+            range,
             deadline,
             &cut_short,
             &unexamined,
-        );
-        return (found, mesh.into_triangles(), unexamined.into_inner());
+        )
+    };
+    let (found, given_up) = if n <= PARALLEL_BLOCK {
+        search(0..n)
+    } else {
+        let blocks: Vec<(Vec<Degenerate>, Vec<usize>)> = (0..n.div_ceil(PARALLEL_BLOCK))
+            .into_par_iter()
+            .map(|block| search(block * PARALLEL_BLOCK..((block + 1) * PARALLEL_BLOCK).min(n)))
+            .collect();
+        let (found, given_up): (Vec<_>, Vec<_>) = blocks.into_iter().unzip();
+        (found.concat(), given_up.concat())
+    };
+    let mut unexamined = unexamined.into_inner();
+    if given_up.is_empty() {
+        return (found, mesh.into_triangles(), unexamined);
     }
-    let blocks: Vec<Vec<Degenerate>> = (0..n.div_ceil(PARALLEL_BLOCK))
-        .into_par_iter()
-        .map(|block| {
-            let range = block * PARALLEL_BLOCK..((block + 1) * PARALLEL_BLOCK).min(n);
-            search_range(
-                polygon,
-                &mesh,
-                &shooter,
-                range,
-                deadline,
-                &cut_short,
-                &unexamined,
-            )
+    // The vertices whose walk was given up: the bounded method, unless the deadline passed.
+    let mut wanted = vec![false; n];
+    for &b in &given_up {
+        wanted[b] = true;
+    }
+    let more = if cut_short.into_inner() {
+        None
+    } else {
+        let shooter = shooter.force(polygon, &mesh);
+        super::polygon_cutting::middles(polygon, &mesh, shooter, &wanted, deadline)
+    };
+    let Some(mut more) = more else {
+        unexamined += given_up.len();
+        return (found, mesh.into_triangles(), unexamined);
+    };
+    // In the walk's order: by middle vertex, then as `search_from` pairs the two cones.
+    in_walk_order(polygon, &mut more);
+    let mut merged = Vec::with_capacity(found.len() + more.len());
+    let mut rest = more.into_iter().peekable();
+    for m in found {
+        while let Some(x) = rest.next_if(|x| x.b < m.b) {
+            merged.push(x);
+        }
+        merged.push(m);
+    }
+    merged.extend(rest);
+    (merged, mesh.into_triangles(), unexamined)
+}
+
+/// Sorts triangles as [`search_from`] lists them: by middle vertex `b`, then by the angle from
+/// `next(b)` of the end in `b`'s first cone (the end whose direction lies less than a half-turn
+/// counter-clockwise from `next(b)`).
+fn in_walk_order<P: Coord>(polygon: &Polygon<P>, list: &mut [Degenerate]) {
+    let key = |m: &Degenerate| {
+        let c = polygon.point(m.b);
+        let base = Dir::between(c, polygon.point(polygon.next(m.b)));
+        let first_half = |v: usize| {
+            let d = Dir::between(c, polygon.point(v));
+            let s = base.cross(d);
+            s > 0 || (s == 0 && base.dot(d) > 0)
+        };
+        let end = if first_half(m.a) { m.a } else { m.c };
+        (base, Dir::between(c, polygon.point(end)))
+    };
+    list.sort_by(|x, y| {
+        x.b.cmp(&y.b).then_with(|| {
+            let ((_, dx), (_, dy)) = (key(x), key(y));
+            0.cmp(&dx.cross(dy))
         })
-        .collect();
-    (
-        blocks.concat(),
-        mesh.into_triangles(),
-        unexamined.into_inner(),
-    )
+    });
 }
 
 /// The triangles found from the vertices of `range`, in vertex order, until `deadline` (then
 /// `cut_short` is set, and the vertices of `range` that could be a middle and were not looked
-/// from are added to `unexamined`).
+/// from are added to `unexamined`), and the reflex vertices whose walk was given up (over the
+/// budget of `shooter`).
 fn search_range<P: Coord>(
     polygon: &Polygon<P>,
     mesh: &Mesh,
@@ -304,7 +410,7 @@ fn search_range<P: Coord>(
     deadline: Option<std::time::Instant>,
     cut_short: &std::sync::atomic::AtomicBool,
     unexamined: &std::sync::atomic::AtomicUsize,
-) -> Vec<Degenerate> {
+) -> (Vec<Degenerate>, Vec<usize>) {
     use std::sync::atomic::Ordering::Relaxed;
     // One workspace per thread, kept from call to call (a batch of small polygons would
     // otherwise grow its buffers again for every polygon). Nothing in the search calls back
@@ -323,6 +429,7 @@ fn search_range<P: Coord>(
             unreachable!("slot {k} holds a workspace of this kernel")
         };
         let mut out = Vec::new();
+        let mut given_up = Vec::new();
         let end = range.end;
         for b in range {
             if let Some(deadline) = deadline.filter(|_| b % 16 == 0) {
@@ -333,9 +440,11 @@ fn search_range<P: Coord>(
                     break;
                 }
             }
-            search_from(polygon, mesh, shooter, b, work, &mut out);
+            if !search_from(polygon, mesh, shooter, b, work, &mut out) {
+                given_up.push(b);
+            }
         }
-        out
+        (out, given_up)
     })
 }
 
@@ -344,7 +453,8 @@ fn search_range<P: Coord>(
 /// enough that a task costs far more than handing it out.
 const PARALLEL_BLOCK: usize = 256;
 
-/// Adds the minimally degenerate triangles with middle vertex `b` to `out`.
+/// Adds the minimally degenerate triangles with middle vertex `b` to `out`; `false` if `b` is
+/// reflex and its walk was given up (over the budget), nothing added then.
 fn search_from<P: Coord>(
     polygon: &Polygon<P>,
     mesh: &Mesh,
@@ -352,11 +462,16 @@ fn search_from<P: Coord>(
     b: usize,
     work: &mut Workspace<P>,
     out: &mut Vec<Degenerate>,
-) {
+) -> bool {
     if !reflex_or_flat(polygon, b, out) {
-        return;
+        return true;
     }
-    let (first, second) = double_cone(polygon, mesh, b, work, shooter);
+    if shooter.budget() == 0 {
+        return false;
+    }
+    let Some((first, second)) = double_cone(polygon, mesh, b, work, shooter) else {
+        return false;
+    };
     // Opposite directions are at the same place of the two cones (both sorted by angle).
     let (mut i, mut j) = (0, 0);
     while i < first.len() && j < second.len() {
@@ -371,6 +486,7 @@ fn search_from<P: Coord>(
             }
         }
     }
+    true
 }
 
 /// The same triangles by an angular visibility sweep around every reflex vertex: O(r n log n).

@@ -134,9 +134,13 @@ impl<P: Coord> Default for Workspace<P> {
     }
 }
 
+/// The vertices found in the two cones of [`double_cone`], each sorted by angle.
+pub type Cones<'w, P> = (&'w [Sighting<P>], &'w [Sighting<P>]);
+
 /// The vertices seen from reflex vertex `b` that are nearest in their direction, in the two
 /// cones of its double wedge: `(cone [next, -prev], cone [-next, prev])`, each sorted by angle,
-/// with their directions from `b`.
+/// with their directions from `b`; `None` if the walk went over the budget of `shooter`
+/// ([`Lazy::budget`]: triangles crossed by parts of non-zero width).
 ///
 /// Only directions `d` whose opposite `-d` is found in the other cone matter to the caller, so
 /// the lists may omit other vertices: the two cones sweep down together (see the module doc),
@@ -165,7 +169,7 @@ pub fn double_cone<'w, P: Coord>(
     b: usize,
     work: &'w mut Workspace<P>,
     shooter: &Lazy,
-) -> (&'w [Sighting<P>], &'w [Sighting<P>]) {
+) -> Option<Cones<'w, P>> {
     let c = polygon.point(b);
     let dir = |v: usize| Dir::between(c, polygon.point(v));
     let (to_next, to_prev) = (dir(polygon.next(b)), dir(polygon.prev(b)));
@@ -266,6 +270,19 @@ pub fn double_cone<'w, P: Coord>(
     // (ISOLATE_AFTER in the default hybrid).
     let mut crossed: usize = 0;
     let isolate_after = shooter.isolate_after();
+    // Past the budget the walk gives up (`None`). The budget counts the triangles crossed by
+    // parts of non-zero width: `give_up_at` moves up by the triangles rays walk (their walking
+    // is bounded by the shooter's policy instead). One test in the loop for both thresholds.
+    let mut give_up_at = shooter.budget().saturating_add(1);
+    let next_check = |crossed: usize, give_up_at: usize| {
+        let at = if crossed < isolate_after {
+            isolate_after.min(give_up_at)
+        } else {
+            give_up_at
+        };
+        at.max(crossed + 1)
+    };
+    let mut check_at = next_check(0, give_up_at);
     loop {
         // Expand the cone whose top part reaches higher (comparing the other cone's directions
         // turned by a half-turn), so that both sweep down together.
@@ -345,10 +362,16 @@ pub fn double_cone<'w, P: Coord>(
             }
             walked += 1;
             crossed += 1;
-            if crossed == isolate_after && !ray {
-                // Back to the stack, to be taken again at once and cut into rays if it can.
-                stack.push((Step::Enter(g), cone));
-                break;
+            if crossed >= check_at {
+                if !ray && crossed >= give_up_at {
+                    return None;
+                }
+                check_at = next_check(crossed, give_up_at);
+                if crossed == isolate_after && !ray {
+                    // Back to the stack, to be taken again at once and cut into rays if it can.
+                    stack.push((Step::Enter(g), cone));
+                    break;
+                }
             }
             // The entered triangle has the half-edge g = w -> u; its apex x follows u.
             let (x, k_ux, k_xw) = mesh.apex_and_sides(g);
@@ -389,13 +412,17 @@ pub fn double_cone<'w, P: Coord>(
                 Some(next) => g = next,
             }
         }
+        if ray {
+            give_up_at = give_up_at.saturating_add(walked);
+            check_at = next_check(crossed, give_up_at);
+        }
     }
     for list in found.iter_mut() {
         list.reverse();
         debug_assert!(list.windows(2).all(|w| w[0].0.cross(w[1].0) > 0));
     }
     let [first, second] = found;
-    (first, second)
+    Some((first, second))
 }
 
 /// How many triangles the walk from one vertex crosses before its parts are cut into rays

@@ -27,6 +27,7 @@ pub mod lists;
 pub(crate) mod local_search;
 pub mod mis;
 pub mod partition;
+pub mod polygon_cutting;
 pub mod ray_shooting;
 pub mod small;
 mod staircase;

@@ -75,6 +75,7 @@ pub struct Lazy {
     threshold: usize,
     first_ask: usize,
     isolate_after: usize,
+    budget: usize,
 }
 
 impl Lazy {
@@ -91,7 +92,25 @@ impl Lazy {
             threshold,
             first_ask,
             isolate_after,
+            budget: usize::MAX,
         }
+    }
+
+    /// The same, walks from one vertex given up after `budget` triangles (`usize::MAX`: never;
+    /// 0: no walk at all), the vertex then left to the bounded method
+    /// ([`super::polygon_cutting`]).
+    pub fn with_budget(self, budget: usize) -> Lazy {
+        Lazy { budget, ..self }
+    }
+
+    /// After how many triangles walked from one vertex the walk gives up.
+    pub fn budget(&self) -> usize {
+        self.budget
+    }
+
+    /// The shooter, built now if it was not.
+    pub fn force<P: Coord>(&self, polygon: &Polygon<P>, mesh: &Mesh) -> &Shooter {
+        self.cell.get_or_init(|| Shooter::new(polygon, mesh))
     }
 
     /// After how many triangles walked from one vertex its parts may be cut into rays

@@ -1270,20 +1270,29 @@ fn step_one_on_the_earcut_fixtures_is_the_same_whatever_the_ray_policy() {
 /// [`assert_policies_agree`] over the mesh the pipeline walks (the walks' one for touching
 /// rings).
 fn over_the_walks_mesh_policies_agree<P: Coord>(p: &Polygon<P>, what: &str) {
-    use super::degenerate::{minimally_degenerate_by_sweep, minimally_degenerate_over_with};
+    use super::degenerate::{
+        minimally_degenerate_by_sweep, minimally_degenerate_over_budget, Budget,
+    };
     use super::ray_shooting::RayPolicy;
     let key = |m: &Degenerate| (m.a, m.b, m.c);
     let mut swept = minimally_degenerate_by_sweep(p);
     swept.sort_by_key(key);
-    for policy in [RayPolicy::WalkOnly, RayPolicy::ShootOnly, RayPolicy::Hybrid] {
+    let choices = [
+        (RayPolicy::WalkOnly, Budget::WalkOnly),
+        (RayPolicy::ShootOnly, Budget::WalkOnly),
+        (RayPolicy::Hybrid, Budget::Hybrid),
+        (RayPolicy::Hybrid, Budget::CutsOnly),
+    ];
+    for (policy, budget) in choices {
         let plain = if p.touches() > 0 {
             crate::algo::plain::walks(p).unwrap()
         } else {
             crate::algo::plain::polygon(p, None)
         };
-        let (mut found, _, unexamined) = minimally_degenerate_over_with(p, plain, None, policy);
+        let (mut found, _, unexamined) =
+            minimally_degenerate_over_budget(p, plain, None, policy, budget);
         assert_eq!(unexamined, 0);
         found.sort_by_key(key);
-        assert_eq!(found, swept, "{what} {policy:?}");
+        assert_eq!(found, swept, "{what} {policy:?} {budget:?}");
     }
 }

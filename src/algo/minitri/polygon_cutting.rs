@@ -1,0 +1,508 @@
+//! Step 1's bounded method: minimally degenerate triangles by balanced polygon cutting,
+//! shortest-path trees and ray shooting (Chen & Chang 1990, §3, Step 1, whose divide and
+//! conquer on balanced chords this follows; shortest-path trees by the funnel method of Guibas,
+//! Hershberger, Leven, Sharir and Tarjan, *Algorithmica* 2 (1987) 209-233).
+//!
+//! For a simple polygon (one ring, no touching rings): the triangulation's dual is a tree.
+//! Cutting a piece along the diagonal `p q` of a centroid edge of its dual tree leaves two halves
+//! of at most about two thirds of its triangles each, so the pieces nest O(log n) deep. A
+//! minimally degenerate triangle `(a, b, c)` (`b` strictly inside segment `a c`, both sides
+//! chords or edges, no other vertex on `a c`) lies in every piece holding its three corners
+//! (a segment between two vertices of a piece cannot leave it: it would cross one of its cut
+//! diagonals twice), so some cut `p q` first separates them. Then either `b` is `p` or `q`, or
+//! `a c` crosses `p q` at a point `x` with `b` and one end, say `a`, in the same half. In the
+//! second case the shortest path from `a` to whichever of `p`, `q` lies across the chord `b x`
+//! crosses it, and `a` sees all of `b x` along the line itself, so the path leaves `a` along
+//! `a b`: `b` is `a`'s parent in the shortest-path tree from `p` or from `q` inside the half
+//! (paths go straight through collinear vertices, so the parent is the nearest vertex on the
+//! path). In the first case `b` is `a`'s parent from `b` itself. So, per cut, per half and per
+//! vertex `a` of the half, with `u` its parent from `p` and from `q`: shoot a ray from `u` in
+//! the direction `u - a`; if it first meets a vertex `c`, `(a, u, c)` is a minimally degenerate
+//! triangle (the path edge `a u` and the ray `u c` hold no vertex). Every triangle is found
+//! this way, and nothing else is.
+//!
+//! ```text
+//!        q                     the cut p q splits the piece; the shortest path from a to q
+//!       /|\                    inside a's half leaves a along a b, so b is a's parent and
+//!   a--b-|-x--c                the ray from b in direction b - a meets c: (a, b, c) found.
+//!       \|/
+//!        p
+//! ```
+//!
+//! Exact: every decision is the sign of an orientation test on input points (the funnel's
+//! tangents, the direction's place in a vertex's fan, the ray shooting of
+//! [`super::ray_shooting`]); no intersection point is computed.
+//!
+//! Cost: a piece of `m` triangles costs O(m) to collect and cut and O(m log m) for its four
+//! shortest-path trees (a funnel split by binary search, undone on backtracking); O(n log^2 n)
+//! over the O(log n) levels. Each vertex asks at most two rays per level, each O(log^3 n)
+//! ([`super::ray_shooting::Shooter`]): O(n log^4 n) in all, against O(n^2) for the walk on
+//! inputs where every reflex vertex sees most of the polygon. Pieces holding no vertex still to
+//! be searched are skipped, so the method costs little when the walk left few vertices to it.
+
+use super::degenerate::Degenerate;
+use super::expansion::Mesh;
+use super::ray_shooting::Shooter;
+use crate::geom::kernel::{cross, Coord, Dir};
+use crate::geom::polygon::Polygon;
+use std::cmp::Ordering;
+use std::collections::HashSet;
+
+/// No half-edge, triangle or index.
+const NONE: usize = usize::MAX;
+
+/// The minimally degenerate triangles whose middle vertex `b` has `wanted[b]` (`b` reflex), in
+/// a simple polygon (one ring, no touches) triangulated by `mesh`, rays shot by `shooter` (built
+/// on the same mesh). `None` if `deadline` passed first (the deadline is read before every
+/// piece). The triangles come in no particular order, without repetition.
+pub(super) fn middles<P: Coord>(
+    polygon: &Polygon<P>,
+    mesh: &Mesh,
+    shooter: &Shooter,
+    wanted: &[bool],
+    deadline: Option<std::time::Instant>,
+) -> Option<Vec<Degenerate>> {
+    let triangles = mesh.triangle_count();
+    let fans = Fans::new(polygon, mesh, wanted);
+    let mut pieces = Pieces::new(triangles);
+    let mut funnels = Funnels::new(polygon.len(), triangles);
+    let mut asked: HashSet<(u32, u32)> = HashSet::new();
+    let mut found = Vec::new();
+    let mut roots = vec![0];
+    while let Some(root) = roots.pop() {
+        if crate::algo::past(deadline) {
+            return None;
+        }
+        let Some(cut) = pieces.cut(mesh, root, |v| wanted[v]) else {
+            continue;
+        };
+        // Each half: its triangle on the cut, and the half-edge of the cut in it.
+        for h in [cut, mesh.twin_of(cut)?] {
+            for root_vertex in [mesh.tail(h), mesh.head(h)] {
+                funnels.tree(polygon, mesh, &pieces.blocked, h, root_vertex);
+                for &a in &funnels.reached {
+                    let u = funnels.parent[a as usize] as usize;
+                    let a = a as usize;
+                    if !wanted[u] || !asked.insert((a as u32, u as u32)) {
+                        continue;
+                    }
+                    let d = Dir::between(polygon.point(a), polygon.point(u));
+                    if let Some(c) = fans.first_hit(polygon, mesh, shooter, u, d) {
+                        found.push(Degenerate::new(polygon, a, u, c));
+                    }
+                }
+            }
+        }
+        roots.push(cut / 3);
+        roots.push(mesh.twin_of(cut)? / 3);
+    }
+    // A triangle is found from either end (and again at other levels).
+    found.sort_unstable_by_key(|m| (m.b, m.a, m.c));
+    found.dedup();
+    Some(found)
+}
+
+/// The pieces of the dual tree: the cut diagonals so far, and buffers to collect a piece.
+struct Pieces {
+    /// Half-edges of the cut diagonals (both halves of each).
+    blocked: Vec<bool>,
+    /// The piece being cut: its triangles in preorder.
+    members: Vec<usize>,
+    /// Per triangle: the half-edge leading to its parent in the piece ([`NONE`] at the root).
+    up: Vec<usize>,
+    /// Per triangle: its subtree's size in the piece.
+    size: Vec<usize>,
+    stack: Vec<usize>,
+}
+
+impl Pieces {
+    fn new(triangles: usize) -> Pieces {
+        Pieces {
+            blocked: vec![false; 3 * triangles],
+            members: Vec::new(),
+            up: vec![NONE; triangles],
+            size: vec![0; triangles],
+            stack: Vec::new(),
+        }
+    }
+
+    /// Cuts the piece holding triangle `root` along the diagonal of a centroid edge of its dual
+    /// tree, and returns that diagonal's half-edge in the triangle below the edge; `None` if the
+    /// piece is one triangle or none of its corners is `wanted`.
+    fn cut(&mut self, mesh: &Mesh, root: usize, wanted: impl Fn(usize) -> bool) -> Option<usize> {
+        self.members.clear();
+        self.up[root] = NONE;
+        self.stack.push(root);
+        let mut any = false;
+        while let Some(t) = self.stack.pop() {
+            self.members.push(t);
+            self.size[t] = 1;
+            for h in 3 * t..3 * t + 3 {
+                any |= wanted(mesh.tail(h));
+                if self.blocked[h] || h == self.up[t] {
+                    continue;
+                }
+                if let Some(g) = mesh.twin_of(h) {
+                    self.up[g / 3] = g;
+                    self.stack.push(g / 3);
+                }
+            }
+        }
+        if !any || self.members.len() < 2 {
+            return None;
+        }
+        let total = self.members.len();
+        let (mut best, mut best_larger) = (NONE, usize::MAX);
+        for &t in self.members.iter().rev() {
+            let g = self.up[t];
+            if g == NONE {
+                continue;
+            }
+            if let Some(h) = mesh.twin_of(g) {
+                self.size[h / 3] += self.size[t];
+            }
+            let larger = self.size[t].max(total - self.size[t]);
+            if larger < best_larger {
+                (best, best_larger) = (g, larger);
+            }
+        }
+        let twin = mesh.twin_of(best)?;
+        self.blocked[best] = true;
+        self.blocked[twin] = true;
+        Some(best)
+    }
+}
+
+/// Shortest-path trees in a half by the funnel method, the funnel kept in one array
+/// (`buf[lo..=hi]`, its apex at `apex`): entering a triangle across `buf[lo] buf[hi]`, its third
+/// vertex `w` finds its parent `buf[t]` by binary search, and the two funnels beyond are
+/// `buf[lo..=t], w` and `w, buf[t..=hi]`: `w` is written next to `t`, the overwritten entry
+/// restored once that side is done.
+struct Funnels {
+    buf: Vec<u32>,
+    /// Per vertex, its parent in the last tree (valid for the vertices of `reached`).
+    parent: Vec<u32>,
+    /// The vertices of the last tree but its root.
+    reached: Vec<u32>,
+    tasks: Vec<Task>,
+}
+
+/// A step of the depth-first walk of [`Funnels::tree`].
+enum Task {
+    /// Write `w` at `at` (unless `at` is [`NONE`]), then cross half-edge `g` with the funnel
+    /// `buf[lo..=hi]`, apex at `apex`.
+    Enter {
+        g: usize,
+        lo: usize,
+        hi: usize,
+        apex: usize,
+        at: usize,
+        w: u32,
+    },
+    /// Put `old` back at `at`.
+    Undo { at: usize, old: u32 },
+}
+
+impl Funnels {
+    fn new(vertices: usize, triangles: usize) -> Funnels {
+        Funnels {
+            // The funnel's range moves by at most one place per triangle crossed.
+            buf: vec![0; 2 * triangles + 8],
+            parent: vec![0; vertices],
+            reached: Vec::new(),
+            tasks: Vec::new(),
+        }
+    }
+
+    /// The shortest-path tree from `root`, an end of the cut half-edge `h`, inside the half of
+    /// `h`'s triangle (not crossing `blocked` half-edges): fills `parent` and `reached`.
+    fn tree<P: Coord>(
+        &mut self,
+        polygon: &Polygon<P>,
+        mesh: &Mesh,
+        blocked: &[bool],
+        h: usize,
+        root: usize,
+    ) {
+        self.reached.clear();
+        // The triangle (tail, head, apex) of h, counter-clockwise: its corners see the root.
+        for v in [mesh.tail(h), mesh.head(h), mesh.apex(h)] {
+            if v != root {
+                self.parent[v] = root as u32;
+                self.reached.push(v as u32);
+            }
+        }
+        let mid = self.buf.len() / 2;
+        for g in [Mesh::next_in_triangle(h), Mesh::prev_in_triangle(h)] {
+            // Seen from the root, the side's left end is g's head (the triangle beyond g has its
+            // third vertex on the left of head -> tail).
+            let (u, v) = (mesh.head(g), mesh.tail(g));
+            let (lo, hi, apex) = if root == u || root == v {
+                self.buf[mid] = u as u32;
+                self.buf[mid + 1] = v as u32;
+                (mid, mid + 1, if root == u { mid } else { mid + 1 })
+            } else {
+                self.buf[mid - 1] = u as u32;
+                self.buf[mid] = root as u32;
+                self.buf[mid + 1] = v as u32;
+                (mid - 1, mid + 1, mid)
+            };
+            self.walk(polygon, mesh, blocked, g, lo, hi, apex);
+        }
+    }
+
+    /// The depth-first walk from crossing `g` with the funnel `buf[lo..=hi]`.
+    #[allow(clippy::too_many_arguments)]
+    fn walk<P: Coord>(
+        &mut self,
+        polygon: &Polygon<P>,
+        mesh: &Mesh,
+        blocked: &[bool],
+        g: usize,
+        lo: usize,
+        hi: usize,
+        apex: usize,
+    ) {
+        self.tasks.push(Task::Enter {
+            g,
+            lo,
+            hi,
+            apex,
+            at: NONE,
+            w: 0,
+        });
+        while let Some(task) = self.tasks.pop() {
+            let (g, lo, hi, apex) = match task {
+                Task::Undo { at, old } => {
+                    self.buf[at] = old;
+                    continue;
+                }
+                Task::Enter {
+                    g,
+                    lo,
+                    hi,
+                    apex,
+                    at,
+                    w,
+                } => {
+                    if at != NONE {
+                        self.tasks.push(Task::Undo {
+                            at,
+                            old: self.buf[at],
+                        });
+                        self.buf[at] = w;
+                    }
+                    (g, lo, hi, apex)
+                }
+            };
+            if blocked[g] {
+                continue;
+            }
+            let Some(entry) = mesh.twin_of(g) else {
+                continue; // a polygon edge
+            };
+            let w = mesh.apex(entry);
+            let t = self.tangent(polygon, lo, hi, apex, w);
+            self.parent[w] = self.buf[t];
+            self.reached.push(w as u32);
+            // The side (w, v) after the side (u, w): pushed first, taken last.
+            self.tasks.push(Task::Enter {
+                g: Mesh::next_in_triangle(entry),
+                lo: t - 1,
+                hi,
+                apex: apex.max(t),
+                at: t - 1,
+                w: w as u32,
+            });
+            self.tasks.push(Task::Enter {
+                g: Mesh::prev_in_triangle(entry),
+                lo,
+                hi: t + 1,
+                apex: apex.min(t),
+                at: t + 1,
+                w: w as u32,
+            });
+        }
+    }
+
+    /// Where the shortest path from the apex to `w` (beyond the funnel's far side) leaves the
+    /// funnel: the index of `w`'s parent. Along the left chain (`apex` down to `lo`) the path
+    /// follows an edge `buf[j + 1] -> buf[j]` while `w` is on its left or on its line, along the
+    /// right chain (`apex` up to `hi`) while `w` is on the right of `buf[j] -> buf[j + 1]` or on
+    /// its line (a path through a collinear vertex goes on straight, and that vertex is the
+    /// nearer parent). The chains are convex, so this holds on a prefix: binary search.
+    fn tangent<P: Coord>(
+        &self,
+        polygon: &Polygon<P>,
+        lo: usize,
+        hi: usize,
+        apex: usize,
+        w: usize,
+    ) -> usize {
+        let at = |i: usize| polygon.point(self.buf[i] as usize);
+        let pw = polygon.point(w);
+        let left = |j: usize| cross(at(j + 1), at(j), pw) >= 0;
+        let right = |j: usize| cross(at(j), at(j + 1), pw) <= 0;
+        if apex > lo && left(apex - 1) {
+            // The smallest j with `left` on j..apex.
+            let (mut l, mut r) = (lo, apex - 1);
+            while l < r {
+                let m = (l + r) / 2;
+                if left(m) {
+                    r = m;
+                } else {
+                    l = m + 1;
+                }
+            }
+            return l;
+        }
+        if apex < hi && right(apex) {
+            // The largest j with `right` on apex..=j; the path reaches j + 1.
+            let (mut l, mut r) = (apex, hi - 1);
+            while l < r {
+                let m = (l + r).div_ceil(2);
+                if right(m) {
+                    l = m;
+                } else {
+                    r = m - 1;
+                }
+            }
+            return l + 1;
+        }
+        apex
+    }
+}
+
+/// The fans of the wanted vertices: for each, the vertices of its triangles counter-clockwise
+/// from `next(v)` to `prev(v)` with their directions, and the far side of each fan triangle.
+struct Fans<P: Coord> {
+    start: Vec<usize>,
+    dirs: Vec<Dir<P>>,
+    verts: Vec<usize>,
+    /// `far[start[v] + i]`: the far side of the triangle between fan entries `i` and `i + 1`.
+    far: Vec<usize>,
+}
+
+impl<P: Coord> Fans<P> {
+    fn new(polygon: &Polygon<P>, mesh: &Mesh, wanted: &[bool]) -> Fans<P> {
+        let mut fans = Fans {
+            start: Vec::with_capacity(polygon.len() + 1),
+            dirs: Vec::new(),
+            verts: Vec::new(),
+            far: Vec::new(),
+        };
+        for (v, &wanted) in wanted.iter().enumerate() {
+            fans.start.push(fans.dirs.len());
+            if !wanted {
+                continue;
+            }
+            let c = polygon.point(v);
+            fans.dirs.push(Dir::between(c, polygon.point(polygon.next(v))));
+            fans.verts.push(polygon.next(v));
+            fans.far.push(NONE);
+            for h in mesh.out(v).into_iter().flat_map(|h| mesh.fan(h)) {
+                // The fan triangle (v, previous entry, apex of h) has the far side h + 1.
+                let last = fans.far.len() - 1;
+                fans.far[last] = Mesh::next_in_triangle(h);
+                let w = mesh.apex(h);
+                fans.dirs.push(Dir::between(c, polygon.point(w)));
+                fans.verts.push(w);
+                fans.far.push(NONE);
+            }
+        }
+        fans.start.push(fans.dirs.len());
+        fans
+    }
+
+    /// The first vertex met by the ray from `u` in direction `d`, if `d` lies in `u`'s closed
+    /// interior angle and the ray meets a vertex before a polygon edge.
+    fn first_hit(
+        &self,
+        polygon: &Polygon<P>,
+        mesh: &Mesh,
+        shooter: &Shooter,
+        u: usize,
+        d: Dir<P>,
+    ) -> Option<usize> {
+        let range = self.start[u]..self.start[u + 1];
+        let dirs = &self.dirs[range.clone()];
+        let base = *dirs.first()?;
+        // Counter-clockwise angle from `base`, in [0, 2 pi): half-turn, then cross product.
+        let half = |x: Dir<P>| {
+            let s = base.cross(x);
+            u8::from(!(s > 0 || (s == 0 && base.dot(x) > 0)))
+        };
+        let cmp = |x: Dir<P>, y: Dir<P>| half(x).cmp(&half(y)).then(0.cmp(&x.cross(y)));
+        let i = dirs.partition_point(|&x| cmp(x, d) == Ordering::Less);
+        let i_abs = range.start + i;
+        if i == dirs.len() {
+            return None; // beyond prev(u): outside the angle
+        }
+        if cmp(dirs[i], d) == Ordering::Equal {
+            return Some(self.verts[i_abs]); // along a side: its far end
+        }
+        let entry = mesh.twin_of(*self.far.get(i_abs.checked_sub(1)?)?)?;
+        shooter.shoot(polygon, mesh, u, d, entry)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{middles, Mesh, Shooter};
+    use crate::algo::minitri::degenerate::minimally_degenerate_by_sweep;
+    use crate::geom::kernel::cross;
+    use crate::test_support::{comb, polygon, xorshift};
+
+    /// On its own (every reflex vertex wanted), the bounded method finds exactly the triangles
+    /// the angular sweep finds with a reflex middle, kinds included: on combs, a sliver
+    /// staircase and random grid polygons, over the flipped mesh step 1 uses.
+    #[test]
+    fn finds_every_triangle_with_a_reflex_middle() {
+        let mut rings = vec![comb(40, 1, 9), comb(7, 2, 3), comb(1, 1, 1)];
+        let mut sliver = vec![(0, 0), (40, 1)];
+        for k in 1..40 {
+            sliver.extend([(40 - k, k), (40 - k, k + 1)]);
+        }
+        rings.push(sliver);
+        let mut rnd = xorshift(0x35_c075_0001);
+        for _ in 0..300 {
+            let mut ring: Vec<(i64, i64)> = vec![(0, 0), (10, 0), (5, 10)];
+            for _ in 0..rnd(50) {
+                let at = rnd(ring.len() as i64) as usize + 1;
+                let mut next = ring.clone();
+                next.insert(at, (rnd(11), rnd(11)));
+                if crate::geom::polygon::Polygon::from_raw(&crate::test_support::raw(&[&next]))
+                    .is_ok()
+                {
+                    ring = next;
+                }
+            }
+            rings.push(ring);
+        }
+        let mut total = 0;
+        for ring in &rings {
+            let p = polygon(&[ring]);
+            let mut mesh = Mesh::new(&p, crate::algo::plain::polygon(&p, None));
+            mesh.flip_towards_delaunay(&p, 4 * p.len());
+            let shooter = Shooter::new(&p, &mesh);
+            let wanted: Vec<bool> = (0..p.len())
+                .map(|v| cross(p.point(p.prev(v)), p.point(v), p.point(p.next(v))) < 0)
+                .collect();
+            let Some(found) = middles(&p, &mesh, &shooter, &wanted, None) else {
+                panic!("no deadline")
+            };
+            let key = |m: &super::Degenerate| (m.a, m.b, m.c, m.kind as u8);
+            let mut found: Vec<_> = found.iter().map(key).collect();
+            found.sort_unstable();
+            let mut swept: Vec<_> = minimally_degenerate_by_sweep(&p)
+                .iter()
+                .filter(|m| wanted[m.b])
+                .map(key)
+                .collect();
+            swept.sort_unstable();
+            assert_eq!(found, swept, "{ring:?}");
+            total += found.len();
+        }
+        assert!(total > 400, "{total} triangles");
+    }
+}
