@@ -9,7 +9,8 @@
 # /dev/null, or the peers' binary running one peer (it reads and parses the same WKT file and
 # counts the triangles: bench/peers/src/main.rs), so process start-up counts alike for all.
 # Inputs: generated shapes (bench/polygon.py) and real boundaries from the public-domain US and
-# world atlases (bench/boundaries.py, fetched with npm into bench/data/ on the first run).
+# world atlases (bench/boundaries.py, fetched with npm into bench/data/ on the first run), and a
+# TIGER/Line 2010 state boundary, Kansas (bench/tiger.py, fetched with pip on the first run).
 # Usage, from anywhere: bench/peers.sh [SIZES...]   (default 10000 100000)
 # Environment: RUNS (default 5), VALID_LIMIT (default 10), MINITRI_PEER_SHAPES (default "star snake stairs stairs-lattice";
 # earcut takes about 9 s on the stairs of 10^5 vertices, so a run takes about 3 minutes). The comb and the
@@ -72,6 +73,8 @@ echo '|---|---:|---:|---:|---:|---:|---:|---:|---:|'
 for file in $(python3 bench/boundaries.py); do
   row "$(basename "$file" .wkt | sed 's/^boundary-//')" "$file"
 done
+python3 bench/tiger.py Kansas bench/data/tiger-kansas.wkt 2> /dev/null
+row "kansas (TIGER 2010)" bench/data/tiger-kansas.wkt
 cases=()
 for shape in "${shapes[@]}"; do
   for size in "${sizes[@]}"; do cases+=("$shape $size"); done

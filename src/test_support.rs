@@ -171,3 +171,39 @@ pub(crate) fn comb(teeth: i64, w: i64, h: i64) -> Vec<(i64, i64)> {
     }
     ring
 }
+
+/// A staircase of unit steps over the long edge `(0, 0)-(steps, 1)` (`bench/polygon.py
+/// sliver`): every reflex corner on the line `x + y = steps`.
+pub(crate) fn sliver(steps: i64) -> Vec<(i64, i64)> {
+    let mut ring = vec![(0, 0), (steps, 1)];
+    for k in 1..steps {
+        ring.extend([(steps - k, k), (steps - k, k + 1)]);
+    }
+    ring
+}
+
+/// `count` random simple rings on the grid `0..=side`, each grown from a triangle by inserting
+/// up to `inserts` random grid points into random edges (a point kept only when the polygon
+/// stays valid): collinear triples and flat vertices everywhere.
+pub(crate) fn grown_rings(
+    seed: u64,
+    count: usize,
+    side: i64,
+    inserts: i64,
+) -> Vec<Vec<(i64, i64)>> {
+    let mut rnd = xorshift(seed);
+    (0..count)
+        .map(|_| {
+            let mut ring: Vec<(i64, i64)> = vec![(0, 0), (side - 1, 0), (side / 2, side - 1)];
+            for _ in 0..rnd(inserts) {
+                let at = rnd(ring.len() as i64) as usize + 1;
+                let mut next = ring.clone();
+                next.insert(at, (rnd(side), rnd(side)));
+                if Polygon::from_raw(&raw(&[&next])).is_ok() {
+                    ring = next;
+                }
+            }
+            ring
+        })
+        .collect()
+}

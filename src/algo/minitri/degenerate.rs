@@ -266,20 +266,21 @@ pub enum Budget {
     CutsOnly,
 }
 
-/// The triangles a walk from one vertex of a polygon of `n` vertices may cross before it is
-/// given up: `WALK_BUDGET_PER_LOG * ceil(log2 n)`, at least [`WALK_BUDGET_MIN`]. So the walks
-/// cost O(n log n) in all, whatever the polygon, and the bounded method takes the vertices
-/// over it. Its constant factor is several times the walk's (docs/benchmarks.md), so the
-/// budget is set high: every vertex of the benchmark inputs and of the real boundaries stays
-/// under it (the longest walk measured, on China's boundary, crosses 3,626 triangles against
-/// a budget of 7,168), and those inputs never pay for the bounded method.
+/// The triangles a walk from one vertex of a polygon of `n` vertices may cross with parts of
+/// non-zero width before it is given up: `WALK_BUDGET_PER_LOG * ceil(log2 n)`, at least
+/// [`WALK_BUDGET_MIN`]. So the walks cost O(n log n) in all whatever the polygon, and the
+/// bounded method takes the vertices over it. The bounded method's constant factor is several
+/// times the walk's, so the budget is set where no vertex of the random stars, combs, slivers
+/// and Natural Earth boundaries of docs/benchmarks.md reaches it (China's would at 1024), while
+/// a boundary with long straight lines of almost collinear vertices (a TIGER state line) hands
+/// its longest walks over.
 pub fn walk_budget(n: usize) -> usize {
     let log = usize::BITS - n.max(2).leading_zeros();
     (WALK_BUDGET_PER_LOG * log as usize).max(WALK_BUDGET_MIN)
 }
 
 /// See [`walk_budget`].
-pub const WALK_BUDGET_PER_LOG: usize = 512;
+pub const WALK_BUDGET_PER_LOG: usize = 160;
 /// See [`walk_budget`].
 pub const WALK_BUDGET_MIN: usize = 2048;
 

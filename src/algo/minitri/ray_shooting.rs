@@ -523,7 +523,7 @@ mod tests {
     use super::{Mesh, Shooter};
     use crate::geom::kernel::Dir;
     use crate::geom::polygon::Polygon;
-    use crate::test_support::{comb, polygon, xorshift};
+    use crate::test_support::{comb, grown_rings, polygon, sliver};
 
     /// The ray walked triangle by triangle: the reference.
     fn walk(p: &Polygon, mesh: &Mesh, b: usize, d: Dir, mut g: usize) -> Option<usize> {
@@ -548,25 +548,8 @@ mod tests {
     /// over the flipped mesh step 1 walks.
     #[test]
     fn shoots_where_the_walk_ends() {
-        let mut rings = vec![comb(40, 1, 9), comb(13, 2, 3)];
-        let mut sliver = vec![(0, 0), (60, 1)];
-        for k in 1..60 {
-            sliver.extend([(60 - k, k), (60 - k, k + 1)]);
-        }
-        rings.push(sliver);
-        let mut rnd = xorshift(0x35_0000_5407);
-        for _ in 0..300 {
-            let mut ring: Vec<(i64, i64)> = vec![(0, 0), (12, 0), (6, 12)];
-            for _ in 0..rnd(60) {
-                let at = rnd(ring.len() as i64) as usize + 1;
-                let mut next = ring.clone();
-                next.insert(at, (rnd(13), rnd(13)));
-                if Polygon::from_raw(&crate::test_support::raw(&[&next])).is_ok() {
-                    ring = next;
-                }
-            }
-            rings.push(ring);
-        }
+        let mut rings = vec![comb(40, 1, 9), comb(13, 2, 3), sliver(60)];
+        rings.extend(grown_rings(0x35_0000_5407, 300, 13, 60));
         let mut shot = 0;
         for ring in &rings {
             let p = polygon(&[ring]);
