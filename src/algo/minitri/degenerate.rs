@@ -31,10 +31,10 @@
 //! cone where both cones may still see a vertex (about 40-50 per vertex on random stars; see
 //! [`super::expansion`] and `docs/benchmarks.md`). Parts of a cone left with only isolated
 //! directions to match become rays, and a ray that walks far is shot instead
-//! ([`super::ray_shooting`]: O(log^3 n) per ray after an O(n log n) build). The walk from one
+//! ([`super::ray_shooting`]: O(log^2 n) per ray after an O(n log n) build). The walk from one
 //! vertex of a simple polygon is given up past [`walk_budget`] triangles (O(log n)), and the
 //! vertices given up are searched by balanced cuts, shortest-path trees and rays
-//! ([`super::polygon_cutting`], O(n log^4 n)), so step 1 is O(n log^4 n) in the worst case on
+//! ([`super::polygon_cutting`], O(n log^3 n)), so step 1 is O(n log^3 n) in the worst case on
 //! simple polygons (the paper's O(n log^2 n) has a ray shooting of O(log n) per ray). With holes
 //! or touching rings the walk has no budget (the cutting needs a dual tree): O(n^2) in the
 //! worst case, and `deadline` bounds the step.

@@ -35,8 +35,8 @@
 //!
 //! Cost: a piece of `m` triangles costs O(m) to collect and cut and O(m log m) for its four
 //! shortest-path trees (a funnel split by binary search, undone on backtracking); O(n log^2 n)
-//! over the O(log n) levels. Each vertex asks at most two rays per level, each O(log^3 n)
-//! ([`super::ray_shooting::Shooter`]): O(n log^4 n) in all, against O(n^2) for the walk on
+//! over the O(log n) levels. Each vertex asks at most four rays per level, each O(log^2 n)
+//! ([`super::ray_shooting::Shooter`]): O(n log^3 n) in all, against O(n^2) for the walk on
 //! inputs where every reflex vertex sees most of the polygon. Pieces holding no vertex still to
 //! be searched are skipped, so the method costs little when the walk left few vertices to it.
 

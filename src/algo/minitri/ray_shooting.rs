@@ -1,8 +1,8 @@
-//! Ray shooting from a vertex over a triangulation, in O(log^3 n) per ray after O(n log n)
+//! Ray shooting from a vertex over a triangulation, in O(log^2 n) per ray after O(n log n)
 //! preprocessing, with orientation tests only: for the rays of step 1 of MINITRI (Chen & Chang
 //! 1990, §3, Step 1, which shoots rays from reflex vertices along directions given by two
-//! vertices; the paper uses Chazelle and Guibas' procedure, this is a simpler one with a
-//! logarithmic factor more).
+//! vertices; the paper uses Chazelle and Guibas' procedure, O(log n) per ray; this is a simpler
+//! one with a logarithmic factor more).
 //!
 //! A ray from vertex `b` in direction `d` inside a triangulated polygon crosses a sequence of
 //! triangles, a path in the dual tree (degree at most 3), until it meets a vertex exactly (the
@@ -15,14 +15,22 @@
 //! crossed by the ray, going down, exactly when its tail lies strictly right of the ray's line
 //! and its head strictly left; and a ray crossing `h_i, .., h_(j-1)` in turn runs inside those
 //! triangles (a line crosses a triangle's boundary twice: once in, once out), so it reaches
-//! `T_j`. The first `j` where this fails is found in O(log^2 n): a segment tree over the tails
-//! (and one over the heads) of the path holds the convex hull of each range, and whether some
-//! point of a range lies on the closed wrong side of the line is read at the hull's extreme
-//! vertex, found by binary search (the edge directions of a lower or upper hull turn
-//! monotonically within a half-turn, so the side changes at most once along it). Going up is
-//! the mirror image. In `T_j` one step decides: the apex on the line is the answer, else the ray
-//! leaves by one of two sides, to a polygon edge (no vertex) or into a triangle of another heavy
-//! path.
+//! `T_j`. The first `j` where this fails is found by a search tree over the tails (and one over
+//! the heads) of the path whose nodes hold the convex hull of their range: whether some point
+//! of a range lies on the closed wrong side of the line is read at the hull's extreme vertex,
+//! found by binary search (the edge directions of a lower or upper hull turn monotonically
+//! within a half-turn, so the side changes at most once along it). Going up is the mirror
+//! image. In `T_j` one step decides: the apex on the line is the answer, else the ray leaves by
+//! one of two sides, to a polygon edge (no vertex) or into a triangle of another heavy path.
+//!
+//! The search trees are biased: the link `h_j` weighs the triangles hanging off `T_j` and
+//! `T_(j+1)` by light children (plus the path's mean), and a node splits its range where half
+//! its weight is reached, so a link of weight `w` on a path of weight `W` lies O(log(W / w))
+//! deep. A ray enters a heavy path at its top (a prefix is searched, from the root down to the
+//! answer) or from a light subtree of some `T_i` (the search starts at `h_i` or `h_(i-1)`, whose
+//! weight is at least that subtree's size), and leaves it into a light subtree of the answer's
+//! triangle; so the depths telescope over the heavy paths one ray meets, O(log n) nodes in all,
+//! each tested in O(log n): O(log^2 n) per ray.
 //!
 //! Exact: every decision is the sign of a cross product of two differences of input points
 //! ([`Dir::cross`]), in both kernels; no intersection point and no ray parameter is computed.
@@ -222,10 +230,18 @@ impl Shooter {
             }
             let id = paths.len() as u32;
             let mut links = Vec::new();
+            // Per triangle of the path, the triangles hanging off it by light children, itself
+            // included (its subtree without its heavy child's).
+            let mut light = Vec::new();
             let mut t = top;
             loop {
                 place[t] = (id, links.len() as u32);
                 let h = heavy[t];
+                let below = match h {
+                    u32::MAX => 0,
+                    h => mesh.twin_of(h as usize).map_or(0, |g| size[g / 3]),
+                };
+                light.push(u64::from(size[t] - below));
                 if h == u32::MAX {
                     break;
                 }
@@ -235,6 +251,16 @@ impl Shooter {
                     None => break,
                 }
             }
+            // Link h_j weighs what hangs off its two triangles, plus the path's mean (which
+            // keeps the tree about balanced where the weights are even, and at most doubles
+            // the total): a ray entering T_i from a light subtree searches from h_i (down) or
+            // h_(i-1) (up), and leaves T_j into one by h_j or h_(j-1), so each search costs
+            // O(log) of the path's weight over the subtree it came from or goes to, and over
+            // the heavy paths one ray meets these telescope to O(log n) nodes (biased search
+            // trees). A ray entering the path at its top searches a prefix, with no start.
+            let total: u64 = light.iter().sum();
+            let mean = total / light.len().max(1) as u64;
+            let weights: Vec<u64> = light.windows(2).map(|w| w[0] + w[1] + mean).collect();
             let ends = |tail: bool| -> Vec<usize> {
                 links
                     .iter()
@@ -248,8 +274,8 @@ impl Shooter {
                     })
                     .collect()
             };
-            let tails = HullTree::new(polygon, &ends(true));
-            let heads = HullTree::new(polygon, &ends(false));
+            let tails = HullTree::new(polygon, &ends(true), &weights);
+            let heads = HullTree::new(polygon, &ends(false), &weights);
             paths.push(HeavyPath {
                 links,
                 tails,
@@ -295,9 +321,9 @@ impl Shooter {
                 // Down: the first link from i + 1 on not crossed with its tail right and head left.
                 let end = path.links.len();
                 let fail = [
-                    path.tails.at_or_left(polygon, pb, d, i + 1..end, true),
+                    path.tails.at_or_left(polygon, pb, d, i..end, true),
                     path.heads
-                        .at_or_left(polygon, pb, d.reversed(), i + 1..end, true),
+                        .at_or_left(polygon, pb, d.reversed(), i..end, true),
                 ]
                 .into_iter()
                 .flatten()
@@ -318,8 +344,8 @@ impl Shooter {
                 // right (going up, the twin's tail is h's head).
                 let fail = [
                     path.tails
-                        .at_or_left(polygon, pb, d.reversed(), 0..m, false),
-                    path.heads.at_or_left(polygon, pb, d, 0..m, false),
+                        .at_or_left(polygon, pb, d.reversed(), 0..m + 1, false),
+                    path.heads.at_or_left(polygon, pb, d, 0..m + 1, false),
                 ]
                 .into_iter()
                 .flatten()
@@ -340,49 +366,76 @@ impl Shooter {
     }
 }
 
-/// A segment tree over a sequence of points (vertex indices), each node holding the convex
-/// hull of its range as a lower and an upper chain (Andrew's monotone chains), for the first or
-/// last point of a range on the closed left of a line.
+/// A search tree over a sequence of points (vertex indices), each node holding the convex hull
+/// of its range as a lower and an upper chain (Andrew's monotone chains), for the first or last
+/// point of a range on the closed left of a line. Biased by weight: each node splits its range
+/// where the weight is halved (a heavy point soon gets a leaf of its own), so a point of weight
+/// `w` in a sequence of weight `W` lies O(log(W / w)) deep.
 struct HullTree {
     len: usize,
-    /// Per node (heap order, root 1): the range of `verts` holding its lower chain, then its
-    /// upper chain.
-    nodes: Vec<(u32, u32, u32)>,
+    /// The nodes, the root first.
+    nodes: Vec<HullNode>,
     verts: Vec<u32>,
     /// The points of the sequence, in order (the leaves).
     seq: Vec<u32>,
 }
 
+/// A node of a [`HullTree`]: the range of `verts` holding its lower chain, then its upper
+/// chain, and where its range splits. Nodes are in preorder, so the node over `lo..hi` split
+/// at `mid` has its left child next, and its right child `2 (mid - lo)` places on (the left
+/// subtree has `mid - lo` leaves, so `2 (mid - lo) - 1` nodes).
+#[derive(Clone, Copy)]
+struct HullNode {
+    hull: (u32, u32, u32),
+    mid: u32,
+}
+
 impl HullTree {
-    fn new<P: Coord>(polygon: &Polygon<P>, seq: &[usize]) -> HullTree {
+    fn new<P: Coord>(polygon: &Polygon<P>, seq: &[usize], weights: &[u64]) -> HullTree {
         let len = seq.len();
         let mut tree = HullTree {
             len,
-            nodes: vec![(0, 0, 0); if len == 0 { 0 } else { 4 * len }],
+            nodes: Vec::with_capacity(2 * len),
             verts: Vec::new(),
             seq: seq.iter().map(|&v| v as u32).collect(),
         };
+        let mut prefix = vec![0u64; len + 1];
+        for (k, &w) in weights.iter().take(len).enumerate() {
+            prefix[k + 1] = prefix[k] + w.max(1);
+        }
         if len > 0 {
-            tree.build(polygon, 1, 0, len);
+            tree.build(polygon, &prefix, 0, len);
         }
         tree
     }
 
-    /// Builds node `node` over `lo..hi`; returns its points sorted (x, then y), repeats removed.
+    /// Builds the node over `lo..hi` (appended to `nodes`: the root of the call is at the index
+    /// `nodes` had on entry); returns its points sorted (x, then y), repeats removed.
     fn build<P: Coord>(
         &mut self,
         polygon: &Polygon<P>,
-        node: usize,
+        prefix: &[u64],
         lo: usize,
         hi: usize,
     ) -> Vec<u32> {
         let p = |v: u32| polygon.point(v as usize);
+        let node = self.nodes.len();
+        self.nodes.push(HullNode {
+            hull: (0, 0, 0),
+            mid: hi as u32,
+        });
         let sorted = if hi - lo == 1 {
             vec![self.seq[lo]]
         } else {
-            let mid = (lo + hi) / 2;
-            let left = self.build(polygon, 2 * node, lo, mid);
-            let right = self.build(polygon, 2 * node + 1, mid, hi);
+            // The point where half the weight is reached starts the right part (or ends the
+            // left one, when it is the first).
+            let half = prefix[lo] + (prefix[hi] - prefix[lo]) / 2;
+            let k = lo + prefix[lo + 1..=hi].partition_point(|&x| x <= half);
+            let mid = if k == lo { lo + 1 } else { k.min(hi - 1) };
+            let left = self.build(polygon, prefix, lo, mid);
+            debug_assert_eq!(self.nodes.len(), node + 2 * (mid - lo));
+            let right = self.build(polygon, prefix, mid, hi);
+            self.nodes[node].mid = mid as u32;
             let mut merged = Vec::with_capacity(left.len() + right.len());
             let (mut i, mut j) = (0, 0);
             while i < left.len() || j < right.len() {
@@ -419,7 +472,7 @@ impl HullTree {
         chain(&mut self.verts, &mut sorted.iter());
         let split = self.verts.len();
         chain(&mut self.verts, &mut sorted.iter().rev());
-        self.nodes[node] = (start as u32, split as u32, self.verts.len() as u32);
+        self.nodes[node].hull = (start as u32, split as u32, self.verts.len() as u32);
         sorted
     }
 
@@ -429,7 +482,7 @@ impl HullTree {
     fn reaches<P: Coord>(&self, polygon: &Polygon<P>, node: usize, b: P, d: Dir<P>) -> bool {
         let p = |v: u32| polygon.point(v as usize);
         let left = |v: u32| d.cross(Dir::between(b, p(v))) >= 0;
-        let (start, split, end) = self.nodes[node];
+        let (start, split, end) = self.nodes[node].hull;
         for chain in [
             &self.verts[start as usize..split as usize],
             &self.verts[split as usize..end as usize],
@@ -478,7 +531,7 @@ impl HullTree {
             polygon,
             b,
             d,
-            1,
+            0,
             0,
             self.len,
             range.start,
@@ -488,7 +541,8 @@ impl HullTree {
     }
 
     /// The first (`forward`) or last index of `lo..hi` within node `node` (over `from..to`)
-    /// whose point is on the closed left of the line: O(log^2) (O(log) nodes tested whole).
+    /// whose point is on the closed left of the line: the nodes visited are those on the paths
+    /// to `lo` (or `hi - 1`) and to the answer, each tested in O(log) by [`HullTree::reaches`].
     #[allow(clippy::too_many_arguments)]
     fn find<P: Coord>(
         &self,
@@ -508,8 +562,8 @@ impl HullTree {
         if to - from == 1 {
             return Some(from);
         }
-        let mid = (from + to) / 2;
-        let halves = [(2 * node, from, mid), (2 * node + 1, mid, to)];
+        let mid = self.nodes[node].mid as usize;
+        let halves = [(node + 1, from, mid), (node + 2 * (mid - from), mid, to)];
         let order = if forward { [0, 1] } else { [1, 0] };
         order.into_iter().find_map(|k| {
             let (n, f, t) = halves[k];
