@@ -79,8 +79,9 @@ const NONE: usize = usize::MAX;
 
 /// The minimally degenerate triangles whose middle vertex `b` has `wanted[b]` (`b` reflex), in
 /// a simple polygon (one ring, no touches) triangulated by `mesh`, rays shot by `shooter` (built
-/// on the same mesh). `None` if `deadline` passed first (the deadline is read before every
-/// piece). The triangles come in no particular order, without repetition.
+/// on the same mesh). `None` if `deadline` passed first (read before each level's
+/// shortest-path trees and again before its rays; a level is O(n log n) work, the deadline's
+/// granularity). The triangles come in no particular order, without repetition.
 pub(super) fn middles<P: Coord>(
     polygon: &Polygon<P>,
     mesh: &Mesh,
