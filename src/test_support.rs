@@ -172,17 +172,21 @@ pub(crate) fn comb(teeth: i64, w: i64, h: i64) -> Vec<(i64, i64)> {
     ring
 }
 
-/// A staircase of unit steps over the long edge `(0, 0)-(steps, 1)` (`bench/polygon.py
-/// sliver`): every reflex corner on the line `x + y = steps`.
-pub(crate) fn sliver(steps: i64) -> Vec<(i64, i64)> {
-    let mut ring = vec![(0, 0), (steps, 1)];
+/// A sliver staircase: unit steps (scaled by `w` and `h`) from `(steps w, 1)` up to
+/// `(w, steps h)` over the long edge from the origin, as `bench/polygon.py sliver` (with `w = h
+/// = 1` every reflex corner lies on one line, each seeing along it).
+pub(crate) fn sliver(steps: i64, w: i64, h: i64) -> Vec<(i64, i64)> {
+    let mut ring = vec![(0, 0), (steps * w, 1)];
     for k in 1..steps {
-        ring.extend([(steps - k, k), (steps - k, k + 1)]);
+        ring.extend([
+            ((steps - k) * w, 1 + (k - 1) * h),
+            ((steps - k) * w, 1 + k * h),
+        ]);
     }
     ring
 }
 
-/// `count` random simple rings on the grid `0..=side`, each grown from a triangle by inserting
+/// `count` random simple rings on the grid `0..side`, each grown from a triangle by inserting
 /// up to `inserts` random grid points into random edges (a point kept only when the polygon
 /// stays valid): collinear triples and flat vertices everywhere.
 pub(crate) fn grown_rings(

@@ -422,6 +422,16 @@ impl<P: Coord> Dir<P> {
     pub fn dot(self, other: Dir<P>) -> i128 {
         P::vector_dot(self.0, other.0)
     }
+
+    /// Total order of directions by counter-clockwise angle measured from `self` (angle 0, up
+    /// to but excluding a full turn): [`cmp_angle_from`] for directions.
+    pub fn cmp_angle_from(self, a: Dir<P>, b: Dir<P>) -> Ordering {
+        let half = |d: Dir<P>| {
+            let s = self.cross(d);
+            u8::from(!(s > 0 || (s == 0 && self.dot(d) > 0)))
+        };
+        half(a).cmp(&half(b)).then_with(|| 0.cmp(&a.cross(b)))
+    }
 }
 
 /// APPROXIMATELY whether `d` lies inside the circle through the counter-clockwise triangle

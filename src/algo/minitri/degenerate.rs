@@ -380,21 +380,18 @@ pub fn minimally_degenerate_over_budget<P: Coord>(
 /// `next(b)` of the end in `b`'s first cone (the end whose direction lies less than a half-turn
 /// counter-clockwise from `next(b)`).
 fn in_walk_order<P: Coord>(polygon: &Polygon<P>, list: &mut [Degenerate]) {
+    // From `b`: the direction of next(b), and that of the end at the smaller angle from it
+    // (the ends are a half-turn apart, so exactly one lies less than a half-turn on).
     let key = |m: &Degenerate| {
         let c = polygon.point(m.b);
-        let base = Dir::between(c, polygon.point(polygon.next(m.b)));
-        let first_half = |v: usize| {
-            let d = Dir::between(c, polygon.point(v));
-            let s = base.cross(d);
-            s > 0 || (s == 0 && base.dot(d) > 0)
-        };
-        let end = if first_half(m.a) { m.a } else { m.c };
-        (base, Dir::between(c, polygon.point(end)))
+        let dir = |v: usize| Dir::between(c, polygon.point(v));
+        let (base, da, dc) = (dir(polygon.next(m.b)), dir(m.a), dir(m.c));
+        (base, std::cmp::min_by(da, dc, |x, y| base.cmp_angle_from(*x, *y)))
     };
     list.sort_by(|x, y| {
         x.b.cmp(&y.b).then_with(|| {
-            let ((_, dx), (_, dy)) = (key(x), key(y));
-            0.cmp(&dx.cross(dy))
+            let ((base, dx), (_, dy)) = (key(x), key(y));
+            base.cmp_angle_from(dx, dy)
         })
     });
 }

@@ -149,7 +149,7 @@ fn rays_of_half<P: Coord>(
     h: usize,
 ) -> Vec<u64> {
     // One set of buffers per thread, kept from call to call (grown to the largest mesh seen).
-    thread_local!(static FUNNELS: RefCell<Funnels> = RefCell::new(Funnels::new(0, 0)));
+    thread_local!(static FUNNELS: RefCell<Funnels> = RefCell::default());
     FUNNELS.with_borrow_mut(|funnels| {
         funnels.fit(polygon.len(), mesh.triangle_count());
         let mut rays = Vec::new();
@@ -254,7 +254,9 @@ impl Pieces {
 /// vertex `w` finds its parent `buf[t]` by binary search, and the two funnels beyond are
 /// `buf[lo..=t], w` and `w, buf[t..=hi]`: `w` is written next to `t`, the overwritten entry
 /// restored once that side is done.
+#[derive(Default)]
 struct Funnels {
+    /// The funnel (see [`Funnels::fit`] for its size).
     buf: Vec<u32>,
     /// Per vertex, its parent in the last tree (valid for the vertices of `reached`).
     parent: Vec<u32>,
@@ -280,17 +282,9 @@ enum Task {
 }
 
 impl Funnels {
-    fn new(vertices: usize, triangles: usize) -> Funnels {
-        Funnels {
-            // The funnel's range moves by at most one place per triangle crossed.
-            buf: vec![0; 2 * triangles + 8],
-            parent: vec![0; vertices],
-            reached: Vec::new(),
-            tasks: Vec::new(),
-        }
-    }
-
-    /// Makes the buffers fit a mesh of `triangles` triangles over `vertices` vertices.
+    /// Makes the buffers fit a mesh of `triangles` triangles over `vertices` vertices (the
+    /// funnel starts in the middle of `buf`, and its range moves by at most one place per
+    /// triangle crossed).
     fn fit(&mut self, vertices: usize, triangles: usize) {
         if self.parent.len() < vertices {
             self.parent.resize(vertices, 0);
@@ -512,13 +506,9 @@ impl<P: Coord> Fans<P> {
     ) -> Option<usize> {
         let range = self.start[u]..self.start[u + 1];
         let dirs = &self.dirs[range.clone()];
+        // The fan's directions by counter-clockwise angle from its first one, next(u).
         let base = *dirs.first()?;
-        // Counter-clockwise angle from `base`, in [0, 2 pi): half-turn, then cross product.
-        let half = |x: Dir<P>| {
-            let s = base.cross(x);
-            u8::from(!(s > 0 || (s == 0 && base.dot(x) > 0)))
-        };
-        let cmp = |x: Dir<P>, y: Dir<P>| half(x).cmp(&half(y)).then(0.cmp(&x.cross(y)));
+        let cmp = |x: Dir<P>, y: Dir<P>| base.cmp_angle_from(x, y);
         let i = dirs.partition_point(|&x| cmp(x, d) == Ordering::Less);
         let i_abs = range.start + i;
         if i == dirs.len() {
@@ -555,7 +545,7 @@ mod tests {
     /// staircase and random grid polygons, over the flipped mesh step 1 uses.
     #[test]
     fn finds_every_triangle_with_a_reflex_middle() {
-        let mut rings = vec![comb(40, 1, 9), comb(7, 2, 3), comb(1, 1, 1), sliver(40)];
+        let mut rings = vec![comb(40, 1, 9), comb(7, 2, 3), comb(1, 1, 1), sliver(40, 1, 1)];
         rings.extend(grown_rings(0x35_c075_0001, 300, 11, 50));
         let mut total = 0;
         for ring in &rings {

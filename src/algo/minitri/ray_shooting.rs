@@ -318,7 +318,9 @@ impl Shooter {
             let path = &self.paths[id as usize];
             let i = i as usize;
             if path.links.get(i).is_some_and(|&h| h as usize == k) {
-                // Down: the first link from i + 1 on not crossed with its tail right and head left.
+                // Down: the first link from i on not crossed with its tail right and head left (h_i,
+                // which the ray leaves by, passes: searching from it keeps the search's start
+                // at the weight of what hangs off T_i).
                 let end = path.links.len();
                 let fail = [
                     path.tails.at_or_left(polygon, pb, d, i..end, true),
@@ -340,8 +342,8 @@ impl Shooter {
                 .checked_sub(1)
                 .and_then(|m| mesh.twin_of(path.links[m] as usize).map(|h| (m, h)));
             if let Some((m, _)) = up.filter(|&(_, h)| h == k) {
-                // Up across h_m: the last link below m not crossed with its tail left and head
-                // right (going up, the twin's tail is h's head).
+                // Up across h_m: the last link up to m not crossed with its tail left and head
+                // right (going up, the twin's tail is h's head; h_m itself passes).
                 let fail = [
                     path.tails
                         .at_or_left(polygon, pb, d.reversed(), 0..m + 1, false),
@@ -602,7 +604,7 @@ mod tests {
     /// over the flipped mesh step 1 walks.
     #[test]
     fn shoots_where_the_walk_ends() {
-        let mut rings = vec![comb(40, 1, 9), comb(13, 2, 3), sliver(60)];
+        let mut rings = vec![comb(40, 1, 9), comb(13, 2, 3), sliver(60, 1, 1)];
         rings.extend(grown_rings(0x35_0000_5407, 300, 13, 60));
         let mut shot = 0;
         for ring in &rings {

@@ -1142,20 +1142,6 @@ fn the_bound_after_a_cut_short_step_1_holds_for_any_vertices_looked_from() {
     assert!(tight > 100, "{tight}");
 }
 
-/// A sliver staircase: unit steps (scaled by `w` and `h`) from `(steps w, 1)` up to
-/// `(w, steps h)` over the long edge from the origin, as `bench/polygon.py sliver` (with `w = h
-/// = 1` every reflex corner lies on one line, each seeing along it).
-fn sliver_ring(steps: i64, w: i64, h: i64) -> Vec<(i64, i64)> {
-    let mut ring = vec![(0, 0), (steps * w, 1)];
-    for k in 1..steps {
-        ring.extend([
-            ((steps - k) * w, 1 + (k - 1) * h),
-            ((steps - k) * w, 1 + k * h),
-        ]);
-    }
-    ring
-}
-
 /// A corridor one unit wide climbing a random staircase (steps of 1 to 3 units right and up,
 /// the upper wall the lower one moved by (-1, 1)), every lattice point of its walls a vertex,
 /// as `bench/polygon.py stairs-lattice`.
@@ -1197,7 +1183,7 @@ fn step_one_is_the_same_whatever_the_ray_policy() {
     }
     for steps in [2, 3, 4, 9, 40, 150] {
         for (w, h) in [(1, 1), (2, 1), (1, 3)] {
-            let ring = sliver_ring(steps, w, h);
+            let ring = crate::test_support::sliver(steps, w, h);
             found += assert_policies_agree(&polygon(&[&ring]), &format!("sliver {steps} {w} {h}"));
         }
     }
@@ -1218,8 +1204,8 @@ fn step_one_is_the_same_whatever_the_ray_policy() {
     // The same on the wide kernel (its own orientation tests).
     let rings = [
         crate::test_support::comb(30, 1, 9),
-        sliver_ring(80, 1, 1),
-        sliver_ring(50, 3, 2),
+        crate::test_support::sliver(80, 1, 1),
+        crate::test_support::sliver(50, 3, 2),
         lattice_stairs_ring(25, 3),
         snake_ring(2, 12, 5, 0),
     ];
