@@ -22,7 +22,10 @@
 //! cone's highest pending part are settled, so a part of the other cone whose opposite directions
 //! are all settled and hold no vertex found there is dropped, and a part reaching above the other
 //! cone's highest pending part is cut down to it. In general position almost no direction has a
-//! vertex on both sides, so most of the wide cone never needs walking.
+//! vertex on both sides, so most of the wide cone never needs walking. A part that walks far
+//! while the other cone's top part shares its directions lets that part walk in turn (at 64
+//! triangles from the vertex, then 128, ..): where the other side ends sooner, the far walk is
+//! cut short (a TIGER state boundary of long, almost straight lines: -17% time in all).
 //!
 //! The walk runs over the plain triangulation as a half-edge [`Mesh`] (the one of `algo/mesh.rs`,
 //! each vertex's boundary half-edge starting its fan), made fatter by edge flips towards the
@@ -121,6 +124,8 @@ pub struct Workspace<P: Coord> {
     /// Per cone: the vertices found with their directions from `b`, by decreasing angle while
     /// searching, by increasing angle when handed out.
     found: [Vec<Sighting<P>>; 2],
+    /// The rays a part is cut into ([`isolated`]), by decreasing angle.
+    rays: Vec<Dir<P>>,
 }
 
 impl<P: Coord> Default for Workspace<P> {
@@ -130,6 +135,7 @@ impl<P: Coord> Default for Workspace<P> {
             far_sides: Vec::new(),
             stacks: [Vec::new(), Vec::new()],
             found: [Vec::new(), Vec::new()],
+            rays: Vec::new(),
         }
     }
 }
@@ -163,6 +169,9 @@ pub type Cones<'w, P> = (&'w [Sighting<P>], &'w [Sighting<P>]);
 /// stack and list). A part that crosses a triangle wholly on one side of its apex walks on into
 /// the next one without going back to the stack: it is still the highest part, and nothing
 /// changed in the other cone (most of the triangles walked on random stars: docs/benchmarks.md).
+/// After a turn (a long walk stopped to let the other cone walk, see the body) that order holds
+/// within each cone only: the lookups stay exact (they search sorted lists, stepping over more
+/// entries), and the cutting of parts into rays then reads every vertex found opposite a part.
 pub fn double_cone<'w, P: Coord>(
     polygon: &Polygon<P>,
     mesh: &Mesh,
@@ -194,6 +203,7 @@ pub fn double_cone<'w, P: Coord>(
         far_sides,
         stacks,
         found,
+        rays,
     } = work;
     // The fan around b, counter-clockwise from the edge to next(b) to the edge from prev(b):
     // its vertices u_0 = next(b), .., u_m = prev(b) by increasing angle (from 0 to b's interior
@@ -274,23 +284,51 @@ pub fn double_cone<'w, P: Coord>(
     // parts of non-zero width: `give_up_at` moves up by the triangles rays walk (their walking
     // is bounded by the shooter's policy instead). One test in the loop for both thresholds.
     let mut give_up_at = shooter.budget().saturating_add(1);
-    let next_check = |crossed: usize, give_up_at: usize| {
+    // Turns: when the walk from b reaches `yield_at` triangles, the wide part walking on goes
+    // back to its stack and the other cone walks next if its top part shares directions with
+    // it (turned by a half-turn); the next such moment is twice as far. Without turns a part
+    // reaching higher walks its whole length first, even where the other cone's opposite part
+    // would end at a polygon edge within a few triangles and settle those directions empty (on
+    // a state boundary of long, almost straight lines, parts crossing the whole polygon); with
+    // them such a part is pruned or cut into rays once the other cone has walked. Each cone
+    // still sweeps down in angle, so what the pruning reads stays exact; only the cones' order
+    // changes (`turned`: it has, see `isolated`).
+    let mut yield_at = FIRST_QUOTA;
+    let next_check = |crossed: usize, give_up_at: usize, yield_at: usize| {
         let at = if crossed < isolate_after {
             isolate_after.min(give_up_at)
         } else {
             give_up_at
         };
-        at.max(crossed + 1)
+        at.min(yield_at).max(crossed + 1)
     };
-    let mut check_at = next_check(0, give_up_at);
+    let mut check_at = next_check(0, give_up_at, yield_at);
+    // The cone whose turn it is, if any (NO_TURN).
+    let (mut turn, mut turned) = (NO_TURN, false);
     loop {
         // Expand the cone whose top part reaches higher (comparing the other cone's directions
-        // turned by a half-turn), so that both sweep down together.
+        // turned by a half-turn), so that both sweep down together; or the other cone, whose
+        // turn it is.
         let side = match (stacks[0].last(), stacks[1].last()) {
             (None, None) => break,
             (Some(_), None) => 0,
             (None, Some(_)) => 1,
-            (Some(s), Some(t)) => usize::from(s.1.hi.cross(t.1.hi.reversed()) > 0),
+            (Some(s), Some(t)) => {
+                let higher = usize::from(s.1.hi.cross(t.1.hi.reversed()) > 0);
+                if turn != NO_TURN {
+                    let side = std::mem::replace(&mut turn, NO_TURN);
+                    if side != higher && share(s.1, t.1) {
+                        turned = true;
+                        #[cfg(test)]
+                        TURNS.with(|t| t.set(t.get() + 1));
+                        side
+                    } else {
+                        higher
+                    }
+                } else {
+                    higher
+                }
+            }
         };
         let Some((step, mut cone)) = stacks[side].pop() else {
             break; // not reached: the chosen cone has a part
@@ -307,9 +345,9 @@ pub fn double_cone<'w, P: Coord>(
         // only isolated directions opposite this part (vertices found there, zero-width parts
         // still pending), and no wide part, the part becomes a few rays.
         if let (Step::Enter(g), true) = (step, crossed >= isolate_after) {
-            if let Some(rays) = isolated(parts, seen, cone) {
+            if isolated(parts, seen, cone, turned, rays) {
                 // The rays by increasing angle, the highest on top.
-                for &d in rays.0.iter().rev().flatten() {
+                for &d in rays.iter().rev() {
                     stacks[side].push((Step::Enter(g), Cone::at(d)));
                 }
                 continue;
@@ -342,9 +380,9 @@ pub fn double_cone<'w, P: Coord>(
             }
             Step::Enter(g) => g,
         };
-        // Walk on while the whole part passes one side of the entered triangle's apex: it stays
-        // the highest part of both cones and the other cone is unchanged, so the tests above
-        // would give the same answer again (no push and pop for each triangle crossed).
+        // Walk on while the whole part passes one side of the entered triangle's apex: the other
+        // cone is unchanged, so the tests above would give the same answer again (no push and
+        // pop for each triangle crossed).
         let stack = &mut stacks[side];
         // A ray (zero-width part) walks RAY_WALK triangles at a time; past that, once long
         // walks have cost enough in all, it is shot over heavy paths instead (`ray_shooting`).
@@ -366,7 +404,18 @@ pub fn double_cone<'w, P: Coord>(
                 if !ray && crossed >= give_up_at {
                     return None;
                 }
-                check_at = next_check(crossed, give_up_at);
+                if crossed >= yield_at {
+                    yield_at = crossed.saturating_mul(2);
+                    if !ray {
+                        // Back to the stack; the other cone walks next if its top part shares
+                        // directions with this one.
+                        check_at = next_check(crossed, give_up_at, yield_at);
+                        turn = other;
+                        stack.push((Step::Enter(g), cone));
+                        break;
+                    }
+                }
+                check_at = next_check(crossed, give_up_at, yield_at);
                 if crossed == isolate_after && !ray {
                     // Back to the stack, to be taken again at once and cut into rays if it can.
                     stack.push((Step::Enter(g), cone));
@@ -414,7 +463,7 @@ pub fn double_cone<'w, P: Coord>(
         }
         if ray {
             give_up_at = give_up_at.saturating_add(walked);
-            check_at = next_check(crossed, give_up_at);
+            check_at = next_check(crossed, give_up_at, yield_at);
         }
     }
     for list in found.iter_mut() {
@@ -432,16 +481,38 @@ pub fn double_cone<'w, P: Coord>(
 pub const ISOLATE_AFTER: usize = 64;
 
 /// The most rays a part is cut into by [`isolated`]; with more, it is walked whole.
-const MAX_RAYS: usize = 4;
+const MAX_RAYS: usize = 16;
 
-/// Cuts a wide part `cone` of one cone (just popped: it lies above or at everything pending in
-/// the other cone, and below or at everything found there) into rays, when the other cone has
-/// nothing but isolated directions opposite it: zero-width parts on top of its stack (`parts`,
-/// sorted by angle, the highest last: vertices waiting to be recorded, or rays), a vertex found
-/// at the part's upper end (`seen`), and no wide part overlapping it. Returns the rays, by
-/// decreasing angle; `None` when a wide part overlaps the part (then walking the part costs
-/// less than walking a few rays besides), when more than [`MAX_RAYS`] rays would be needed or
-/// more zero-width parts would have to be looked at.
+/// The triangles walked from a vertex before a wide part walking on first lets the other cone
+/// take its turn (then at twice as many, and so on; see [`double_cone`]). Typical vertices
+/// never get there (random stars walk 40-50 triangles per vertex); 64 measured best among
+/// 8-1024 (docs/benchmarks.md).
+const FIRST_QUOTA: usize = 64;
+
+// How many times a cone took its turn out of the angular order, on this thread (for tests).
+#[cfg(test)]
+thread_local!(pub(super) static TURNS: std::cell::Cell<usize> = const { std::cell::Cell::new(0) });
+
+/// No cone's turn ([`double_cone`]).
+const NO_TURN: usize = 2;
+
+/// Whether parts `p` and `q` of opposite cones share a direction (`q` turned by a half-turn).
+fn share<P: Coord>(p: Cone<P>, q: Cone<P>) -> bool {
+    let q = q.reversed();
+    !p.wholly_below(q) && !q.wholly_below(p)
+}
+
+/// Cuts a wide part `cone` of one cone (just popped) into `rays`, by decreasing angle, when the
+/// other cone has nothing but isolated directions opposite it: vertices found there (`seen`, by
+/// decreasing angle), zero-width parts on top of its stack (`parts`, sorted by angle, the
+/// highest last: vertices waiting to be recorded, or rays), and no wide part overlapping it.
+/// False (walk the part) when a wide part overlaps it (then walking the part costs less than
+/// walking a few rays besides), when more than [`MAX_RAYS`] rays would be needed or more
+/// zero-width parts would have to be looked at.
+///
+/// When the cones sweep in step, the part lies above or at everything pending in the other
+/// cone and below or at everything found there (so at most one vertex found, at its upper end);
+/// after a turn ([`double_cone`]) vertices found inside it come first.
 ///
 /// Exact: the directions are those of vertices, compared by cross product signs. A ray walked
 /// from the part's entry side finds the nearest vertex exactly on it, as the part would have
@@ -453,14 +524,44 @@ fn isolated<P: Coord>(
     parts: &[(Step, Cone<P>)],
     seen: &[Sighting<P>],
     cone: Cone<P>,
-) -> Option<Rays<P>> {
+    turned: bool,
+    rays: &mut Vec<Dir<P>>,
+) -> bool {
+    rays.clear();
     if cone.lo.cross(cone.hi) <= 0 {
-        return None; // already a ray
+        return false; // already a ray
     }
-    let mut rays = Rays::default();
-    // A vertex found exactly opposite the upper end (found vertices lie above or at the part).
-    if cone.hi_in && found_in(seen, Cone::at(cone.hi.reversed())) && !rays.add(cone.hi) {
-        return None;
+    // Adds `d`, at or below those already in (a repeat of the last is skipped); false if full.
+    let add = |rays: &mut Vec<Dir<P>>, d: Dir<P>| {
+        if rays.last().is_some_and(|r| r.cross(d) == 0) {
+            return true;
+        }
+        rays.push(d);
+        rays.len() <= MAX_RAYS
+    };
+    // The vertices found opposite the part: the last of the list that are not below it; when
+    // the cones sweep in step, at most one, at the part's upper end.
+    if turned {
+        let opposite = cone.reversed();
+        let below = seen
+            .iter()
+            .rev()
+            .take_while(|&&(d, _)| Cone::at(d).wholly_below(opposite))
+            .count();
+        let rest = &seen[..seen.len() - below];
+        let inside = rest
+            .iter()
+            .rev()
+            .take(MAX_RAYS + 1)
+            .take_while(|&&(d, _)| opposite.holds(d))
+            .count();
+        for &(d, _) in &rest[rest.len() - inside..] {
+            if !add(rays, d.reversed()) {
+                return false;
+            }
+        }
+    } else if cone.hi_in && found_in(seen, Cone::at(cone.hi.reversed())) {
+        add(rays, cone.hi);
     }
     // The zero-width parts on top of the other stack, from the top down: at most MAX_RAYS + 1
     // looked at, so that each part taken costs O(1) more (a stack topped by many vertices
@@ -472,67 +573,38 @@ fn isolated<P: Coord>(
             break;
         }
         if parts.len() - k > MAX_RAYS {
-            return None;
+            return false;
         }
         k -= 1;
         let d = part.lo.reversed();
         if cone.holds(d) {
-            if !rays.add(d) {
-                return None;
+            if !add(rays, d) {
+                return false;
             }
         } else if cone.lo.cross(d) <= 0 {
             // At or below the part's lower end: so is everything further down.
-            return Some(rays);
+            return true;
         }
     }
     // The highest wide part left, if any.
     let Some(wide) = k.checked_sub(1).map(|k| parts[k].1) else {
-        return Some(rays);
+        return true;
     };
     let f = wide.hi.reversed();
     if f.cross(cone.hi) <= 0 {
-        return None; // the wide part reaches the part's upper end: nothing to cut
+        return false; // the wide part reaches the part's upper end: nothing to cut
     }
     let low = cone.lo.cross(f);
     if low < 0 {
-        return Some(rays); // the wide part lies wholly below the part
+        return true; // the wide part lies wholly below the part
     }
     if low == 0 {
         // The two meet at the part's lower end only: a ray there if both include it.
-        if cone.lo_in && wide.hi_in && !rays.add(cone.lo) {
-            return None;
-        }
-        return Some(rays);
+        return !(cone.lo_in && wide.hi_in) || add(rays, cone.lo);
     }
     // A wide part overlapping this one: the walk of the range would stay, and walking a few
     // rays besides costs more than it saves (measured on random stars and corridors).
-    None
-}
-
-/// Up to [`MAX_RAYS`] directions by decreasing angle ([`isolated`]).
-struct Rays<P: Coord>([Option<Dir<P>>; MAX_RAYS]);
-
-impl<P: Coord> Default for Rays<P> {
-    fn default() -> Self {
-        Rays([None; MAX_RAYS])
-    }
-}
-
-impl<P: Coord> Rays<P> {
-    /// Adds `d`, at or below those already in (a repeat of the last is skipped); false if full.
-    fn add(&mut self, d: Dir<P>) -> bool {
-        let count = self.0.iter().take_while(|r| r.is_some()).count();
-        if count > 0 && self.0[count - 1].is_some_and(|r| r.cross(d) == 0) {
-            return true;
-        }
-        match self.0.get_mut(count) {
-            Some(slot) => {
-                *slot = Some(d);
-                true
-            }
-            None => false,
-        }
-    }
+    false
 }
 
 /// Whether a part of `parts` (disjoint, sorted by angle, the highest last) shares a direction

@@ -1218,6 +1218,28 @@ fn step_one_is_the_same_whatever_the_ray_policy() {
     }
 }
 
+/// Long, almost straight lines (a state boundary): a box whose bottom and top are chains of
+/// vertices a few units off a line. The walk from a vertex of one chain crosses the box while
+/// the other cone's part opposite ends against the chain, so the cones take turns
+/// (`expansion::double_cone`); the triangles found must not change: the same as the sweep's,
+/// whatever the ray policy and the budget.
+#[test]
+fn step_one_on_state_lines_takes_turns_and_finds_the_same() {
+    let mut found = 0;
+    let turns_before = super::expansion::TURNS.with(|t| t.get());
+    for seed in 1..=6u64 {
+        let mut rnd = crate::test_support::xorshift(0x7161_0000 + seed);
+        let k = 60 + 10 * seed as i64;
+        let mut ring: Vec<(i64, i64)> = (0..=k).map(|i| (10 * i, rnd(3))).collect();
+        ring.extend((0..=k).rev().map(|i| (10 * i, 400 + rnd(3))));
+        found += assert_policies_agree(&polygon(&[&ring]), &format!("state lines {seed}"));
+    }
+    let turns = super::expansion::TURNS.with(|t| t.get()) - turns_before;
+    // 594 triangles and 438 turns (over the five ways of check_ray_policies) when written.
+    assert!(found > 500, "{found} triangles");
+    assert!(turns > 100, "{turns} turns taken");
+}
+
 /// On the earcut fixtures of up to 3000 vertices (holes and touching rings among them: the
 /// walks' mesh, with a copy of each touch point; both kernels), step 1 finds the same triangles,
 /// kinds included, whatever the ray policy, and the sweep agrees.
