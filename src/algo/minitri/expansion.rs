@@ -87,6 +87,11 @@ impl<P: Coord> Cone<P> {
         c < 0 || (c == 0 && !(other.lo_in && self.hi_in))
     }
 
+    /// Whether `self` and `other` (in the same cone) share a direction.
+    fn meets(self, other: Cone<P>) -> bool {
+        !self.wholly_below(other) && !other.wholly_below(self)
+    }
+
     /// Whether direction `d` (in the same cone) lies in `self`, ends as flagged.
     fn holds(self, d: Dir<P>) -> bool {
         self.holds_given(d, self.lo.cross(d))
@@ -292,7 +297,7 @@ pub fn double_cone<'w, P: Coord>(
     // a state boundary of long, almost straight lines, parts crossing the whole polygon); with
     // them such a part is pruned or cut into rays once the other cone has walked. Each cone
     // still sweeps down in angle, so what the pruning reads stays exact; only the cones' order
-    // changes (`turned`: it has, see `isolated`).
+    // changes.
     let mut yield_at = FIRST_QUOTA;
     let next_check = |crossed: usize, give_up_at: usize, yield_at: usize| {
         let at = if crossed < isolate_after {
@@ -304,7 +309,7 @@ pub fn double_cone<'w, P: Coord>(
     };
     let mut check_at = next_check(0, give_up_at, yield_at);
     // The cone whose turn it is, if any (NO_TURN).
-    let (mut turn, mut turned) = (NO_TURN, false);
+    let mut turn = NO_TURN;
     loop {
         // Expand the cone whose top part reaches higher (comparing the other cone's directions
         // turned by a half-turn), so that both sweep down together; or the other cone, whose
@@ -317,8 +322,7 @@ pub fn double_cone<'w, P: Coord>(
                 let higher = usize::from(s.1.hi.cross(t.1.hi.reversed()) > 0);
                 if turn != NO_TURN {
                     let side = std::mem::replace(&mut turn, NO_TURN);
-                    if side != higher && share(s.1, t.1) {
-                        turned = true;
+                    if side != higher && s.1.meets(t.1.reversed()) {
                         #[cfg(test)]
                         TURNS.with(|t| t.set(t.get() + 1));
                         side
@@ -345,7 +349,7 @@ pub fn double_cone<'w, P: Coord>(
         // only isolated directions opposite this part (vertices found there, zero-width parts
         // still pending), and no wide part, the part becomes a few rays.
         if let (Step::Enter(g), true) = (step, crossed >= isolate_after) {
-            if isolated(parts, seen, cone, turned, rays) {
+            if isolated(parts, seen, cone, rays) {
                 // The rays by increasing angle, the highest on top.
                 for &d in rays.iter().rev() {
                     stacks[side].push((Step::Enter(g), Cone::at(d)));
@@ -404,18 +408,18 @@ pub fn double_cone<'w, P: Coord>(
                 if !ray && crossed >= give_up_at {
                     return None;
                 }
-                if crossed >= yield_at {
+                let yielding = crossed >= yield_at;
+                if yielding {
                     yield_at = crossed.saturating_mul(2);
-                    if !ray {
-                        // Back to the stack; the other cone walks next if its top part shares
-                        // directions with this one.
-                        check_at = next_check(crossed, give_up_at, yield_at);
-                        turn = other;
-                        stack.push((Step::Enter(g), cone));
-                        break;
-                    }
                 }
                 check_at = next_check(crossed, give_up_at, yield_at);
+                if yielding && !ray {
+                    // Back to the stack; the other cone walks next if its top part shares
+                    // directions with this one.
+                    turn = other;
+                    stack.push((Step::Enter(g), cone));
+                    break;
+                }
                 if crossed == isolate_after && !ray {
                     // Back to the stack, to be taken again at once and cut into rays if it can.
                     stack.push((Step::Enter(g), cone));
@@ -496,12 +500,6 @@ thread_local!(pub(super) static TURNS: std::cell::Cell<usize> = const { std::cel
 /// No cone's turn ([`double_cone`]).
 const NO_TURN: usize = 2;
 
-/// Whether parts `p` and `q` of opposite cones share a direction (`q` turned by a half-turn).
-fn share<P: Coord>(p: Cone<P>, q: Cone<P>) -> bool {
-    let q = q.reversed();
-    !p.wholly_below(q) && !q.wholly_below(p)
-}
-
 /// Cuts a wide part `cone` of one cone (just popped) into `rays`, by decreasing angle, when the
 /// other cone has nothing but isolated directions opposite it: vertices found there (`seen`, by
 /// decreasing angle), zero-width parts on top of its stack (`parts`, sorted by angle, the
@@ -524,7 +522,6 @@ fn isolated<P: Coord>(
     parts: &[(Step, Cone<P>)],
     seen: &[Sighting<P>],
     cone: Cone<P>,
-    turned: bool,
     rays: &mut Vec<Dir<P>>,
 ) -> bool {
     rays.clear();
@@ -539,29 +536,25 @@ fn isolated<P: Coord>(
         rays.push(d);
         rays.len() <= MAX_RAYS
     };
-    // The vertices found opposite the part: the last of the list that are not below it; when
-    // the cones sweep in step, at most one, at the part's upper end.
-    if turned {
-        let opposite = cone.reversed();
-        let below = seen
-            .iter()
-            .rev()
-            .take_while(|&&(d, _)| Cone::at(d).wholly_below(opposite))
-            .count();
-        let rest = &seen[..seen.len() - below];
-        let inside = rest
-            .iter()
-            .rev()
-            .take(MAX_RAYS + 1)
-            .take_while(|&&(d, _)| opposite.holds(d))
-            .count();
-        for &(d, _) in &rest[rest.len() - inside..] {
-            if !add(rays, d.reversed()) {
-                return false;
-            }
+    // The vertices found opposite the part: the last of the list that are not below it (when
+    // the cones sweep in step, at most one, at the part's upper end).
+    let opposite = cone.reversed();
+    let below = seen
+        .iter()
+        .rev()
+        .take_while(|&&(d, _)| Cone::at(d).wholly_below(opposite))
+        .count();
+    let rest = &seen[..seen.len() - below];
+    let inside = rest
+        .iter()
+        .rev()
+        .take(MAX_RAYS + 1)
+        .take_while(|&&(d, _)| opposite.holds(d))
+        .count();
+    for &(d, _) in &rest[rest.len() - inside..] {
+        if !add(rays, d.reversed()) {
+            return false;
         }
-    } else if cone.hi_in && found_in(seen, Cone::at(cone.hi.reversed())) {
-        add(rays, cone.hi);
     }
     // The zero-width parts on top of the other stack, from the top down: at most MAX_RAYS + 1
     // looked at, so that each part taken costs O(1) more (a stack topped by many vertices
@@ -621,7 +614,7 @@ fn pending_in<P: Coord>(parts: &[(Step, Cone<P>)], range: Cone<P>) -> bool {
         answer,
         parts
             .iter()
-            .any(|(_, p)| !p.wholly_below(range) && !range.wholly_below(*p)),
+            .any(|(_, p)| p.meets(range)),
     );
     answer
 }
