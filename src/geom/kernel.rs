@@ -53,6 +53,8 @@ pub trait Coord: Copy + Eq + Ord + Hash + fmt::Debug + Send + Sync + 'static {
     fn vector_cross(u: Self::Vector, v: Self::Vector) -> i128;
     /// A value with the sign of the dot product of `u` and `v`.
     fn vector_dot(u: Self::Vector, v: Self::Vector) -> i128;
+    /// The sign of the x component of `v`: rightwards, vertical or leftwards.
+    fn vector_cmp_x(v: Self::Vector) -> Ordering;
     /// The line through distinct points `p` and `q`, and whether `p -> q` runs in its direction
     /// (the direction along which points increase in the order of `Self`).
     fn line_through(p: Self, q: Self) -> (Self::Line, bool);
@@ -175,6 +177,11 @@ impl Coord for Point {
     #[inline]
     fn vector_dot(u: Vector, v: Vector) -> i128 {
         i128::from(u.x) * i128::from(v.x) + i128::from(u.y) * i128::from(v.y)
+    }
+
+    #[inline]
+    fn vector_cmp_x(v: Vector) -> Ordering {
+        v.x.cmp(&0)
     }
 
     /// Exact: differences are at most `2^62` and products below `2^124` (kernel contract).
@@ -421,6 +428,12 @@ impl<P: Coord> Dir<P> {
     #[inline]
     pub fn dot(self, other: Dir<P>) -> i128 {
         P::vector_dot(self.0, other.0)
+    }
+
+    /// The sign of the x component: `Greater` rightwards, `Equal` vertical, `Less` leftwards.
+    #[inline]
+    pub fn cmp_x(self) -> Ordering {
+        P::vector_cmp_x(self.0)
     }
 
     /// Total order of directions by counter-clockwise angle measured from `self` (angle 0, up

@@ -372,6 +372,10 @@ impl Coord for WidePoint {
         sign(u, v, true)
     }
 
+    fn vector_cmp_x(v: WideVector) -> Ordering {
+        v.to.x.cmp(&v.from.x)
+    }
+
     fn line_through(p: WidePoint, q: WidePoint) -> (WideLine, bool) {
         if p < q {
             (WideLine { p, q }, true)

@@ -18,10 +18,11 @@
 //! `T_j`. The first `j` where this fails is found by a search tree over the tails (and one over
 //! the heads) of the path whose nodes hold the convex hull of their range: whether some point
 //! of a range lies on the closed wrong side of the line is read at the hull's extreme vertex,
-//! found by binary search (the edge directions of a lower or upper hull turn monotonically
-//! within a half-turn, so the side changes at most once along it). Going up is the mirror
-//! image. In `T_j` one step decides: the apex on the line is the answer, else the ray leaves by
-//! one of two sides, to a polygon edge (no vertex) or into a triangle of another heavy path.
+//! found by binary search on the one chain that holds it, upper or lower by the ray's direction
+//! (the edge directions of a chain turn monotonically within a half-turn, so the side changes
+//! at most once along it). Going up is the mirror image. In `T_j` one step decides: the apex on
+//! the line is the answer, else the ray leaves by one of two sides, to a polygon edge (no
+//! vertex) or into a triangle of another heavy path.
 //!
 //! The search trees are biased: the link `h_j` weighs the triangles hanging off `T_j` and
 //! `T_(j+1)` by light children (plus the path's mean), and a node splits its range where half
@@ -48,6 +49,7 @@
 use super::expansion::{Mesh, ISOLATE_AFTER};
 use crate::geom::kernel::{Coord, Dir};
 use crate::geom::polygon::Polygon;
+use std::cmp::Ordering;
 use std::sync::atomic::{AtomicUsize, Ordering::Relaxed};
 use std::sync::OnceLock;
 
@@ -479,39 +481,45 @@ impl HullTree {
     }
 
     /// Whether some point of the node lies on the line through `b` with direction `d` or left
-    /// of it: the largest `d x (p - b)` over the hull is at an end of a chain or where the
-    /// chain's edges stop turning towards the left of `d`.
+    /// of it: whether the largest `d x (p - b)` over the hull is at least 0. That function
+    /// grows with y as fast as `d`'s x component, and the chains are x-monotone with the
+    /// upper one above the lower at every x, so its largest value lies on the upper chain if
+    /// `d` points rightwards, on the lower one if leftwards, and at the chains' common ends
+    /// (the leftmost and rightmost points) if `d` is vertical. Along a chain it is at an end
+    /// or where the edges stop turning towards the left of `d`: one binary search.
     fn reaches<P: Coord>(&self, polygon: &Polygon<P>, node: usize, b: P, d: Dir<P>) -> bool {
         let p = |v: u32| polygon.point(v as usize);
         let left = |v: u32| d.cross(Dir::between(b, p(v))) >= 0;
         let (start, split, end) = self.nodes[node].hull;
-        for chain in [
-            &self.verts[start as usize..split as usize],
-            &self.verts[split as usize..end as usize],
-        ] {
-            let (Some(&first), Some(&last)) = (chain.first(), chain.last()) else {
-                continue;
-            };
-            if left(first) || left(last) {
-                return true;
+        let lower = &self.verts[start as usize..split as usize];
+        let chain = match d.cmp_x() {
+            Ordering::Less => lower,
+            Ordering::Greater => &self.verts[split as usize..end as usize],
+            Ordering::Equal => {
+                let ends = [lower.first(), lower.last()];
+                return ends.into_iter().flatten().any(|&v| left(v));
             }
-            // Edge k runs from chain[k] to chain[k + 1]; d x edge > 0: the side grows along it.
-            let grows = |k: usize| d.cross(Dir::between(p(chain[k]), p(chain[k + 1]))) > 0;
-            if chain.len() >= 3 && grows(0) {
-                // Growing, then not: the maximum is where it stops.
-                let (mut lo, mut hi) = (0, chain.len() - 1); // grows(lo), !grows(hi) or hi = last
-                while hi - lo > 1 {
-                    let mid = (lo + hi) / 2;
-                    if grows(mid) {
-                        lo = mid;
-                    } else {
-                        hi = mid;
-                    }
-                }
-                if left(chain[hi]) {
-                    return true;
+        };
+        let (Some(&first), Some(&last)) = (chain.first(), chain.last()) else {
+            return false;
+        };
+        if left(first) || left(last) {
+            return true;
+        }
+        // Edge k runs from chain[k] to chain[k + 1]; d x edge > 0: the side grows along it.
+        let grows = |k: usize| d.cross(Dir::between(p(chain[k]), p(chain[k + 1]))) > 0;
+        if chain.len() >= 3 && grows(0) {
+            // Growing, then not: the maximum is where it stops.
+            let (mut lo, mut hi) = (0, chain.len() - 1); // grows(lo), !grows(hi) or hi = last
+            while hi - lo > 1 {
+                let mid = (lo + hi) / 2;
+                if grows(mid) {
+                    lo = mid;
+                } else {
+                    hi = mid;
                 }
             }
+            return left(chain[hi]);
         }
         false
     }

@@ -63,6 +63,11 @@ fn predicates_match_the_fast_kernel_on_scaled_and_shifted_copies() {
         assert_eq!(orient(a, b, c), orient(fa, fb, fc), "{context}");
         assert_eq!(dot(a, b, c).signum(), dot(fa, fb, fc).signum(), "{context}");
         assert_eq!(a.cmp(&b), fa.cmp(&fb), "{context}");
+        assert_eq!(
+            WidePoint::vector_cmp_x(WidePoint::vector(a, b)),
+            Point::vector_cmp_x(Point::vector(fa, fb)),
+            "{context}"
+        );
         if a != b && a != c {
             assert_eq!(cmp_angle(a, b, c), cmp_angle(fa, fb, fc), "{context}");
             assert_eq!(
