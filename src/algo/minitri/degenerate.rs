@@ -152,12 +152,14 @@ fn turn_at<P: Coord>(polygon: &Polygon<P>, b: usize) -> i128 {
 /// The most edge flips made per vertex to fatten the triangulation walked: a bound (the flips
 /// stay O(n)), since the flips are steered by inexact incircle tests
 /// ([`Mesh::flip_towards_delaunay`]) and Lawson's flips can number O(n^2). Until they stop,
-/// random star and rectilinear polygons need at most about 3.5 flips per vertex, Natural Earth
-/// country outlines at most 2.3 (Iran), a TIGER state boundary 10.5 (Kansas, whose long runs
-/// of almost collinear vertices the monotone sweep fans out far across the state); 16 lets all
-/// of them finish, and Kansas's whole run then takes 13% fewer instructions than with 4
-/// (docs/benchmarks.md).
-const FLIPS_PER_VERTEX: usize = 16;
+/// random star and rectilinear polygons need at most about 3.5 flips per vertex and Natural
+/// Earth country outlines at most 2.3 (Iran); TIGER/Line state boundaries, whose long runs of
+/// almost collinear vertices the sweep joins by fans across the state, 4.2 to 10.5 where rivers
+/// make up some sides (Iowa to Kansas; their whole runs then take 13-50% fewer instructions
+/// than with 4) and 25 to 82 where straight lines make up all four (Colorado, Utah, Wyoming, New
+/// Mexico; flips past 4 cost them 8-16% and the walks gain nothing). 12 lets the first kind
+/// finish and stops the second sooner than 16 would (docs/benchmarks.md).
+const FLIPS_PER_VERTEX: usize = 12;
 
 /// The smallest polygon whose triangulation is flipped before walking: in smaller ones the walks
 /// are short whatever the triangles' shapes, and the flips cost more than they save (about even
