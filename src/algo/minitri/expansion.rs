@@ -308,8 +308,8 @@ pub fn double_cone<'w, P: Coord>(
         at.min(yield_at).max(crossed + 1)
     };
     let mut check_at = next_check(0, give_up_at, yield_at);
-    // The cone whose turn it is, if any (NO_TURN).
-    let mut turn = NO_TURN;
+    // The cone whose turn it is, if any.
+    let mut turn: Option<usize> = None;
     loop {
         // Expand the cone whose top part reaches higher (comparing the other cone's directions
         // turned by a half-turn), so that both sweep down together; or the other cone, whose
@@ -320,17 +320,13 @@ pub fn double_cone<'w, P: Coord>(
             (None, Some(_)) => 1,
             (Some(s), Some(t)) => {
                 let higher = usize::from(s.1.hi.cross(t.1.hi.reversed()) > 0);
-                if turn != NO_TURN {
-                    let side = std::mem::replace(&mut turn, NO_TURN);
-                    if side != higher && s.1.meets(t.1.reversed()) {
+                match turn.take() {
+                    Some(side) if side != higher && s.1.meets(t.1.reversed()) => {
                         #[cfg(test)]
                         TURNS.with(|t| t.set(t.get() + 1));
                         side
-                    } else {
-                        higher
                     }
-                } else {
-                    higher
+                    _ => higher,
                 }
             }
         };
@@ -413,15 +409,13 @@ pub fn double_cone<'w, P: Coord>(
                     yield_at = crossed.saturating_mul(2);
                 }
                 check_at = next_check(crossed, give_up_at, yield_at);
-                if yielding && !ray {
-                    // Back to the stack; the other cone walks next if its top part shares
-                    // directions with this one.
-                    turn = other;
-                    stack.push((Step::Enter(g), cone));
-                    break;
-                }
-                if crossed == isolate_after && !ray {
-                    // Back to the stack, to be taken again at once and cut into rays if it can.
+                if !ray && (yielding || crossed == isolate_after) {
+                    // Back to the stack: at a turn, the other cone walks next if its top part
+                    // shares directions with this one; else it is taken again at once, to be
+                    // cut into rays if it can.
+                    if yielding {
+                        turn = Some(other);
+                    }
                     stack.push((Step::Enter(g), cone));
                     break;
                 }
@@ -496,9 +490,6 @@ const FIRST_QUOTA: usize = 64;
 // How many times a cone took its turn out of the angular order, on this thread (for tests).
 #[cfg(test)]
 thread_local!(pub(super) static TURNS: std::cell::Cell<usize> = const { std::cell::Cell::new(0) });
-
-/// No cone's turn ([`double_cone`]).
-const NO_TURN: usize = 2;
 
 /// Cuts a wide part `cone` of one cone (just popped) into `rays`, by decreasing angle, when the
 /// other cone has nothing but isolated directions opposite it: vertices found there (`seen`, by
