@@ -186,6 +186,21 @@ pub(crate) fn sliver(steps: i64, w: i64, h: i64) -> Vec<(i64, i64)> {
     ring
 }
 
+/// The region between the parabola `y = x^2` (its points at x = m, .., 0, all reflex) and the
+/// chord below it from `(0, -m^2)` to `(m, 0)`, with about `bottom` vertices spread on the chord
+/// (flat), counter-clockwise, as `bench/polygon.py parabola`: tangent rays cross the whole
+/// polygon, and the hull chains of the shooter's paths are long (the parabola is convex).
+pub(crate) fn parabola(m: i64, bottom: i64) -> Vec<(i64, i64)> {
+    let bottom = bottom.clamp(1, m);
+    let mut ring: Vec<(i64, i64)> = (0..bottom)
+        .map(|i| i * m / bottom)
+        .map(|x| (x, m * x - m * m))
+        .collect();
+    ring.push((m, 0));
+    ring.extend((0..=m).rev().map(|k| (k, k * k)));
+    ring
+}
+
 /// `count` random simple rings on the grid `0..side`, each grown from a triangle by inserting
 /// up to `inserts` random grid points into random edges (a point kept only when the polygon
 /// stays valid): collinear triples and flat vertices everywhere.

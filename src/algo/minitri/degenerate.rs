@@ -49,6 +49,7 @@ use rayon::prelude::*;
 use std::any::Any;
 use std::cell::RefCell;
 use std::cmp::Ordering;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering::Relaxed};
 
 /// The kind of a minimally degenerate triangle (Chen & Chang, §3).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -314,8 +315,7 @@ pub fn minimally_degenerate_over_budget<P: Coord>(
     if polygon.len() >= FLIPS_FROM {
         mesh.flip_towards_delaunay(polygon, FLIPS_PER_VERTEX * polygon.len());
     }
-    let cut_short = std::sync::atomic::AtomicBool::new(false);
-    let unexamined = std::sync::atomic::AtomicUsize::new(0);
+    let progress = Progress::default();
     let n = polygon.len();
     let simple = polygon.holes() == 0 && polygon.touches() == 0;
     let limit = match budget {
@@ -336,8 +336,7 @@ pub fn minimally_degenerate_over_budget<P: Coord>(
             &shooter,
             range,
             deadline,
-            &cut_short,
-            &unexamined,
+            &progress,
         )
     };
     let (found, given_up) = if n <= PARALLEL_BLOCK {
@@ -350,6 +349,11 @@ pub fn minimally_degenerate_over_budget<P: Coord>(
         let (found, given_up): (Vec<_>, Vec<_>) = blocks.into_iter().unzip();
         (found.concat(), given_up.concat())
     };
+    let Progress {
+        cut_short,
+        unexamined,
+        ..
+    } = progress;
     let mut unexamined = unexamined.into_inner();
     if given_up.is_empty() {
         return (found, mesh.into_triangles(), unexamined);
@@ -413,10 +417,13 @@ fn search_range<P: Coord>(
     shooter: &Lazy,
     range: std::ops::Range<usize>,
     deadline: Option<std::time::Instant>,
-    cut_short: &std::sync::atomic::AtomicBool,
-    unexamined: &std::sync::atomic::AtomicUsize,
+    progress: &Progress,
 ) -> (Vec<Degenerate>, Vec<usize>) {
-    use std::sync::atomic::Ordering::Relaxed;
+    let Progress {
+        cut_short,
+        unexamined,
+        ..
+    } = progress;
     // One workspace per thread, kept from call to call (a batch of small polygons would
     // otherwise grow its buffers again for every polygon). Nothing in the search calls back
     // into the thread pool, so the borrow never nests.
@@ -445,37 +452,89 @@ fn search_range<P: Coord>(
                     break;
                 }
             }
-            if !search_from(polygon, mesh, shooter, b, work, &mut out) {
-                given_up.push(b);
+            let budget = progress.budget(shooter.budget());
+            if let Some(finished) = search_from(polygon, mesh, shooter, b, budget, work, &mut out) {
+                progress.count(finished);
+                if !finished {
+                    given_up.push(b);
+                }
             }
         }
         (out, given_up)
     })
 }
 
+/// What the parallel searches from the vertices of one polygon share: whether the deadline cut
+/// them short, how many vertices that could be a middle were not looked from, and how many
+/// walks finished and were given up, which sets the next walk's budget ([`Progress::budget`]).
+#[derive(Default)]
+struct Progress {
+    cut_short: AtomicBool,
+    unexamined: AtomicUsize,
+    walked: AtomicUsize,
+    given_up: AtomicUsize,
+}
+
+impl Progress {
+    /// The budget of the next walk, at most `full`: [`SHORT_BUDGET`] while more than one walk
+    /// in [`GIVEN_UP_RATIO`], and more than [`GIVEN_UP_SLACK`] walks, have been given up. Where
+    /// most walks are long, the bounded method will search most of the polygon anyway (its
+    /// cuts and trees cost about the same whether a piece holds one vertex to search or all),
+    /// and a walk given up at the full budget is work lost: on the `parabola` benchmark (every
+    /// vertex reflex, every walk long) the full budget cost 6 times the bounded method alone,
+    /// the short one 1.3 times (docs/benchmarks.md). Where few are, as on state boundaries,
+    /// the walks keep their full budget. Which vertices are walked and which handed over
+    /// depends on the threads' timing; the triangles found do not.
+    fn budget(&self, full: usize) -> usize {
+        let (walked, given_up) = (self.walked.load(Relaxed), self.given_up.load(Relaxed));
+        if given_up > GIVEN_UP_SLACK && given_up.saturating_mul(GIVEN_UP_RATIO) > walked {
+            full.min(SHORT_BUDGET)
+        } else {
+            full
+        }
+    }
+
+    /// Counts a walk, finished or given up.
+    fn count(&self, finished: bool) {
+        self.walked.fetch_add(1, Relaxed);
+        if !finished {
+            self.given_up.fetch_add(1, Relaxed);
+        }
+    }
+}
+
+/// See [`Progress::budget`].
+const GIVEN_UP_RATIO: usize = 4;
+/// See [`Progress::budget`].
+const GIVEN_UP_SLACK: usize = 16;
+/// See [`Progress::budget`]: a walk not finished by the time its parts would be cut into rays.
+const SHORT_BUDGET: usize = super::expansion::ISOLATE_AFTER;
+
 /// How many vertices one parallel task searches from (small polygons stay on one thread). Small
 /// enough that a 1000-vertex polygon keeps two cores busy (4 tasks; docs/benchmarks.md), large
 /// enough that a task costs far more than handing it out.
 const PARALLEL_BLOCK: usize = 256;
 
-/// Adds the minimally degenerate triangles with middle vertex `b` to `out`; `false` if `b` is
-/// reflex and its walk was given up (over the budget), nothing added then.
+/// Adds the minimally degenerate triangles with middle vertex `b` to `out`, walking at most
+/// `budget` triangles from it if it is reflex: `None` if it is not (nothing walked), else
+/// whether the walk finished (`false`: given up over the budget, nothing added).
 fn search_from<P: Coord>(
     polygon: &Polygon<P>,
     mesh: &Mesh,
     shooter: &Lazy,
     b: usize,
+    budget: usize,
     work: &mut Workspace<P>,
     out: &mut Vec<Degenerate>,
-) -> bool {
+) -> Option<bool> {
     if !reflex_or_flat(polygon, b, out) {
-        return true;
+        return None;
     }
-    if shooter.budget() == 0 {
-        return false;
+    if budget == 0 {
+        return Some(false);
     }
-    let Some((first, second)) = double_cone(polygon, mesh, b, work, shooter) else {
-        return false;
+    let Some((first, second)) = double_cone(polygon, mesh, b, work, shooter, budget) else {
+        return Some(false);
     };
     // Opposite directions are at the same place of the two cones (both sorted by angle).
     let (mut i, mut j) = (0, 0);
@@ -491,7 +550,7 @@ fn search_from<P: Coord>(
             }
         }
     }
-    true
+    Some(true)
 }
 
 /// The same triangles by an angular visibility sweep around every reflex vertex: O(r n log n).
@@ -565,4 +624,28 @@ pub fn minimally_degenerate_by_sweep_until<P: Coord>(
         }
     }
     (out, true)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Progress, GIVEN_UP_SLACK, SHORT_BUDGET};
+
+    /// The walks keep their full budget while few are given up, and get the short one once
+    /// more than one in four (past the slack) is; it comes back when enough finish again.
+    #[test]
+    fn walks_get_the_short_budget_once_many_are_given_up() {
+        let progress = Progress::default();
+        let full = 2048;
+        for _ in 0..GIVEN_UP_SLACK {
+            progress.count(false);
+        }
+        assert_eq!(progress.budget(full), full, "within the slack");
+        progress.count(false);
+        assert_eq!(progress.budget(full), SHORT_BUDGET);
+        assert_eq!(progress.budget(10), 10, "never more than the full budget");
+        for _ in 0..3 * (GIVEN_UP_SLACK + 1) {
+            progress.count(true);
+        }
+        assert_eq!(progress.budget(full), full, "one in four given up");
+    }
 }

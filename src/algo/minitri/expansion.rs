@@ -183,6 +183,7 @@ pub fn double_cone<'w, P: Coord>(
     b: usize,
     work: &'w mut Workspace<P>,
     shooter: &Lazy,
+    budget: usize,
 ) -> Option<Cones<'w, P>> {
     let c = polygon.point(b);
     let dir = |v: usize| Dir::between(c, polygon.point(v));
@@ -288,7 +289,7 @@ pub fn double_cone<'w, P: Coord>(
     // Past the budget the walk gives up (`None`). The budget counts the triangles crossed by
     // parts of non-zero width: `give_up_at` moves up by the triangles rays walk (their walking
     // is bounded by the shooter's policy instead). One test in the loop for both thresholds.
-    let mut give_up_at = shooter.budget().saturating_add(1);
+    let mut give_up_at = budget.saturating_add(1);
     // Turns: when the walk from b reaches `yield_at` triangles, the wide part walking on goes
     // back to its stack and the other cone walks next if its top part shares directions with
     // it (turned by a half-turn); the next such moment is twice as far. Without turns a part
@@ -391,10 +392,13 @@ pub fn double_cone<'w, P: Coord>(
         loop {
             if ray && walked >= ask {
                 ask = walked.saturating_add(RAY_WALK);
-                if let Some(shooter) = shooter.get(polygon, mesh, RAY_WALK) {
-                    if let Some(x) = shooter.shoot(polygon, mesh, b, cone.lo, g) {
+                if let Some(shot) = shooter.get(polygon, mesh, RAY_WALK) {
+                    if let Some(x) = shot.shoot(polygon, mesh, b, cone.lo, g) {
                         stack.push((Step::Found(x), Cone::at(dir(x))));
                     }
+                    // A shot costs O(log^2 n): it counts against the budget as log2 n
+                    // triangles, so a vertex shoots O(1) rays before it is given up.
+                    give_up_at = give_up_at.saturating_sub(shooter.shot_cost());
                     break;
                 }
             }
@@ -461,6 +465,9 @@ pub fn double_cone<'w, P: Coord>(
         }
         if ray {
             give_up_at = give_up_at.saturating_add(walked);
+            if crossed >= give_up_at {
+                return None;
+            }
             check_at = next_check(crossed, give_up_at, yield_at);
         }
     }

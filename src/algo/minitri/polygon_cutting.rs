@@ -119,15 +119,50 @@ pub(super) fn middles<P: Coord>(
         if crate::algo::past(deadline) {
             return None;
         }
-        let hits: Vec<Degenerate> = new
+        // Each ray walked a few triangles (most end there), the others shot by direction in a
+        // few long runs (one per task), each thread's fingers following the directions round
+        // (`Shooter::shoot_with`): O(log n) amortized per ray.
+        let walked: Vec<Result<Degenerate, (Dir<P>, u64, usize)>> = new
             .par_iter()
             .filter_map(|&key| {
                 let (a, u) = ((key >> 32) as usize, (key & 0xFFFF_FFFF) as usize);
                 let d = Dir::between(polygon.point(a), polygon.point(u));
-                let c = fans.first_hit(polygon, mesh, shooter, u, d)?;
-                Some(Degenerate::new(polygon, a, u, c))
+                match fans.walk(polygon, mesh, u, d) {
+                    Walked::Hit(c) => Some(Ok(Degenerate::new(polygon, a, u, c))),
+                    Walked::Miss => None,
+                    Walked::Far(g) => Some(Err((d, key, g))),
+                }
             })
             .collect();
+        let (mut hits, mut far): (Vec<_>, Vec<_>) = (Vec::new(), Vec::new());
+        for walk in walked {
+            match walk {
+                Ok(hit) => hits.push(hit),
+                Err(ray) => far.push(ray),
+            }
+        }
+        if let Some(&(base, _, _)) = far.first() {
+            far.sort_unstable_by(|x, y| base.cmp_angle_from(x.0, y.0));
+        }
+        let run = far
+            .len()
+            .div_ceil(RUNS_PER_THREAD * rayon::current_num_threads())
+            .max(MIN_RUN);
+        let shot: Vec<Degenerate> = far
+            .par_chunks(run)
+            .flat_map_iter(|run| {
+                FINGERS.with_borrow_mut(|fingers| {
+                    fingers.resize(shooter.finger_count(), 0);
+                    let hits = run.iter().filter_map(|&(d, key, g)| {
+                        let (a, u) = ((key >> 32) as usize, (key & 0xFFFF_FFFF) as usize);
+                        let c = shooter.shoot_with(polygon, mesh, u, d, g, fingers)?;
+                        Some(Degenerate::new(polygon, a, u, c))
+                    });
+                    hits.collect::<Vec<_>>()
+                })
+            })
+            .collect();
+        hits.extend(shot);
         found.extend(hits);
         level = halves.iter().map(|&h| h / 3).collect();
     }
@@ -135,6 +170,28 @@ pub(super) fn middles<P: Coord>(
     found.sort_unstable_by_key(|m| (m.b, m.a, m.c));
     found.dedup();
     Some(found)
+}
+
+/// How a ray of [`middles`] ended its first [`RAY_WALK`] triangles.
+enum Walked {
+    /// At this vertex.
+    Hit(usize),
+    /// At a polygon edge, or not in the vertex's angle.
+    Miss,
+    /// Still going, entering the triangle of this half-edge.
+    Far(usize),
+}
+
+/// Runs of rays per thread at each level (a few, so that a thread left idle can take one).
+const RUNS_PER_THREAD: usize = 4;
+
+/// The fewest rays in one run (fewer are not worth a task).
+const MIN_RUN: usize = 256;
+
+thread_local! {
+    /// Each thread's fingers for [`Shooter::shoot_with`], kept from run to run (any values are
+    /// valid starts).
+    static FINGERS: RefCell<Vec<u32>> = const { RefCell::new(Vec::new()) };
 }
 
 /// The rays to shoot for the half of the cut half-edge `h` (the half holding `h`'s triangle),
@@ -494,16 +551,15 @@ impl<P: Coord> Fans<P> {
         fans
     }
 
-    /// The first vertex met by the ray from `u` in direction `d`, if `d` lies in `u`'s closed
-    /// interior angle and the ray meets a vertex before a polygon edge.
-    fn first_hit(
-        &self,
-        polygon: &Polygon<P>,
-        mesh: &Mesh,
-        shooter: &Shooter,
-        u: usize,
-        d: Dir<P>,
-    ) -> Option<usize> {
+    /// The ray from `u` in direction `d` walked [`RAY_WALK`] triangles: the first vertex it
+    /// meets, or none (`d` outside `u`'s closed interior angle, or a polygon edge met first),
+    /// or the half-edge it enters the next triangle by, to be shot from there.
+    fn walk(&self, polygon: &Polygon<P>, mesh: &Mesh, u: usize, d: Dir<P>) -> Walked {
+        self.try_walk(polygon, mesh, u, d).unwrap_or(Walked::Miss)
+    }
+
+    /// [`Fans::walk`], `None` for a miss.
+    fn try_walk(&self, polygon: &Polygon<P>, mesh: &Mesh, u: usize, d: Dir<P>) -> Option<Walked> {
         let range = self.start[u]..self.start[u + 1];
         let dirs = &self.dirs[range.clone()];
         // The fan's directions by counter-clockwise angle from its first one, next(u).
@@ -512,10 +568,10 @@ impl<P: Coord> Fans<P> {
         let i = dirs.partition_point(|&x| cmp(x, d) == Ordering::Less);
         let i_abs = range.start + i;
         if i == dirs.len() {
-            return None; // beyond prev(u): outside the angle
+            return Some(Walked::Miss); // beyond prev(u): outside the angle
         }
         if cmp(dirs[i], d) == Ordering::Equal {
-            return Some(self.verts[i_abs]); // along a side: its far end
+            return Some(Walked::Hit(self.verts[i_abs])); // along a side: its far end
         }
         let mut g = mesh.twin_of(*self.far.get(i_abs.checked_sub(1)?)?)?;
         // Most rays end within a few triangles: walked first, shot past RAY_WALK triangles.
@@ -524,12 +580,12 @@ impl<P: Coord> Fans<P> {
             let (x, k_ux, k_xw) = mesh.apex_and_sides(g);
             let side = d.cross(Dir::between(pu, polygon.point(x)));
             if side == 0 {
-                return Some(x);
+                return Some(Walked::Hit(x));
             }
             // The ray passes right of x (through x -> w) or left of it (through u -> x).
             g = mesh.twin_of(if side < 0 { k_xw } else { k_ux })?;
         }
-        shooter.shoot(polygon, mesh, u, d, g)
+        Some(Walked::Far(g))
     }
 }
 

@@ -86,6 +86,7 @@ pub struct Lazy {
     first_ask: usize,
     isolate_after: usize,
     budget: usize,
+    shot_cost: usize,
 }
 
 impl Lazy {
@@ -103,6 +104,7 @@ impl Lazy {
             first_ask,
             isolate_after,
             budget: usize::MAX,
+            shot_cost: (usize::BITS - n.max(2).leading_zeros()) as usize,
         }
     }
 
@@ -116,6 +118,16 @@ impl Lazy {
     /// After how many triangles walked from one vertex the walk gives up.
     pub fn budget(&self) -> usize {
         self.budget
+    }
+
+    /// What a shot ray counts against the budget, in triangles: `ceil(log2 n)` (a shot is
+    /// O(log^2 n), a triangle walked O(1)); 0 without a budget.
+    pub fn shot_cost(&self) -> usize {
+        if self.budget == usize::MAX {
+            0
+        } else {
+            self.shot_cost
+        }
     }
 
     /// The shooter, built now if it was not.
@@ -159,7 +171,14 @@ pub struct Shooter {
     place: Vec<(u32, u32)>,
     /// The heavy paths.
     paths: Vec<HeavyPath>,
+    /// How many fingers [`Shooter::shoot_with`] may use: two per node of every hull tree.
+    fingers: usize,
 }
+
+/// Where the last search on each chain of each hull node ended ([`Shooter::shoot_with`]): two
+/// per node of the shooter's hull trees. Any values are valid starts (they only decide how
+/// long a search takes, never what it finds), so one buffer serves every shooter in turn.
+pub type Fingers = [u32];
 
 /// One heavy path `T_0, .., T_m` (from the top): the half-edges `h_i` of `T_i` whose twin lies
 /// in `T_(i+1)`, with hull trees over their tails and their heads.
@@ -226,6 +245,8 @@ impl Shooter {
         }
         let mut place = vec![(u32::MAX, u32::MAX); triangles];
         let mut paths = Vec::new();
+        // The hull trees' nodes numbered through all paths, for the fingers.
+        let mut nodes = 0;
         for &top in &order {
             if place[top].0 != u32::MAX {
                 continue; // on the path of an earlier triangle
@@ -276,27 +297,59 @@ impl Shooter {
                     })
                     .collect()
             };
-            let tails = HullTree::new(polygon, &ends(true), &weights);
-            let heads = HullTree::new(polygon, &ends(false), &weights);
+            let tails = HullTree::new(polygon, &ends(true), &weights, nodes);
+            nodes += tails.nodes.len();
+            let heads = HullTree::new(polygon, &ends(false), &weights, nodes);
+            nodes += heads.nodes.len();
             paths.push(HeavyPath {
                 links,
                 tails,
                 heads,
             });
         }
-        Shooter { place, paths }
+        Shooter {
+            place,
+            paths,
+            fingers: 2 * nodes,
+        }
+    }
+
+    /// How long a buffer of [`Fingers`] [`Shooter::shoot_with`] uses (a shorter one is used
+    /// as far as it goes).
+    pub fn finger_count(&self) -> usize {
+        self.fingers
     }
 
     /// The first vertex met exactly by the ray from vertex `b` in direction `d`, the ray having
     /// entered the triangle of half-edge `g` through that half-edge (strictly between its ends,
     /// as in the walk of [`super::expansion`]); `None` if it leaves through a polygon edge first.
+    /// O(log^2 n): each hull test a binary search.
     pub fn shoot<P: Coord>(
         &self,
         polygon: &Polygon<P>,
         mesh: &Mesh,
         b: usize,
         d: Dir<P>,
+        g: usize,
+    ) -> Option<usize> {
+        self.shoot_with(polygon, mesh, b, d, g, &mut [])
+    }
+
+    /// [`Shooter::shoot`], each hull test searching its chain from where the last search on
+    /// that chain ended (`fingers`), by doubling steps then halving: O(log(1 + k)) tests for an
+    /// extreme point `k` places away. The extreme point of a chain in the direction normal to
+    /// `d` moves one way along it as `d` turns, so rays shot in order of direction move each
+    /// finger across its chain a bounded number of times (`super::polygon_cutting` shoots each
+    /// level's rays so): O(log n) nodes per ray at O(1) amortized each, plus the chains' total
+    /// length, instead of O(log^2 n) per ray.
+    pub fn shoot_with<P: Coord>(
+        &self,
+        polygon: &Polygon<P>,
+        mesh: &Mesh,
+        b: usize,
+        d: Dir<P>,
         mut g: usize,
+        fingers: &mut Fingers,
     ) -> Option<usize> {
         let pb = polygon.point(b);
         let side = |v: usize| d.cross(Dir::between(pb, polygon.point(v)));
@@ -325,9 +378,9 @@ impl Shooter {
                 // at the weight of what hangs off T_i).
                 let end = path.links.len();
                 let fail = [
-                    path.tails.at_or_left(polygon, pb, d, i..end, true),
+                    path.tails.at_or_left(polygon, pb, d, i..end, true, fingers),
                     path.heads
-                        .at_or_left(polygon, pb, d.reversed(), i..end, true),
+                        .at_or_left(polygon, pb, d.reversed(), i..end, true, fingers),
                 ]
                 .into_iter()
                 .flatten()
@@ -348,8 +401,9 @@ impl Shooter {
                 // right (going up, the twin's tail is h's head; h_m itself passes).
                 let fail = [
                     path.tails
-                        .at_or_left(polygon, pb, d.reversed(), 0..m + 1, false),
-                    path.heads.at_or_left(polygon, pb, d, 0..m + 1, false),
+                        .at_or_left(polygon, pb, d.reversed(), 0..m + 1, false, fingers),
+                    path.heads
+                        .at_or_left(polygon, pb, d, 0..m + 1, false, fingers),
                 ]
                 .into_iter()
                 .flatten()
@@ -377,6 +431,9 @@ impl Shooter {
 /// `w` in a sequence of weight `W` lies O(log(W / w)) deep.
 struct HullTree {
     len: usize,
+    /// The number of this tree's root among all the shooter's hull nodes (its fingers are
+    /// `2 (base + node)` for the lower chain, one more for the upper).
+    base: usize,
     /// The nodes, the root first.
     nodes: Vec<HullNode>,
     verts: Vec<u32>,
@@ -395,10 +452,16 @@ struct HullNode {
 }
 
 impl HullTree {
-    fn new<P: Coord>(polygon: &Polygon<P>, seq: &[usize], weights: &[u64]) -> HullTree {
+    fn new<P: Coord>(
+        polygon: &Polygon<P>,
+        seq: &[usize],
+        weights: &[u64],
+        base: usize,
+    ) -> HullTree {
         let len = seq.len();
         let mut tree = HullTree {
             len,
+            base,
             nodes: Vec::with_capacity(2 * len),
             verts: Vec::new(),
             seq: seq.iter().map(|&v| v as u32).collect(),
@@ -487,14 +550,27 @@ impl HullTree {
     /// `d` points rightwards, on the lower one if leftwards, and at the chains' common ends
     /// (the leftmost and rightmost points) if `d` is vertical. Along a chain it is at an end
     /// or where the edges stop turning towards the left of `d`: one binary search.
-    fn reaches<P: Coord>(&self, polygon: &Polygon<P>, node: usize, b: P, d: Dir<P>) -> bool {
+    /// With `fingers` ([`Shooter::shoot_with`]), the search on the chain starts where the last
+    /// one on it ended, and records where this one ends.
+    fn reaches<P: Coord>(
+        &self,
+        polygon: &Polygon<P>,
+        node: usize,
+        b: P,
+        d: Dir<P>,
+        fingers: &mut Fingers,
+    ) -> bool {
         let p = |v: u32| polygon.point(v as usize);
         let left = |v: u32| d.cross(Dir::between(b, p(v))) >= 0;
         let (start, split, end) = self.nodes[node].hull;
         let lower = &self.verts[start as usize..split as usize];
-        let chain = match d.cmp_x() {
-            Ordering::Less => lower,
-            Ordering::Greater => &self.verts[split as usize..end as usize],
+        let finger = 2 * (self.base + node);
+        let (chain, finger) = match d.cmp_x() {
+            Ordering::Less => (lower, fingers.get_mut(finger)),
+            Ordering::Greater => (
+                &self.verts[split as usize..end as usize],
+                fingers.get_mut(finger + 1),
+            ),
             Ordering::Equal => {
                 let ends = [lower.first(), lower.last()];
                 return ends.into_iter().flatten().any(|&v| left(v));
@@ -509,15 +585,27 @@ impl HullTree {
         // Edge k runs from chain[k] to chain[k + 1]; d x edge > 0: the side grows along it.
         let grows = |k: usize| d.cross(Dir::between(p(chain[k]), p(chain[k + 1]))) > 0;
         if chain.len() >= 3 && grows(0) {
-            // Growing, then not: the maximum is where it stops.
-            let (mut lo, mut hi) = (0, chain.len() - 1); // grows(lo), !grows(hi) or hi = last
+            // Growing, then not: the maximum is where it stops, the first k >= 1 with
+            // !grows(k) (k = last if none; the last point has no edge).
+            let last = chain.len() - 1;
+            let stops = |k: usize| k == last || !grows(k);
+            // Bounds: grows(lo), stops(hi).
+            // A short chain is searched whole: its binary search is as short as the finger's.
+            let finger = finger.filter(|_| chain.len() > FINGER_FROM);
+            let (mut lo, mut hi) = match finger.as_deref() {
+                None => (0, last),
+                Some(&f) => bracket(f as usize, last, stops),
+            };
             while hi - lo > 1 {
                 let mid = (lo + hi) / 2;
-                if grows(mid) {
-                    lo = mid;
-                } else {
+                if stops(mid) {
                     hi = mid;
+                } else {
+                    lo = mid;
                 }
+            }
+            if let Some(f) = finger {
+                *f = hi as u32;
             }
             return left(chain[hi]);
         }
@@ -533,40 +621,34 @@ impl HullTree {
         d: Dir<P>,
         range: std::ops::Range<usize>,
         forward: bool,
+        fingers: &mut Fingers,
     ) -> Option<usize> {
         if range.is_empty() {
             return None;
         }
-        self.find(
+        let query = Query {
             polygon,
             b,
             d,
-            0,
-            0,
-            self.len,
-            range.start,
-            range.end,
+            lo: range.start,
+            hi: range.end,
             forward,
-        )
+        };
+        self.find(&query, 0, 0, self.len, fingers)
     }
 
     /// The first (`forward`) or last index of `lo..hi` within node `node` (over `from..to`)
     /// whose point is on the closed left of the line: the nodes visited are those on the paths
     /// to `lo` (or `hi - 1`) and to the answer, each tested in O(log) by [`HullTree::reaches`].
-    #[allow(clippy::too_many_arguments)]
     fn find<P: Coord>(
         &self,
-        polygon: &Polygon<P>,
-        b: P,
-        d: Dir<P>,
+        q: &Query<'_, P>,
         node: usize,
         from: usize,
         to: usize,
-        lo: usize,
-        hi: usize,
-        forward: bool,
+        fingers: &mut Fingers,
     ) -> Option<usize> {
-        if hi <= from || to <= lo || !self.reaches(polygon, node, b, d) {
+        if q.hi <= from || to <= q.lo || !self.reaches(q.polygon, node, q.b, q.d, fingers) {
             return None;
         }
         if to - from == 1 {
@@ -574,20 +656,72 @@ impl HullTree {
         }
         let mid = self.nodes[node].mid as usize;
         let halves = [(node + 1, from, mid), (node + 2 * (mid - from), mid, to)];
-        let order = if forward { [0, 1] } else { [1, 0] };
+        let order = if q.forward { [0, 1] } else { [1, 0] };
         order.into_iter().find_map(|k| {
             let (n, f, t) = halves[k];
-            self.find(polygon, b, d, n, f, t, lo, hi, forward)
+            self.find(q, n, f, t, fingers)
         })
+    }
+}
+
+/// The longest chain searched from end to end whether or not there is a finger.
+const FINGER_FROM: usize = 16;
+
+/// One search of [`HullTree::find`]: the first (`forward`) or last index of `lo..hi` whose
+/// point lies on the closed left of the line through `b` with direction `d`.
+struct Query<'a, P: Coord> {
+    polygon: &'a Polygon<P>,
+    b: P,
+    d: Dir<P>,
+    lo: usize,
+    hi: usize,
+    forward: bool,
+}
+
+/// Bounds `(lo, hi)` around the first `k` in `1..=last` with `stops(k)` (given that `stops` is
+/// false, then true, over `0..=last`, `stops(0)` false and `stops(last)` true): `!stops(lo)`,
+/// `stops(hi)`, found from `start` by steps of 1, 2, 4, .. towards it, so `hi - lo` is at most
+/// twice the distance from `start` to the answer, with O(log) of it tests (galloping).
+#[inline]
+fn bracket(start: usize, last: usize, stops: impl Fn(usize) -> bool) -> (usize, usize) {
+    let start = start.clamp(1, last);
+    let mut step = 1;
+    if stops(start) {
+        // The answer is at or before `start`.
+        let mut hi = start;
+        loop {
+            let k = hi.saturating_sub(step);
+            if k == 0 {
+                return (0, hi);
+            }
+            if !stops(k) {
+                return (k, hi);
+            }
+            hi = k;
+            step *= 2;
+        }
+    } else {
+        let mut lo = start;
+        loop {
+            let k = lo.saturating_add(step);
+            if k >= last {
+                return (lo, last);
+            }
+            if stops(k) {
+                return (lo, k);
+            }
+            lo = k;
+            step *= 2;
+        }
     }
 }
 
 #[cfg(test)]
 mod tests {
-    use super::{Mesh, Shooter};
+    use super::{bracket, Mesh, Shooter};
     use crate::geom::kernel::Dir;
     use crate::geom::polygon::Polygon;
-    use crate::test_support::{comb, grown_rings, polygon, sliver};
+    use crate::test_support::{comb, grown_rings, parabola, polygon, sliver};
 
     /// The ray walked triangle by triangle: the reference.
     fn walk(p: &Polygon, mesh: &Mesh, b: usize, d: Dir, mut g: usize) -> Option<usize> {
@@ -608,11 +742,19 @@ mod tests {
     }
 
     /// Every ray from a vertex towards another vertex, strictly inside the angle of one of its
-    /// triangles, is shot where the walk ends: on combs, slivers and random grid polygons,
-    /// over the flipped mesh step 1 walks.
+    /// triangles, is shot where the walk ends, searching the hull chains from their ends or
+    /// from fingers left by the rays before (in no particular order: the fingers change how
+    /// long a search takes, never its answer): on combs, slivers, a parabola (long convex hull
+    /// chains, searched from fingers) and random grid polygons, over the flipped mesh step 1
+    /// walks.
     #[test]
     fn shoots_where_the_walk_ends() {
-        let mut rings = vec![comb(40, 1, 9), comb(13, 2, 3), sliver(60, 1, 1)];
+        let mut rings = vec![
+            comb(40, 1, 9),
+            comb(13, 2, 3),
+            sliver(60, 1, 1),
+            parabola(90, 9),
+        ];
         rings.extend(grown_rings(0x35_0000_5407, 300, 13, 60));
         let mut shot = 0;
         for ring in &rings {
@@ -620,6 +762,7 @@ mod tests {
             let mut mesh = Mesh::new(&p, crate::algo::plain::polygon(&p, None));
             mesh.flip_towards_delaunay(&p, 4 * p.len());
             let shooter = Shooter::new(&p, &mesh);
+            let mut fingers = vec![0; shooter.finger_count()];
             for t in 0..mesh.triangle_count() {
                 for k in 0..3 {
                     // From the corner b of triangle t across its far side g, into the
@@ -639,10 +782,16 @@ mod tests {
                         if v == b || du.cross(d) <= 0 || d.cross(dw) <= 0 {
                             continue;
                         }
+                        let walked = walk(&p, &mesh, b, d, entry);
                         assert_eq!(
                             shooter.shoot(&p, &mesh, b, d, entry),
-                            walk(&p, &mesh, b, d, entry),
+                            walked,
                             "{ring:?} from {b} towards {v}"
+                        );
+                        assert_eq!(
+                            shooter.shoot_with(&p, &mesh, b, d, entry, &mut fingers),
+                            walked,
+                            "{ring:?} from {b} towards {v}, from the fingers"
                         );
                         shot += 1;
                     }
@@ -650,5 +799,21 @@ mod tests {
             }
         }
         assert!(shot > 10_000, "{shot} rays");
+    }
+
+    /// The galloping search's bounds hold the answer whatever the start, and are at most
+    /// about twice the start's distance from it apart.
+    #[test]
+    fn brackets_the_answer_from_any_start() {
+        for last in 1..40 {
+            for answer in 1..=last {
+                for start in 0..45 {
+                    let (lo, hi) = bracket(start, last, |k| k >= answer);
+                    assert!(lo < answer && answer <= hi, "{last} {answer} {start}");
+                    let from = start.clamp(1, last);
+                    assert!(hi - lo <= 2 * from.abs_diff(answer) + 2, "{last} {answer} {start}");
+                }
+            }
+        }
     }
 }

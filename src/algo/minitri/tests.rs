@@ -1187,6 +1187,10 @@ fn step_one_is_the_same_whatever_the_ray_policy() {
             found += assert_policies_agree(&polygon(&[&ring]), &format!("sliver {steps} {w} {h}"));
         }
     }
+    for (m, bottom) in [(3, 1), (12, 4), (40, 40), (150, 10)] {
+        let ring = crate::test_support::parabola(m, bottom);
+        found += assert_policies_agree(&polygon(&[&ring]), &format!("parabola {m} {bottom}"));
+    }
     for seed in 1..=12u64 {
         let ring = lattice_stairs_ring(3 + 4 * seed as usize, seed);
         found += assert_policies_agree(&polygon(&[&ring]), &format!("stairs {seed}"));
