@@ -35,6 +35,11 @@
                                          long sliver edge (0 0, N 1): (0 0, N 1, N-1 1, N-1 2,
                                          ..., 1 N); about 2 N vertices, every reflex corner on the
                                          line x + y = N, each seeing along it
+  bench/polygon.py parabola N             the region between the parabola y = x^2 (x = N, .., 0,
+                                         every point a reflex vertex) and the chord below it from
+                                         (0, -N^2) to (N, 0): every vertex sees along tangent rays
+                                         across the whole polygon, and the parabola's points are
+                                         in convex position (long hull chains for step 1's shooter)
   bench/polygon.py notches N             N/2 thin notches cut into a regular polygon, their tips on
                                          a circle of half its radius: every tip sees every other
                                          across the middle, in two wide opposite cones (the walk of
@@ -200,6 +205,8 @@ elif kind == "stairs-lattice":
     for (x, y), (u, v) in zip(corners, corners[1:] + corners[:1]):
         steps = max(abs(u - x), abs(v - y)) if x == u or y == v else 1
         pts += [(x + (u - x) * k // steps, y + (v - y) * k // steps) for k in range(steps)]
+elif kind == "parabola":
+    pts = [(0, -n * n), (n, 0)] + [(k, k * k) for k in range(n, -1, -1)]
 elif kind == "notches":
     m = max(3, n // 2)
     r = 20 * m
@@ -220,6 +227,6 @@ elif kind in ("hanging", "hanging-apart"):
     for k in range(n):
         holes.append([(4 * k + 4, top), (4 * k + 5, 7), (4 * k + 3, 7)])
 else:
-    sys.exit(f"unknown kind {kind!r}: use star, convex, maze, bars, snake, zigzag, comb, sliver, stairs, stairs-lattice, diamonds(-apart) or hanging(-apart)")
+    sys.exit(f"unknown kind {kind!r}: use star, convex, maze, bars, snake, zigzag, comb, sliver, parabola, stairs, stairs-lattice, diamonds(-apart) or hanging(-apart)")
 ring = lambda r: "(" + ", ".join(f"{x} {y}" for x, y in r + r[:1]) + ")"
 print("POLYGON (" + ", ".join(ring(r) for r in [pts] + holes) + ")")

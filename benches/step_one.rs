@@ -3,7 +3,7 @@
 //! shooting: `algo::minitri::polygon_cutting`) and the default hybrid (the walk with a budget per
 //! vertex, the bounded method for the vertices over it). The same set of triangles each way
 //! (the tests compare them); this times them. Inputs: random stars, mazes, bars and snakes
-//! (`benches/common`), combs and sliver staircases, n = 10^4 and 10^5 (about).
+//! (`benches/common`), combs, sliver staircases and parabolas, n = 10^4 and 10^5 (about).
 //!
 //! Run: `cargo bench --features bench --bench step_one`.
 
@@ -29,6 +29,14 @@ fn comb(teeth: i64) -> Vec<[i64; 2]> {
     pts
 }
 
+/// The region under the parabola `y = x^2` (x = m, .., 0) above the chord from `(0, -m^2)` to
+/// `(m, 0)` (`bench/polygon.py parabola`): every walk long, long convex hull chains.
+fn parabola(m: i64) -> Vec<[i64; 2]> {
+    let mut pts = vec![[0, -m * m], [m, 0]];
+    pts.extend((0..=m).rev().map(|k| [k, k * k]));
+    pts
+}
+
 /// A staircase of unit steps over the long edge (0 0)-(steps 1) (`bench/polygon.py sliver`).
 fn sliver(steps: i64) -> Vec<[i64; 2]> {
     let mut pts = vec![[0, 0], [steps, 1]];
@@ -46,6 +54,7 @@ fn step_one(c: &mut Criterion) {
         }
         inputs.push((format!("comb {n}"), comb(n as i64 / 4)));
         inputs.push((format!("sliver {n}"), sliver(n as i64 / 2)));
+        inputs.push((format!("parabola {n}"), parabola(n as i64)));
     }
     let mut group = c.benchmark_group("step_one");
     group.sample_size(10);
@@ -58,6 +67,11 @@ fn step_one(c: &mut Criterion) {
             ("walk", Budget::WalkOnly),
             ("cuts", Budget::CutsOnly),
         ] {
+            // The walk alone is quadratic on the parabola (every vertex sees across it all):
+            // seconds per run at 10^4 vertices.
+            if budget == Budget::WalkOnly && name.starts_with("parabola") {
+                continue;
+            }
             group.bench_with_input(BenchmarkId::new(label, name), &polygon, |b, p| {
                 b.iter(|| minimally_degenerate_with(black_box(p), RayPolicy::Hybrid, budget).len())
             });

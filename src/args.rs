@@ -93,8 +93,8 @@ pub struct Flags {
     #[arg(long, value_name = "N", default_value_t = minitri::algo::asano::DEFAULT_LIMIT)]
     pub dp_limit: usize,
     /// Seconds the exact method for one polygon may run (0: no limit): every stage of the search
-    /// for a polygon with holes or touching rings, and step 1 of one without (quadratic on
-    /// combs); past it, the best triangulation found is reported with "optimal": false, a lower
+    /// for a polygon with holes or touching rings, and step 1 of one without (O(n log^2 n));
+    /// past it, the best triangulation found is reported with "optimal": false, a lower
     /// bound and "stopped_by": "time limit". With -a pseudo-hull: the construction; past it, the
     /// greedy of -a pseudo on the hull, "optimal": false, "stopped_by": "time limit"
     #[arg(long, value_name = "SECONDS", default_value_t = 10.0, value_parser = seconds)]

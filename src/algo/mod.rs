@@ -249,7 +249,7 @@ pub(crate) fn past(deadline: Option<std::time::Instant>) -> bool {
 pub enum Stopped {
     /// The exact method reached its time limit (`--time-limit`): for a polygon with holes while
     /// finding the minimally degenerate triangles, building their dependency graph, or
-    /// searching it; for one without holes while finding them (step 1, quadratic on combs).
+    /// searching it; for one without holes while finding them (step 1, O(n log^2 n)).
     TimeLimit,
     /// A connected component of the dependency graph had more triangles than the exact search
     /// takes (`SEARCH_LIMIT`, 4,096 triangles); it kept a greedy set.

@@ -26,18 +26,19 @@
 //! still held, which `tests/property.rs` keeps watching.
 //!
 //! Complexity: a plain triangulation (O(n log n), swept along x when the bounding box is more
-//! than twice as wide as tall: `crate::algo::plain::polygon`), at most `4 n` edge flips to
+//! than twice as wide as tall: `crate::algo::plain::polygon`), at most `12 n` edge flips to
 //! fatten it, then work proportional to the triangles met inside each reflex vertex's double
 //! cone where both cones may still see a vertex (about 40-50 per vertex on random stars; see
 //! [`super::expansion`] and `docs/benchmarks.md`). Parts of a cone left with only isolated
 //! directions to match become rays, and a ray that walks far is shot instead
 //! ([`super::ray_shooting`]: O(log^2 n) per ray after an O(n log n) build). The walk from one
-//! vertex of a simple polygon is given up past [`walk_budget`] triangles (O(log n)), and the
-//! vertices given up are searched by balanced cuts, shortest-path trees and rays
-//! ([`super::polygon_cutting`], O(n log^3 n)), so step 1 is O(n log^3 n) in the worst case on
-//! simple polygons (the paper's O(n log^2 n) has a ray shooting of O(log n) per ray). With holes
-//! or touching rings the walk has no budget (the cutting needs a dual tree): O(n^2) in the
-//! worst case, and `deadline` bounds the step.
+//! vertex of a simple polygon is given up past [`walk_budget`] triangles (O(log n); a shot counts
+//! as `log2 n` of them, so a vertex shoots O(1) rays: O(log^2 n) per vertex), or past 64 while
+//! more than a quarter of the walks are given up (`Progress::budget`), and the vertices given
+//! up are searched by balanced cuts, shortest-path trees and rays shot in order of direction
+//! ([`super::polygon_cutting`], O(n log^2 n)), so step 1 is O(n log^2 n) in the worst case on
+//! simple polygons, the paper's bound. With holes or touching rings the walk has no budget (the
+//! cutting needs a dual tree): O(n^2) in the worst case, and `deadline` bounds the step.
 
 use super::expansion::{double_cone, Mesh, Workspace};
 use super::ray_shooting::{Lazy, RayPolicy};

@@ -54,11 +54,10 @@ pub fn triangulate<P: Coord>(polygon: &Polygon<P>) -> Result<Triangulation, Tria
 /// The minimum triangulation of a polygon: by Chen & Chang's steps without holes (exact, no
 /// search); with holes by [`triangulate_general`], searching until `deadline`.
 ///
-/// Without holes `deadline` bounds step 1, the one stage without a worst-case bound below
-/// O(n^2) (parts of a reflex vertex's cones that stay wide are walked; combs and slivers, whose
-/// long rays are shot, are near-linear): past it the triangles found so far are
-/// used, and the result is valid but `optimal` only if it meets the lower bound, else with
-/// `lower_bound` and [`Stopped::TimeLimit`]. `None`: no limit, always exact.
+/// Without holes `deadline` bounds step 1 (O(n log^2 n) in the worst case, the costliest stage
+/// on most inputs): past it the triangles found so far are used, and the result is valid but
+/// `optimal` only if it meets the lower bound, else with `lower_bound` and
+/// [`Stopped::TimeLimit`]. `None`: no limit, always exact.
 ///
 /// # Errors
 /// Without holes, none for valid polygons; with holes, those of [`triangulate_general`] (not

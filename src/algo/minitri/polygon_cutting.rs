@@ -35,9 +35,12 @@
 //!
 //! Cost: a piece of `m` triangles costs O(m) to collect and cut and O(m log m) for its four
 //! shortest-path trees (a funnel split by binary search, undone on backtracking); O(n log^2 n)
-//! over the O(log n) levels. Each vertex asks at most four rays per level, each O(log^2 n)
-//! ([`super::ray_shooting::Shooter`]): O(n log^3 n) in all, against O(n^2) for the walk on
-//! inputs where every reflex vertex sees most of the polygon. Pieces holding no vertex still to
+//! over the O(log n) levels. Each vertex asks at most four rays per level: each walks up to
+//! [`RAY_WALK`] triangles, and those still going are sorted by direction (O(n log n) per level)
+//! and shot in that order, a few long runs per thread, so that the shooter's fingers follow the
+//! directions round ([`super::ray_shooting::Shooter::shoot_with`]): O(n log n) per level for
+//! the rays too, O(n log^2 n) in all, the paper's bound, against O(n^2) for the walk on inputs
+//! where every reflex vertex sees most of the polygon. Pieces holding no vertex still to
 //! be searched are skipped, so the method costs little when the walk left few vertices to it.
 
 use super::degenerate::Degenerate;
@@ -122,7 +125,7 @@ pub(super) fn middles<P: Coord>(
         // Each ray walked a few triangles (most end there), the others shot by direction in a
         // few long runs (one per task), each thread's fingers following the directions round
         // (`Shooter::shoot_with`): O(log n) amortized per ray.
-        let walked: Vec<Result<Degenerate, (Dir<P>, u64, usize)>> = new
+        let walked: Vec<Result<Degenerate, FarRay<P>>> = new
             .par_iter()
             .filter_map(|&key| {
                 let (a, u) = ((key >> 32) as usize, (key & 0xFFFF_FFFF) as usize);
@@ -171,6 +174,10 @@ pub(super) fn middles<P: Coord>(
     found.dedup();
     Some(found)
 }
+
+/// A ray of [`middles`] still going after [`RAY_WALK`] triangles: its direction, its key
+/// `(a << 32) | u`, and the half-edge it enters the next triangle by.
+type FarRay<P> = (Dir<P>, u64, usize);
 
 /// How a ray of [`middles`] ended its first [`RAY_WALK`] triangles.
 enum Walked {

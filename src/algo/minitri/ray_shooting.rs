@@ -1,8 +1,9 @@
 //! Ray shooting from a vertex over a triangulation, in O(log^2 n) per ray after O(n log n)
-//! preprocessing, with orientation tests only: for the rays of step 1 of MINITRI (Chen & Chang
-//! 1990, §3, Step 1, which shoots rays from reflex vertices along directions given by two
-//! vertices; the paper uses Chazelle and Guibas' procedure, O(log n) per ray; this is a simpler
-//! one with a logarithmic factor more).
+//! preprocessing, or O(log n) amortized per ray for a batch shot in order of direction, with
+//! orientation tests only: for the rays of step 1 of MINITRI (Chen & Chang 1990, §3, Step 1,
+//! which shoots rays from reflex vertices along directions given by two vertices; the paper uses
+//! Chazelle and Guibas' procedure, O(log n) per ray; this is a simpler one, as fast for the
+//! batches of the bounded method, [`super::polygon_cutting`]).
 //!
 //! A ray from vertex `b` in direction `d` inside a triangulated polygon crosses a sequence of
 //! triangles, a path in the dual tree (degree at most 3), until it meets a vertex exactly (the
@@ -32,6 +33,17 @@
 //! weight is at least that subtree's size), and leaves it into a light subtree of the answer's
 //! triangle; so the depths telescope over the heavy paths one ray meets, O(log n) nodes in all,
 //! each tested in O(log n): O(log^2 n) per ray.
+//!
+//! In order of direction: the extreme point of a chain in the direction normal to the ray moves
+//! one way along the chain as the direction turns. So each chain of more than 16 points keeps a
+//! finger where its last search ended ([`Shooter::shoot_with`]), and a search gallops from it
+//! (steps of 1, 2, 4, .. towards the answer, then halving): O(1 + log(1 + k)) tests for an
+//! answer `k` places away. A chain serves the rays pointing into one half-plane, and the
+//! searches going up use the opposite directions; over a batch sorted by direction from any
+//! start, the directions a chain sees form at most three arcs, along each of which its finger
+//! moves one way: so the batch's hull tests cost O(1) per node visited plus three times the
+//! chains' total length, O(n log n), and O(log n) per ray amortized over a batch of Omega(n)
+//! rays. The fingers only decide where a search starts, never what it finds.
 //!
 //! Exact: every decision is the sign of a cross product of two differences of input points
 //! ([`Dir::cross`]), in both kernels; no intersection point and no ray parameter is computed.
@@ -564,13 +576,9 @@ impl HullTree {
         let left = |v: u32| d.cross(Dir::between(b, p(v))) >= 0;
         let (start, split, end) = self.nodes[node].hull;
         let lower = &self.verts[start as usize..split as usize];
-        let finger = 2 * (self.base + node);
-        let (chain, finger) = match d.cmp_x() {
-            Ordering::Less => (lower, fingers.get_mut(finger)),
-            Ordering::Greater => (
-                &self.verts[split as usize..end as usize],
-                fingers.get_mut(finger + 1),
-            ),
+        let (chain, upper) = match d.cmp_x() {
+            Ordering::Less => (lower, false),
+            Ordering::Greater => (&self.verts[split as usize..end as usize], true),
             Ordering::Equal => {
                 let ends = [lower.first(), lower.last()];
                 return ends.into_iter().flatten().any(|&v| left(v));
@@ -591,7 +599,10 @@ impl HullTree {
             let stops = |k: usize| k == last || !grows(k);
             // Bounds: grows(lo), stops(hi).
             // A short chain is searched whole: its binary search is as short as the finger's.
-            let finger = finger.filter(|_| chain.len() > FINGER_FROM);
+            let finger = match chain.len() > FINGER_FROM {
+                true => fingers.get_mut(2 * (self.base + node) + usize::from(upper)),
+                false => None,
+            };
             let (mut lo, mut hi) = match finger.as_deref() {
                 None => (0, last),
                 Some(&f) => bracket(f as usize, last, stops),
