@@ -482,8 +482,8 @@ impl Progress {
     /// most walks are long, the bounded method will search most of the polygon anyway (its
     /// cuts and trees cost about the same whether a piece holds one vertex to search or all),
     /// and a walk given up at the full budget is work lost: on the `parabola` benchmark (every
-    /// vertex reflex, every walk long) the full budget cost 6 times the bounded method alone,
-    /// the short one 1.3 times (docs/benchmarks.md). Where few are, as on state boundaries,
+    /// vertex reflex, every walk long) the full budget cost 5-6 times the bounded method alone,
+    /// the short one 1.3-1.6 times (docs/benchmarks.md). Where few are, as on state boundaries,
     /// the walks keep their full budget. Which vertices are walked and which handed over
     /// depends on the threads' timing; the triangles found do not.
     fn budget(&self, full: usize) -> usize {
