@@ -183,13 +183,16 @@ pub struct Shooter {
     place: Vec<(u32, u32)>,
     /// The heavy paths.
     paths: Vec<HeavyPath>,
-    /// How many fingers [`Shooter::shoot_with`] may use: two per node of every hull tree.
+    /// How many fingers [`Shooter::shoot_with`] may use: two per hull node with a chain of
+    /// more than 16 points (its range holds more than 16 points: about one node in 16 of a
+    /// balanced tree, so a finger buffer is a fraction of the shooter's own size).
     fingers: usize,
 }
 
-/// Where the last search on each chain of each hull node ended ([`Shooter::shoot_with`]): two
-/// per node of the shooter's hull trees. Any values are valid starts (they only decide how
-/// long a search takes, never what it finds), so one buffer serves every shooter in turn.
+/// Where the last search on each long chain of the hull nodes ended ([`Shooter::shoot_with`]):
+/// two per node with a chain of more than 16 points. Any values are valid starts (they only
+/// decide how long a search takes, never what it finds), so one buffer serves every shooter in
+/// turn.
 pub type Fingers = [u32];
 
 /// One heavy path `T_0, .., T_m` (from the top): the half-edges `h_i` of `T_i` whose twin lies
@@ -258,7 +261,7 @@ impl Shooter {
         let mut place = vec![(u32::MAX, u32::MAX); triangles];
         let mut paths = Vec::new();
         // The hull trees' nodes numbered through all paths, for the fingers.
-        let mut nodes = 0;
+        let mut fingers = 0;
         for &top in &order {
             if place[top].0 != u32::MAX {
                 continue; // on the path of an earlier triangle
@@ -309,10 +312,8 @@ impl Shooter {
                     })
                     .collect()
             };
-            let tails = HullTree::new(polygon, &ends(true), &weights, nodes);
-            nodes += tails.nodes.len();
-            let heads = HullTree::new(polygon, &ends(false), &weights, nodes);
-            nodes += heads.nodes.len();
+            let tails = HullTree::new(polygon, &ends(true), &weights, &mut fingers);
+            let heads = HullTree::new(polygon, &ends(false), &weights, &mut fingers);
             paths.push(HeavyPath {
                 links,
                 tails,
@@ -322,7 +323,7 @@ impl Shooter {
         Shooter {
             place,
             paths,
-            fingers: 2 * nodes,
+            fingers,
         }
     }
 
@@ -443,9 +444,6 @@ impl Shooter {
 /// `w` in a sequence of weight `W` lies O(log(W / w)) deep.
 struct HullTree {
     len: usize,
-    /// The number of this tree's root among all the shooter's hull nodes (its fingers are
-    /// `2 (base + node)` for the lower chain, one more for the upper).
-    base: usize,
     /// The nodes, the root first.
     nodes: Vec<HullNode>,
     verts: Vec<u32>,
@@ -461,6 +459,10 @@ struct HullTree {
 struct HullNode {
     hull: (u32, u32, u32),
     mid: u32,
+    /// Where the fingers of its lower and upper chains are kept ([`Shooter::shoot_with`]):
+    /// `finger` and `finger + 1`, for a node with a chain longer than [`FINGER_FROM`];
+    /// `u32::MAX` for the others.
+    finger: u32,
 }
 
 impl HullTree {
@@ -468,12 +470,11 @@ impl HullTree {
         polygon: &Polygon<P>,
         seq: &[usize],
         weights: &[u64],
-        base: usize,
+        fingers: &mut usize,
     ) -> HullTree {
         let len = seq.len();
         let mut tree = HullTree {
             len,
-            base,
             nodes: Vec::with_capacity(2 * len),
             verts: Vec::new(),
             seq: seq.iter().map(|&v| v as u32).collect(),
@@ -484,6 +485,13 @@ impl HullTree {
         }
         if len > 0 {
             tree.build(polygon, &prefix, 0, len);
+        }
+        for node in &mut tree.nodes {
+            let (start, split, end) = node.hull;
+            if (split - start).max(end - split) as usize > FINGER_FROM {
+                node.finger = u32::try_from(*fingers).unwrap_or(u32::MAX);
+                *fingers += 2;
+            }
         }
         tree
     }
@@ -502,6 +510,7 @@ impl HullTree {
         self.nodes.push(HullNode {
             hull: (0, 0, 0),
             mid: hi as u32,
+            finger: u32::MAX,
         });
         let sorted = if hi - lo == 1 {
             vec![self.seq[lo]]
@@ -600,7 +609,10 @@ impl HullTree {
             // Bounds: grows(lo), stops(hi).
             // A short chain is searched whole: its binary search is as short as the finger's.
             let finger = match chain.len() > FINGER_FROM {
-                true => fingers.get_mut(2 * (self.base + node) + usize::from(upper)),
+                true => {
+                    let slot = self.nodes[node].finger as usize + usize::from(upper);
+                    fingers.get_mut(slot)
+                }
                 false => None,
             };
             let (mut lo, mut hi) = match finger.as_deref() {
@@ -767,13 +779,14 @@ mod tests {
             parabola(90, 9),
         ];
         rings.extend(grown_rings(0x35_0000_5407, 300, 13, 60));
-        let mut shot = 0;
+        let (mut shot, mut with_fingers) = (0, 0);
         for ring in &rings {
             let p = polygon(&[ring]);
             let mut mesh = Mesh::new(&p, crate::algo::plain::polygon(&p, None));
             mesh.flip_towards_delaunay(&p, 4 * p.len());
             let shooter = Shooter::new(&p, &mesh);
             let mut fingers = vec![0; shooter.finger_count()];
+            with_fingers += usize::from(!fingers.is_empty());
             for t in 0..mesh.triangle_count() {
                 for k in 0..3 {
                     // From the corner b of triangle t across its far side g, into the
@@ -810,6 +823,7 @@ mod tests {
             }
         }
         assert!(shot > 10_000, "{shot} rays");
+        assert!(with_fingers > 0, "no chain searched from a finger");
     }
 
     /// The galloping search's bounds hold the answer whatever the start, and are at most
