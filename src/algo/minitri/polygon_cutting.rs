@@ -48,6 +48,7 @@ use super::expansion::Mesh;
 use super::ray_shooting::{Shooter, RAY_WALK};
 use crate::geom::kernel::{cross, Coord, Dir};
 use crate::geom::polygon::Polygon;
+use rayon::iter::Either;
 use rayon::prelude::*;
 use std::cell::RefCell;
 use std::cmp::Ordering;
@@ -125,27 +126,27 @@ pub(super) fn middles<P: Coord>(
         // Each ray walked a few triangles (most end there), the others shot by direction in a
         // few long runs (one per task), each thread's fingers following the directions round
         // (`Shooter::shoot_with`): O(log n) amortized per ray.
-        let walked: Vec<Result<Degenerate, FarRay<P>>> = new
+        let walked: Vec<Either<Degenerate, FarRay<P>>> = new
             .par_iter()
             .filter_map(|&key| {
                 let (a, u) = ((key >> 32) as usize, (key & 0xFFFF_FFFF) as usize);
                 let d = Dir::between(polygon.point(a), polygon.point(u));
                 match fans.walk(polygon, mesh, u, d) {
-                    Walked::Hit(c) => Some(Ok(Degenerate::new(polygon, a, u, c))),
+                    Walked::Hit(c) => Some(Either::Left(Degenerate::new(polygon, a, u, c))),
                     Walked::Miss => None,
-                    Walked::Far(g) => Some(Err((d, key, g))),
+                    Walked::Far(g) => Some(Either::Right(FarRay { d, a, u, g })),
                 }
             })
             .collect();
-        let (mut hits, mut far): (Vec<_>, Vec<_>) = (Vec::new(), Vec::new());
-        for walk in walked {
-            match walk {
-                Ok(hit) => hits.push(hit),
-                Err(ray) => far.push(ray),
+        let mut far = Vec::new();
+        for ray in walked {
+            match ray {
+                Either::Left(hit) => found.push(hit),
+                Either::Right(ray) => far.push(ray),
             }
         }
-        if let Some(&(base, _, _)) = far.first() {
-            far.sort_unstable_by(|x, y| base.cmp_angle_from(x.0, y.0));
+        if let Some(base) = far.first().map(|ray| ray.d) {
+            far.sort_unstable_by(|x, y| base.cmp_angle_from(x.d, y.d));
         }
         let run = far
             .len()
@@ -156,17 +157,15 @@ pub(super) fn middles<P: Coord>(
             .flat_map_iter(|run| {
                 FINGERS.with_borrow_mut(|fingers| {
                     fingers.resize(shooter.finger_count(), 0);
-                    let hits = run.iter().filter_map(|&(d, key, g)| {
-                        let (a, u) = ((key >> 32) as usize, (key & 0xFFFF_FFFF) as usize);
-                        let c = shooter.shoot_with(polygon, mesh, u, d, g, fingers)?;
-                        Some(Degenerate::new(polygon, a, u, c))
+                    let hits = run.iter().filter_map(|ray| {
+                        let c = shooter.shoot_with(polygon, mesh, ray.u, ray.d, ray.g, fingers)?;
+                        Some(Degenerate::new(polygon, ray.a, ray.u, c))
                     });
                     hits.collect::<Vec<_>>()
                 })
             })
             .collect();
-        hits.extend(shot);
-        found.extend(hits);
+        found.extend(shot);
         level = halves.iter().map(|&h| h / 3).collect();
     }
     // A triangle is found from either end (and again at other levels).
@@ -175,9 +174,14 @@ pub(super) fn middles<P: Coord>(
     Some(found)
 }
 
-/// A ray of [`middles`] still going after [`RAY_WALK`] triangles: its direction, its key
-/// `(a << 32) | u`, and the half-edge it enters the next triangle by.
-type FarRay<P> = (Dir<P>, u64, usize);
+/// A ray of [`middles`], from `u` in direction `d = u - a`, still going after [`RAY_WALK`]
+/// triangles: it enters the next triangle by half-edge `g`.
+struct FarRay<P: Coord> {
+    d: Dir<P>,
+    a: usize,
+    u: usize,
+    g: usize,
+}
 
 /// How a ray of [`middles`] ended its first [`RAY_WALK`] triangles.
 enum Walked {

@@ -260,7 +260,7 @@ impl Shooter {
         }
         let mut place = vec![(u32::MAX, u32::MAX); triangles];
         let mut paths = Vec::new();
-        // The hull trees' nodes numbered through all paths, for the fingers.
+        // The finger slots handed out so far, through all paths (`HullTree::new`).
         let mut fingers = 0;
         for &top in &order {
             if place[top].0 != u32::MAX {
@@ -606,14 +606,13 @@ impl HullTree {
             // !grows(k) (k = last if none; the last point has no edge).
             let last = chain.len() - 1;
             let stops = |k: usize| k == last || !grows(k);
-            // Bounds: grows(lo), stops(hi).
-            // A short chain is searched whole: its binary search is as short as the finger's.
-            let finger = match chain.len() > FINGER_FROM {
-                true => {
-                    let slot = self.nodes[node].finger as usize + usize::from(upper);
-                    fingers.get_mut(slot)
-                }
-                false => None,
+            // Bounds: grows(lo), stops(hi); from the finger for a long chain (a short one is
+            // searched whole: its binary search is as short as a gallop).
+            let finger = if chain.len() > FINGER_FROM {
+                let slot = self.nodes[node].finger as usize + usize::from(upper);
+                fingers.get_mut(slot)
+            } else {
+                None
             };
             let (mut lo, mut hi) = match finger.as_deref() {
                 None => (0, last),
